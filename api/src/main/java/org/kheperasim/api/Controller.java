@@ -1,0 +1,143 @@
+package org.kheperasim.api;
+
+import org.kheperasim.api.spi.ControllerBinding;
+
+/**
+ * A friendlier base class for a first controller. Write {@link #doWork()}; it is called over and
+ * over until the controller is asked to stop. No constructor is needed:
+ * <pre>{@code
+ * public class Avoider extends Controller {
+ *     protected void doWork() {
+ *         if (proximity(IrSensor.FRONT_LEFT) > 600) setSpeeds(-3, 3); else setSpeeds(5, 5);
+ *         sleepMillis(100);
+ *     }
+ * }
+ * }</pre>
+ * It is still a {@link Thread} with the classic {@code (CurrentRobotState, MessagePasser)}
+ * constructor available, so it runs wherever the Appendix-style controllers run.
+ */
+public abstract class Controller extends Thread {
+    private final CurrentRobotState robot;
+    private final MessagePasser messages;
+    private final Sensor[] sensors;
+    private volatile boolean active = true;
+
+    /** For subclasses with no constructor: the backend that creates the controller binds it. */
+    protected Controller() {
+        this(ControllerBinding.current().state(), ControllerBinding.current().messages());
+    }
+
+    /**
+     * @param robot the robot's live state
+     * @param messages where {@link #print(String)} sends text
+     */
+    protected Controller(CurrentRobotState robot, MessagePasser messages) {
+        this.robot = robot;
+        this.messages = messages;
+        this.sensors = robot.getSensorValues();
+        setName(getClass().getSimpleName());
+    }
+
+    /** Called once before the first {@link #doWork()}. Does nothing unless overridden. */
+    protected void setup() {
+    }
+
+    /** One step of the controller: read sensors, set speeds, maybe sleep. Called repeatedly. */
+    protected abstract void doWork();
+
+    /** Called once after the last {@link #doWork()}. Stops the motors unless overridden. */
+    protected void cleanup() {
+        stopMotors();
+    }
+
+    @Override
+    public final void run() {
+        setup();
+        while (active) {
+            doWork();
+        }
+        cleanup();
+    }
+
+    /** Ask the controller to stop after the current {@link #doWork()}. */
+    public void killControl() {
+        active = false;
+    }
+
+    /** @return true until the controller has been asked to stop */
+    protected final boolean isActive() {
+        return active;
+    }
+
+    /** @return proximity at that sensor, 0..1023, higher = nearer */
+    protected final int proximity(IrSensor sensor) {
+        return sensors[sensor.index()].getDistValue();
+    }
+
+    /** @return ambient light at that sensor, 0..1023, lower = brighter */
+    protected final int light(IrSensor sensor) {
+        return sensors[sensor.index()].getLightValue();
+    }
+
+    /** @return all eight live sensors, index order 0..7 */
+    protected final Sensor[] sensors() {
+        return sensors;
+    }
+
+    /**
+     * @param left left wheel speed, −127..127 units (≈ 8 mm/s each)
+     * @param right right wheel speed, −127..127 units
+     */
+    protected final void setSpeeds(int left, int right) {
+        robot.getMotorState().setMotorSpeeds(left, right);
+    }
+
+    /** Stop both wheels. */
+    protected final void stopMotors() {
+        robot.getMotorState().setMotorSpeeds(0, 0);
+    }
+
+    /** @return the left wheel position counter, pulses (≈ 0.08 mm) */
+    protected final int leftPosition() {
+        return robot.getMotorState().getLeftPosition();
+    }
+
+    /** @return the right wheel position counter, pulses (≈ 0.08 mm) */
+    protected final int rightPosition() {
+        return robot.getMotorState().getRightPosition();
+    }
+
+    /** @return the wheel motors */
+    protected final Motor motor() {
+        return robot.getMotorState();
+    }
+
+    /** @return the gripper turret */
+    protected final Gripper gripper() {
+        return robot.getGripper();
+    }
+
+    /** @return the robot's live state */
+    protected final CurrentRobotState robot() {
+        return robot;
+    }
+
+    /**
+     * Sleep for robot time; an interruption ends the sleep early and asks the controller to stop.
+     *
+     * @param millis milliseconds of robot time (simulated time in the simulator)
+     */
+    protected final void sleepMillis(long millis) {
+        try {
+            Thread.sleep(millis);
+        } catch (InterruptedException e) {
+            active = false;
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** @param text one line to show on the console */
+    protected final void print(String text) {
+        messages.sendMessage(text);
+    }
+}

@@ -1,0 +1,47 @@
+package org.kheperasim.api;
+
+import org.kheperasim.api.spi.RobotPort;
+
+/**
+ * The controller's view of the robot: its sensors, motors and gripper. Every object it hands out
+ * is a live view that keeps showing fresh values, so fetching them once at the start of
+ * {@code run()} is enough.
+ */
+public final class CurrentRobotState {
+    private final Sensor[] sensors;
+    private final Motor motor;
+    private final Gripper gripper;
+
+    /** @param port the backend behind the view (backends construct this, students do not) */
+    public CurrentRobotState(RobotPort port) {
+        sensors = new Sensor[IrSensor.COUNT];
+        for (IrSensor s : IrSensor.values()) {
+            sensors[s.index()] = new Sensor(port, s);
+        }
+        motor = new Motor(port);
+        gripper = new Gripper(port);
+    }
+
+    /**
+     * @return the eight IR sensors, indexed 0..7 in the robot's order (see {@link IrSensor}); a new
+     *     array each call, holding the same live {@link Sensor} objects
+     */
+    public Sensor[] getSensorValues() {
+        return sensors.clone();
+    }
+
+    /** @param which a sensor position @return that live sensor */
+    public Sensor getSensor(IrSensor which) {
+        return sensors[which.index()];
+    }
+
+    /** @return the wheel motors and position counters */
+    public Motor getMotorState() {
+        return motor;
+    }
+
+    /** @return the gripper turret */
+    public Gripper getGripper() {
+        return gripper;
+    }
+}

@@ -1,0 +1,117 @@
+package org.kheperasim.api.spi;
+
+import java.lang.reflect.Constructor;
+import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Method;
+import java.lang.reflect.Modifier;
+import org.kheperasim.api.Controller;
+import org.kheperasim.api.CurrentRobotState;
+import org.kheperasim.api.MessagePasser;
+
+/**
+ * The controller contract, applied the same way by every backend: how a controller class is
+ * checked, constructed and asked to stop.
+ */
+public final class Controllers {
+    private Controllers() {
+    }
+
+    /**
+     * Check that {@code type} is a usable controller class.
+     *
+     * @param type a loaded class
+     * @throws ControllerException naming the class and the fix when it is not
+     */
+    public static void check(Class<?> type) {
+        String name = type.getName();
+        if (!Thread.class.isAssignableFrom(type)) {
+            throw new ControllerException("Controller " + name + " does not extend Thread: a controller"
+                    + " is a Thread subclass (as in the Appendix: 'public class Robot extends Thread')"
+                    + " or extends org.kheperasim.api.Controller");
+        }
+        if (Modifier.isAbstract(type.getModifiers())) {
+            throw new ControllerException("Controller " + name + " is abstract: name a concrete subclass");
+        }
+        if (classicConstructor(type) == null && !(Controller.class.isAssignableFrom(type) && noArgConstructor(type) != null)) {
+            throw new ControllerException("Controller " + name + " has no constructor " + type.getSimpleName()
+                    + "(CurrentRobotState, MessagePasser): add one as in the Appendix"
+                    + (Controller.class.isAssignableFrom(type) ? ", or a constructor with no parameters" : ""));
+        }
+    }
+
+    /**
+     * Construct a controller, ready to {@code start()}.
+     *
+     * @param type the controller class (see {@link #check})
+     * @param state the robot's live state to hand it
+     * @param messages its message channel
+     * @return the new, not yet started controller thread
+     * @throws ControllerException when the class is unusable or its constructor throws
+     */
+    public static Thread instantiate(Class<?> type, CurrentRobotState state, MessagePasser messages) {
+        check(type);
+        try {
+            Constructor<?> classic = classicConstructor(type);
+            if (classic != null) {
+                return (Thread) classic.newInstance(state, messages);
+            }
+            Constructor<?> noArg = noArgConstructor(type);
+            ControllerBinding.bind(new ControllerBinding(state, messages));
+            try {
+                return (Thread) noArg.newInstance();
+            } finally {
+                ControllerBinding.bind(null);
+            }
+        } catch (InvocationTargetException e) {
+            Throwable cause = e.getCause();
+            throw new ControllerException("The constructor of controller " + type.getName() + " threw "
+                    + cause + "; fix the constructor (see the cause below)", cause);
+        } catch (ReflectiveOperationException e) {
+            throw new ControllerException("Controller " + type.getName() + " could not be created: " + e
+                    + "; make the class and its constructor public", e);
+        }
+    }
+
+    /**
+     * Ask a running controller to stop the way the Appendix expects: call its public, parameterless
+     * {@code killControl()} when it has one.
+     *
+     * @param controller the controller thread
+     * @return true when a {@code killControl()} was found and called
+     */
+    public static boolean requestStop(Thread controller) {
+        Method kill;
+        try {
+            kill = controller.getClass().getMethod("killControl");
+        } catch (NoSuchMethodException e) {
+            return false;
+        }
+        try {
+            kill.setAccessible(true);
+            kill.invoke(controller);
+            return true;
+        } catch (ReflectiveOperationException | RuntimeException e) {
+            return false;
+        }
+    }
+
+    private static Constructor<?> classicConstructor(Class<?> type) {
+        try {
+            Constructor<?> c = type.getDeclaredConstructor(CurrentRobotState.class, MessagePasser.class);
+            c.setAccessible(true);
+            return c;
+        } catch (NoSuchMethodException | RuntimeException e) {
+            return null;
+        }
+    }
+
+    private static Constructor<?> noArgConstructor(Class<?> type) {
+        try {
+            Constructor<?> c = type.getDeclaredConstructor();
+            c.setAccessible(true);
+            return c;
+        } catch (NoSuchMethodException | RuntimeException e) {
+            return null;
+        }
+    }
+}

@@ -1,0 +1,66 @@
+package org.kheperasim.api.spi;
+
+import org.kheperasim.api.ArmPosition;
+import org.kheperasim.api.GripperState;
+
+/**
+ * What a backend (the simulator, or the link to a real robot) provides behind the student API.
+ * Students never see this interface; {@link org.kheperasim.api.CurrentRobotState} and its
+ * {@code Sensor}, {@code Motor} and {@code Gripper} objects delegate every call to it, which is
+ * what makes them live views.
+ *
+ * <p>Every method may be called from the controller's thread. A simulator implementation charges
+ * simulated time for each call (that is how a busy loop makes time pass); a robot implementation
+ * reads values its poll loop keeps fresh. Units are those of the {@code org.kheperasim.api}
+ * package documentation.
+ */
+public interface RobotPort {
+
+    /** @return proximity of sensor {@code index}, 0..1023, higher = nearer */
+    int proximity(int index);
+
+    /** @return ambient light at sensor {@code index}, 0..1023, lower = brighter */
+    int ambientLight(int index);
+
+    /** Ask for wheel speeds, in speed units (≈ 8 mm/s), each already checked to lie in −127..127. */
+    void setSpeeds(int left, int right);
+
+    /** @return the speed last asked for on the left wheel, speed units */
+    int leftSpeed();
+
+    /** @return the speed last asked for on the right wheel, speed units */
+    int rightSpeed();
+
+    /** @return left wheel position counter, pulses (≈ 0.08 mm) */
+    int leftPosition();
+
+    /** @return right wheel position counter, pulses (≈ 0.08 mm) */
+    int rightPosition();
+
+    /** Set both wheel position counters, pulses (the protocol's {@code G} command). */
+    void setPositions(int left, int right);
+
+    /** Move the gripper arm towards {@code position}. */
+    void setArm(ArmPosition position);
+
+    /** @return where the arm last came to rest */
+    ArmPosition armPosition();
+
+    /** @return true while the arm is travelling between positions */
+    boolean armMoving();
+
+    /** Open or close the fingers. */
+    void setFingers(GripperState state);
+
+    /** @return the fingers' state */
+    GripperState fingers();
+
+    /** @return true when something breaks the optical barrier between the fingers */
+    boolean objectPresent();
+
+    /** @return resistivity of what the fingers hold, 0..255; 0 with nothing held */
+    int resistivity();
+
+    /** Deliver a line of text from the controller to the person watching (console, log). */
+    void message(String text);
+}
