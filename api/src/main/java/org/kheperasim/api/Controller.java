@@ -129,7 +129,7 @@ public abstract class Controller extends Thread {
      */
     protected final void sleepMillis(long millis) {
         try {
-            Thread.sleep(millis);
+            robot.port().sleep(millis);
         } catch (InterruptedException e) {
             active = false;
             Thread.currentThread().interrupt();

@@ -11,9 +11,11 @@ public final class CurrentRobotState {
     private final Sensor[] sensors;
     private final Motor motor;
     private final Gripper gripper;
+    private final RobotPort port;
 
     /** @param port the backend behind the view (backends construct this, students do not) */
     public CurrentRobotState(RobotPort port) {
+        this.port = port;
         sensors = new Sensor[IrSensor.COUNT];
         for (IrSensor s : IrSensor.values()) {
             sensors[s.index()] = new Sensor(port, s);
@@ -43,5 +45,10 @@ public final class CurrentRobotState {
     /** @return the gripper turret */
     public Gripper getGripper() {
         return gripper;
+    }
+
+    /** The backend behind this view, for {@link Controller}'s helpers. */
+    RobotPort port() {
+        return port;
     }
 }

@@ -61,6 +61,16 @@ public interface RobotPort {
     /** @return resistivity of what the fingers hold, 0..255; 0 with nothing held */
     int resistivity();
 
+    /**
+     * Sleep for robot time: simulated time in the simulator, wall time on the robot. Used by
+     * {@link org.kheperasim.api.Controller#sleepMillis}; a student's own {@code Thread.sleep} is
+     * put on the simulation clock by the simulator's class loader instead.
+     *
+     * @param millis milliseconds of robot time
+     * @throws InterruptedException if the controller thread is interrupted while sleeping
+     */
+    void sleep(long millis) throws InterruptedException;
+
     /** Deliver a line of text from the controller to the person watching (console, log). */
     void message(String text);
 }

@@ -33,7 +33,9 @@ public final class SimClock {
         void checkpoint();
     }
 
-    private static final ThreadLocal<Clock> CURRENT = new ThreadLocal<>();
+    // Inheritable: the host binds the clock on the engine thread while it constructs the controller
+    // Thread object, and the controller thread inherits it when it starts.
+    private static final ThreadLocal<Clock> CURRENT = new InheritableThreadLocal<>();
 
     /**
      * Count of clocks with a stop pending; while it is zero the back-edge checkpoint costs one

@@ -1,0 +1,186 @@
+package org.kheperasim.sim.engine;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+import java.util.function.Function;
+import org.kheperasim.api.IrSensor;
+import org.kheperasim.sim.arena.Pose;
+
+/**
+ * The simulation engine: advances the world in fixed ticks of simulated time, runs each robot's
+ * driver (its controller) in lockstep with that clock, and publishes snapshots to listeners. It
+ * never reads the wall clock and never touches the screen, so the same inputs give the same run on
+ * any machine, with or without a window.
+ *
+ * <p>One tick at time t: commands and poll-cycle events due by t take effect; every driver whose
+ * wake time falls before t + tick runs up to t + tick, seeing the world as of t; listeners due at t
+ * receive a snapshot; then every robot moves through the tick.
+ */
+public final class Engine {
+    /** The tick: 1 ms of simulated time. */
+    public static final long TICK_NANOS = 1_000_000L;
+
+    private final World world;
+    private final long seed;
+    private final SplittableRandom seeds;
+    private final List<SimRobot> robots = new ArrayList<>();
+    private final List<RobotDriver> drivers = new ArrayList<>();
+    private final List<Function<SimRobot, String>> driverStatus = new ArrayList<>();
+    private final List<Subscription> listeners = new ArrayList<>();
+    private long tick;
+
+    private record Subscription(SnapshotListener listener, long periodTicks) {
+    }
+
+    /**
+     * @param world the world
+     * @param seed the run's seed: every random stream of the run is split from it
+     */
+    public Engine(World world, long seed) {
+        this.world = world;
+        this.seed = seed;
+        this.seeds = new SplittableRandom(seed);
+    }
+
+    /**
+     * Add a robot. Each robot gets its own random stream, split from the seed in the order robots
+     * are added.
+     *
+     * @param name a name for reports
+     * @param start start pose
+     * @param settings its settings
+     * @return the robot
+     */
+    public SimRobot addRobot(String name, Pose start, Settings settings) {
+        SimRobot r = new SimRobot(robots.size(), name, world, start, settings, seeds.split());
+        robots.add(r);
+        drivers.add(null);
+        driverStatus.add(x -> "none");
+        return r;
+    }
+
+    /**
+     * @param robot a robot of this engine
+     * @param driver what drives it
+     * @param status tells the driver's state for snapshots
+     */
+    public void attach(SimRobot robot, RobotDriver driver, Function<SimRobot, String> status) {
+        drivers.set(robot.id(), driver);
+        driverStatus.set(robot.id(), status);
+    }
+
+    /**
+     * @param listener receives snapshots
+     * @param periodNanos how often, a whole number of ticks (a tick's length for every tick)
+     */
+    public void addListener(SnapshotListener listener, long periodNanos) {
+        if (periodNanos < TICK_NANOS || periodNanos % TICK_NANOS != 0) {
+            throw new IllegalArgumentException("listener period " + periodNanos + " ns must be a whole number of 1 ms ticks");
+        }
+        listeners.add(new Subscription(listener, periodNanos / TICK_NANOS));
+    }
+
+    /** @param listener a listener to stop calling */
+    public void removeListener(SnapshotListener listener) {
+        listeners.removeIf(s -> s.listener == listener);
+    }
+
+    /** @return simulated time now, ns */
+    public long timeNanos() {
+        return tick * TICK_NANOS;
+    }
+
+    /** @return the run's seed */
+    public long seed() {
+        return seed;
+    }
+
+    /** @return the world */
+    public World world() {
+        return world;
+    }
+
+    /** @return the robots, in order */
+    public List<SimRobot> robots() {
+        return List.copyOf(robots);
+    }
+
+    /** @return true while at least one driver has not ended */
+    public boolean anyDriverRunning() {
+        for (RobotDriver d : drivers) {
+            if (d != null && d.wakeNanos() != Long.MAX_VALUE) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** Advance the world by one tick. */
+    public void step() {
+        long t = tick * TICK_NANOS;
+        long end = t + TICK_NANOS;
+        int n = robots.size();
+        for (int i = 0; i < n; i++) {
+            robots.get(i).beginTick(t);
+        }
+        for (int i = 0; i < n; i++) {
+            RobotDriver d = drivers.get(i);
+            if (d != null && d.wakeNanos() < end) {
+                d.runSlice(t, end);
+            }
+        }
+        publish();
+        for (int i = 0; i < n; i++) {
+            robots.get(i).integrate();
+        }
+        tick++;
+    }
+
+    /**
+     * Run until simulated time reaches {@code endNanos} or every driver has ended.
+     *
+     * @param endNanos simulated time to stop at, ns
+     */
+    public void runUntil(long endNanos) {
+        while (timeNanos() < endNanos && (anyDriverRunning() || !hasDrivers())) {
+            step();
+        }
+    }
+
+    private boolean hasDrivers() {
+        for (RobotDriver d : drivers) {
+            if (d != null) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private void publish() {
+        Snapshot snapshot = null;
+        for (int k = 0; k < listeners.size(); k++) {
+            Subscription s = listeners.get(k);
+            if (tick % s.periodTicks == 0) {
+                if (snapshot == null) {
+                    snapshot = snapshot();
+                }
+                s.listener.onSnapshot(snapshot);
+            }
+        }
+    }
+
+    /** @return the world as it is now */
+    public Snapshot snapshot() {
+        List<RobotView> views = new ArrayList<>(robots.size());
+        int[] prox = new int[IrSensor.COUNT];
+        int[] light = new int[IrSensor.COUNT];
+        for (SimRobot r : robots) {
+            r.copyVisible(prox, light);
+            views.add(new RobotView(r.id(), r.name(), r.x(), r.y(), r.headingDeg(), r.speedLeft(), r.speedRight(),
+                    r.encoderLeft(), r.encoderRight(), r.contact(), prox, light, r.collisions(),
+                    r.distanceTravelledMm(), driverStatus.get(r.id()).apply(r)));
+        }
+        return new Snapshot(timeNanos(), views);
+    }
+}

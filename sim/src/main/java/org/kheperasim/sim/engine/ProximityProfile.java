@@ -1,0 +1,96 @@
+package org.kheperasim.sim.engine;
+
+import java.util.Arrays;
+import java.util.List;
+
+/**
+ * A proximity sensor's response: reading against distance to a white wall, as a table interpolated
+ * linearly. Beyond the last distance the response is zero (the sensor's offset and noise remain).
+ *
+ * @param name the profile's name, used in settings
+ * @param distancesMm increasing distances from the sensor, mm
+ * @param values readings at those distances, before offset and noise
+ */
+public record ProximityProfile(String name, double[] distancesMm, double[] values) {
+
+    /**
+     * The default, for the paper's Khepera I: about 1000 within a few mm of a white wall, 600 at
+     * 20 mm (the Appendix controller's threshold), falling to nothing by 60 mm; the sensor's
+     * offset puts a noise floor of a few tens beyond 50 mm (khepera-reference.md, "Default sensor
+     * profile").
+     */
+    public static final ProximityProfile KHEPERA_I = new ProximityProfile("khepera1",
+            new double[] {0, 5, 10, 15, 20, 25, 30, 35, 40, 45, 50, 55, 60},
+            new double[] {1023, 985, 880, 745, 600, 455, 325, 215, 130, 70, 30, 10, 0});
+
+    /** The Khepera II white-paper calibration (RoadNarrows), from 10 mm out to 100 mm. */
+    public static final ProximityProfile KHEPERA_II = new ProximityProfile("khepera2",
+            new double[] {0, 10, 20, 30, 40, 50, 60, 80, 100, 120},
+            new double[] {1023, 1000, 450, 275, 190, 150, 125, 100, 80, 0});
+
+    /** The built-in profiles, by name. */
+    public static final List<ProximityProfile> BUILT_IN = List.of(KHEPERA_I, KHEPERA_II);
+
+    /** Checks the table. */
+    public ProximityProfile {
+        if (distancesMm.length != values.length || distancesMm.length < 2) {
+            throw new IllegalArgumentException("profile " + name + ": distances and values must pair up, two at least");
+        }
+        for (int i = 1; i < distancesMm.length; i++) {
+            if (!(distancesMm[i] > distancesMm[i - 1])) {
+                throw new IllegalArgumentException("profile " + name + ": distances must increase");
+            }
+        }
+        distancesMm = distancesMm.clone();
+        values = values.clone();
+    }
+
+    /** @param name a profile name @return the built-in profile of that name */
+    public static ProximityProfile named(String name) {
+        for (ProximityProfile p : BUILT_IN) {
+            if (p.name.equals(name)) {
+                return p;
+            }
+        }
+        throw new IllegalArgumentException("unknown proximity profile '" + name + "'; use one of "
+                + BUILT_IN.stream().map(ProximityProfile::name).toList());
+    }
+
+    /** @return the farthest distance with a non-zero response, mm */
+    public double rangeMm() {
+        return distancesMm[distancesMm.length - 1];
+    }
+
+    /** @param distanceMm distance from the sensor to the reflecting surface, mm @return the reading */
+    public double valueAt(double distanceMm) {
+        if (distanceMm <= distancesMm[0]) {
+            return values[0];
+        }
+        int n = distancesMm.length;
+        if (distanceMm >= distancesMm[n - 1]) {
+            return values[n - 1];
+        }
+        int i = 1;
+        while (distancesMm[i] < distanceMm) {
+            i++;
+        }
+        double t = (distanceMm - distancesMm[i - 1]) / (distancesMm[i] - distancesMm[i - 1]);
+        return values[i - 1] + t * (values[i] - values[i - 1]);
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof ProximityProfile p && p.name.equals(name)
+                && Arrays.equals(p.distancesMm, distancesMm) && Arrays.equals(p.values, values);
+    }
+
+    @Override
+    public int hashCode() {
+        return name.hashCode() * 31 + Arrays.hashCode(distancesMm);
+    }
+
+    @Override
+    public String toString() {
+        return name;
+    }
+}

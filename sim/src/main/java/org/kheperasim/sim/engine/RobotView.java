@@ -1,0 +1,69 @@
+package org.kheperasim.sim.engine;
+
+import java.util.Arrays;
+
+/**
+ * An immutable picture of one robot at one instant.
+ *
+ * @param id the robot's index
+ * @param name the robot's name
+ * @param x position, mm
+ * @param y position, mm
+ * @param headingDeg heading, degrees counter-clockwise from +x
+ * @param speedLeft speed in effect on the left wheel, units
+ * @param speedRight speed in effect on the right wheel, units
+ * @param encoderLeft the robot's left position counter, pulses
+ * @param encoderRight the robot's right position counter, pulses
+ * @param contact which side touches an obstacle
+ * @param proximity the proximity values the controller sees, 0..1023
+ * @param light the light values the controller sees, 0..1023
+ * @param collisions collisions so far
+ * @param distanceMm path length so far, mm
+ * @param controller the controller's state, as text (running, finished, failed, hung, none)
+ */
+public record RobotView(int id, String name, double x, double y, double headingDeg, int speedLeft, int speedRight,
+        int encoderLeft, int encoderRight, Contact contact, int[] proximity, int[] light, int collisions,
+        double distanceMm, String controller) {
+
+    /** Copies the arrays, so the view cannot change. */
+    public RobotView {
+        proximity = proximity.clone();
+        light = light.clone();
+    }
+
+    /** @return a copy of the proximity values */
+    @Override
+    public int[] proximity() {
+        return proximity.clone();
+    }
+
+    /** @return a copy of the light values */
+    @Override
+    public int[] light() {
+        return light.clone();
+    }
+
+    /** @param i sensor index 0..7 @return its proximity value */
+    public int proximity(int i) {
+        return proximity[i];
+    }
+
+    /** @param i sensor index 0..7 @return its light value */
+    public int light(int i) {
+        return light[i];
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof RobotView v && v.id == id && v.name.equals(name) && v.x == x && v.y == y
+                && v.headingDeg == headingDeg && v.speedLeft == speedLeft && v.speedRight == speedRight
+                && v.encoderLeft == encoderLeft && v.encoderRight == encoderRight && v.contact == contact
+                && Arrays.equals(v.proximity, proximity) && Arrays.equals(v.light, light)
+                && v.collisions == collisions && v.distanceMm == distanceMm && v.controller.equals(controller);
+    }
+
+    @Override
+    public int hashCode() {
+        return Double.hashCode(x) * 31 + Double.hashCode(y) + Arrays.hashCode(proximity);
+    }
+}

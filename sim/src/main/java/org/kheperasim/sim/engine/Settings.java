@@ -1,0 +1,206 @@
+package org.kheperasim.sim.engine;
+
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.SortedMap;
+import java.util.TreeMap;
+
+/**
+ * The simulation's settings: link speed, the time model, and every sensor's and motor's gain,
+ * calibration and noise (the paper's "sensor degradation" and "motor degradation"). Immutable; a
+ * setting is changed by {@link #with(String, String)}, which checks the key and the value.
+ *
+ * <p>Keys are dotted names such as {@code prox.3.gain} or {@code motor.left.calibration}; run
+ * {@code khepera-sim settings} to list them all with their defaults and meanings.
+ */
+public final class Settings {
+
+    private enum Kind { NUMBER, FLAG, PROFILE }
+
+    private record Def(String defaultValue, Kind kind, double min, double max, String meaning) {
+    }
+
+    private static final Map<String, Def> DEFS = new LinkedHashMap<>();
+
+    static {
+        num("link.baud", "38400", 300, 1_000_000, "serial line speed, bits/s: sets how often sensor values refresh and how late commands take effect");
+        num("link.turnaroundUs", "500", 0, 100_000, "robot's time from the end of a command to the start of its reply, microseconds");
+        num("api.callCostUs", "20", 0.001, 1_000_000, "simulated cost of each API call a controller makes, microseconds");
+        num("noise.reading", "1", 0, 100, "scale of every per-reading noise (0 switches it off)");
+        num("noise.robot", "1", 0, 100, "scale of every per-robot miscalibration drawn once a run (0 switches it off)");
+        DEFS.put("prox.profile", new Def("khepera1", Kind.PROFILE, 0, 0, "proximity response table: khepera1 (default) or khepera2"));
+        num("prox.offset", "15", 0, 1023, "proximity reading with nothing in range (the noise floor), counts");
+        num("prox.offsetSpread", "10", 0, 1023, "per-robot spread of each sensor's offset, +/- counts");
+        num("prox.gainSpread", "0.05", 0, 1, "per-robot spread of each sensor's gain, standard deviation (relative)");
+        num("prox.noiseAbs", "3", 0, 1023, "per-reading proximity noise, standard deviation, counts");
+        num("prox.noiseRel", "0.03", 0, 1, "per-reading proximity noise, standard deviation relative to the signal");
+        num("prox.spikeRate", "0.001", 0, 1, "probability that a proximity reading is a spurious spike");
+        num("prox.reflect.wall", "1", 0, 10, "reflectance of walls relative to the white reference wall");
+        num("prox.reflect.light", "1", 0, 10, "reflectance of light sources");
+        num("prox.reflect.cap", "1", 0, 10, "reflectance of bottle caps");
+        num("light.dark", "480", 0, 1023, "ambient-light reading in darkness, counts (lower = brighter)");
+        num("light.bright", "20", 0, 1023, "ambient-light reading right next to a lamp, counts");
+        num("light.darkSpread", "10", 0, 1023, "per-robot spread of each sensor's darkness value, standard deviation, counts");
+        num("light.flickerRate", "0.02", 0, 1, "probability that a reading in darkness deviates (the paper: 2%)");
+        num("light.flickerDepth", "0.005", 0, 1, "largest relative deviation of such a reading (the paper: 0.005)");
+        num("light.noiseRel", "0.01", 0, 1, "per-reading noise of the light signal, standard deviation (relative)");
+        for (int i = 0; i < 8; i++) {
+            num("prox." + i + ".gain", "1", 0, 10, "gain of proximity sensor " + i);
+            num("prox." + i + ".noise", "1", 0, 100, "noise multiplier of proximity sensor " + i);
+            flag("prox." + i + ".dead", "dead proximity sensor " + i + " (reads 0)");
+            num("light." + i + ".gain", "1", 0, 10, "gain of light sensor " + i);
+            flag("light." + i + ".dead", "dead light sensor " + i + " (reads as darkness)");
+        }
+        for (String w : new String[] {"left", "right"}) {
+            num("motor." + w + ".calibration", "1", 0, 10, "actual over commanded speed of the " + w + " wheel (worn motor < 1)");
+            num("motor." + w + ".noise", "0.02", 0, 10, "speed noise of the " + w + " wheel, standard deviation (relative), redrawn every 10 ms");
+        }
+        num("motor.spread", "0.02", 0, 1, "per-robot spread of each wheel's calibration, standard deviation (relative)");
+        num("encoder.mmPerPulse", "0.08", 0.001, 10, "wheel travel per encoder pulse, mm (the manual also gives 1/12 mm)");
+    }
+
+    private static void num(String key, String def, double min, double max, String meaning) {
+        DEFS.put(key, new Def(def, Kind.NUMBER, min, max, meaning));
+    }
+
+    private static void flag(String key, String meaning) {
+        DEFS.put(key, new Def("false", Kind.FLAG, 0, 1, meaning));
+    }
+
+    private static final Settings DEFAULTS = new Settings(new TreeMap<>());
+
+    private final TreeMap<String, String> overrides;
+
+    private Settings(TreeMap<String, String> overrides) {
+        this.overrides = overrides;
+    }
+
+    /** @return the default settings */
+    public static Settings defaults() {
+        return DEFAULTS;
+    }
+
+    /**
+     * @param key a setting's name
+     * @param value its new value
+     * @return settings with that one changed
+     * @throws IllegalArgumentException naming the key, the value and what is allowed
+     */
+    public Settings with(String key, String value) {
+        Def def = DEFS.get(key);
+        if (def == null) {
+            throw new IllegalArgumentException("unknown setting '" + key + "'; list them with 'khepera-sim settings'");
+        }
+        String v = value.trim();
+        switch (def.kind) {
+            case NUMBER -> {
+                double d;
+                try {
+                    d = Double.parseDouble(v);
+                } catch (NumberFormatException e) {
+                    throw new IllegalArgumentException("setting " + key + "=" + value + ": not a number");
+                }
+                if (!(d >= def.min && d <= def.max)) {
+                    throw new IllegalArgumentException("setting " + key + "=" + value + ": must lie in "
+                            + fmt(def.min) + ".." + fmt(def.max) + " (" + def.meaning + ")");
+                }
+            }
+            case FLAG -> {
+                if (!v.equals("true") && !v.equals("false")) {
+                    throw new IllegalArgumentException("setting " + key + "=" + value + ": must be true or false");
+                }
+            }
+            case PROFILE -> ProximityProfile.named(v);
+        }
+        TreeMap<String, String> next = new TreeMap<>(overrides);
+        if (v.equals(def.defaultValue)) {
+            next.remove(key);
+        } else {
+            next.put(key, v);
+        }
+        return new Settings(next);
+    }
+
+    /**
+     * @param assignment {@code key=value}
+     * @return settings with that one changed
+     */
+    public Settings with(String assignment) {
+        int eq = assignment.indexOf('=');
+        if (eq <= 0) {
+            throw new IllegalArgumentException("setting '" + assignment + "' must look like key=value, e.g. prox.3.gain=0.5");
+        }
+        return with(assignment.substring(0, eq).trim(), assignment.substring(eq + 1));
+    }
+
+    /** @param scale new scale for both noise channels @return settings with {@code noise.reading} and {@code noise.robot} set */
+    public Settings withNoise(double scale) {
+        return with("noise.reading", fmt(scale)).with("noise.robot", fmt(scale));
+    }
+
+    /** @return the numeric value of a setting */
+    public double number(String key) {
+        return Double.parseDouble(raw(key));
+    }
+
+    /** @return the value of a true/false setting */
+    public boolean flag(String key) {
+        return Boolean.parseBoolean(raw(key));
+    }
+
+    /** @return the value of a setting as text */
+    public String raw(String key) {
+        Def def = DEFS.get(key);
+        if (def == null) {
+            throw new IllegalArgumentException("unknown setting '" + key + "'");
+        }
+        return overrides.getOrDefault(key, def.defaultValue);
+    }
+
+    /** @return the proximity response profile */
+    public ProximityProfile proximityProfile() {
+        return ProximityProfile.named(raw("prox.profile"));
+    }
+
+    /** @return the settings that differ from the defaults, sorted by key */
+    public SortedMap<String, String> overrides() {
+        return Collections.unmodifiableSortedMap(overrides);
+    }
+
+    /** @return every setting's key, default and meaning, in a stable order */
+    public static Map<String, String[]> catalogue() {
+        Map<String, String[]> out = new LinkedHashMap<>();
+        DEFS.forEach((k, d) -> out.put(k, new String[] {d.defaultValue, d.meaning}));
+        return out;
+    }
+
+    /** @return the overrides as {@code key=value} joined by spaces, or {@code defaults} */
+    public String describe() {
+        if (overrides.isEmpty()) {
+            return "defaults";
+        }
+        StringBuilder sb = new StringBuilder();
+        overrides.forEach((k, v) -> sb.append(sb.length() == 0 ? "" : " ").append(k).append('=').append(v));
+        return sb.toString();
+    }
+
+    private static String fmt(double d) {
+        return d == StrictMath.rint(d) && StrictMath.abs(d) < 1e15 ? Long.toString((long) d) : Double.toString(d);
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof Settings s && s.overrides.equals(overrides);
+    }
+
+    @Override
+    public int hashCode() {
+        return overrides.hashCode();
+    }
+
+    @Override
+    public String toString() {
+        return describe();
+    }
+}

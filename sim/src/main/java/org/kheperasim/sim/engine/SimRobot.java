@@ -1,0 +1,794 @@
+package org.kheperasim.sim.engine;
+
+import java.util.BitSet;
+import java.util.List;
+import java.util.SplittableRandom;
+import org.kheperasim.api.ArmPosition;
+import org.kheperasim.api.GripperState;
+import org.kheperasim.api.IrSensor;
+import org.kheperasim.link.timing.LinkTiming;
+import org.kheperasim.link.timing.PollStep;
+import org.kheperasim.sim.arena.DistanceField;
+import org.kheperasim.sim.arena.Light;
+import org.kheperasim.sim.arena.OccupancyGrid;
+import org.kheperasim.sim.arena.Pose;
+import org.kheperasim.sim.arena.RayHit;
+
+/**
+ * One simulated Khepera: its pose, wheels, encoders and sensors, and the link between it and its
+ * controller. The engine advances it in fixed ticks; everything here is deterministic given the
+ * random stream it was built with.
+ *
+ * <p>What the controller sees follows the serial link: the values visible to it are those the
+ * robot-link poll cycle (N, O, H) would have delivered by now at the set baud, and speed commands
+ * take effect after their wire time (see {@link LinkTiming}).
+ */
+public final class SimRobot {
+    /** Proximity beams per sensor: the centre ray and two pairs either side model the IR cone. */
+    private static final double[] RAY_ANGLES_DEG = {0, 12, -12, 24, -24};
+    private static final double[] RAY_WEIGHTS = {1.0, 0.85, 0.85, 0.5, 0.5};
+    /** Closer than this to an obstacle (beyond the body radius) counts as touching. */
+    private static final double CONTACT_EPSILON_MM = 0.5;
+    private static final double TICK_S = Engine.TICK_NANOS / 1e9;
+    /** A command's acknowledgement, e.g. {@code d} CR LF. */
+    private static final int REPLY_CHARS = 3;
+
+    private final int id;
+    private final String name;
+    private final World world;
+    private final OccupancyGrid grid;
+    private final DistanceField field;
+    private final Settings settings;
+    private final LinkTiming link;
+    private final RayHit hit = new RayHit();
+
+    // Pose: position (mm) and heading as a unit vector; the heading angle is derived on demand.
+    private double x;
+    private double y;
+    private double cos;
+    private double sin;
+    private double clearance;
+
+    // Wheels.
+    private int askedLeft;
+    private int askedRight;
+    private int speedLeft;
+    private int speedRight;
+    private double wheelLeft;   // actual wheel speeds, mm/s
+    private double wheelRight;
+    private boolean wheelsDirty = true;
+    private double motorNoiseLeft = 1;
+    private double motorNoiseRight = 1;
+    private double lastDTheta = Double.NaN;
+    private double halfCos = 1;
+    private double halfSin;
+    private double fullCos = 1;
+    private double fullSin;
+    private double chordFactor = 1;
+    private int ticksSinceNormalise;
+
+    // Encoders, in pulses.
+    private double encoderLeft;
+    private double encoderRight;
+
+    // Commands on their way down the serial line. Like robot-link, the simulated link sends a
+    // speed command only when the asked speeds differ from those last sent, one command at a time:
+    // speeds asked for while the line is busy replace each other and the latest goes out next.
+    private final CommandQueue commands = new CommandQueue();
+    private long lineFreeAt;
+    private int sentLeft;
+    private int sentRight;
+    private boolean speedPending;
+
+    // The poll cycle: values sampled on the robot, and values the controller can see.
+    private final long[] eventOffsets;
+    private final long cycleNanos;
+    private long cycleStart;
+    private int phase;
+    private final int[] sampledProximity = new int[IrSensor.COUNT];
+    private final int[] sampledLight = new int[IrSensor.COUNT];
+    private int sampledEncoderLeft;
+    private int sampledEncoderRight;
+    private final int[] visibleProximity = new int[IrSensor.COUNT];
+    private final int[] visibleLight = new int[IrSensor.COUNT];
+    private int visibleEncoderLeft;
+    private int visibleEncoderRight;
+
+    // The gripper turret.
+    private ArmPosition arm = ArmPosition.UP;
+    private GripperState fingers = GripperState.OPEN;
+
+    // Contact and statistics.
+    private Contact contact = Contact.NONE;
+    private boolean blocked;
+    private int collisions;
+    private double distanceTravelled;
+    private final BitSet visited;
+    private int visitedFree;
+    private int lastCell = -1;
+    private final int[] footprint;
+
+    // Sensor model, with the per-robot miscalibration drawn once.
+    private final ProximityProfile profile;
+    private final double proxRange;
+    private final double[] sensorX = new double[IrSensor.COUNT];
+    private final double[] sensorY = new double[IrSensor.COUNT];
+    private final double[] sensorCos = new double[IrSensor.COUNT];
+    private final double[] sensorSin = new double[IrSensor.COUNT];
+    private final double[] rayCos = new double[RAY_ANGLES_DEG.length];
+    private final double[] raySin = new double[RAY_ANGLES_DEG.length];
+    private final double[] proxGain = new double[IrSensor.COUNT];
+    private final double[] proxOffset = new double[IrSensor.COUNT];
+    private final double[] proxNoiseScale = new double[IrSensor.COUNT];
+    private final boolean[] proxDead = new boolean[IrSensor.COUNT];
+    private final double proxNoiseAbs;
+    private final double proxNoiseRel;
+    private final double proxSpikeRate;
+    private final double[] reflectance;
+    private final double[] lightDark = new double[IrSensor.COUNT];
+    private final double[] lightGain = new double[IrSensor.COUNT];
+    private final boolean[] lightDead = new boolean[IrSensor.COUNT];
+    private final double lightBright;
+    private final double lightFlickerRate;
+    private final double lightFlickerDepth;
+    private final double lightNoiseRel;
+    private final double readingNoise;
+    private final double calibrationLeft;
+    private final double calibrationRight;
+    private final double motorNoiseSigmaLeft;
+    private final double motorNoiseSigmaRight;
+    private final double mmPerPulse;
+    private final List<Light> lights;
+
+    private final Noise[] proxNoise = new Noise[IrSensor.COUNT];
+    private final Noise[] lightNoise = new Noise[IrSensor.COUNT];
+    private final Noise motorNoiseL;
+    private final Noise motorNoiseR;
+
+    /**
+     * @param id the robot's index in the engine
+     * @param name a name for reports
+     * @param world the world it lives in
+     * @param start its start pose
+     * @param settings sensor, motor and link settings
+     * @param random this robot's own random stream (split from the run's seed)
+     */
+    SimRobot(int id, String name, World world, Pose start, Settings settings, SplittableRandom random) {
+        this.id = id;
+        this.name = name;
+        this.world = world;
+        this.grid = world.grid();
+        this.field = world.field();
+        this.settings = settings;
+        this.link = new LinkTiming((int) settings.number("link.baud"), LinkTiming.DEFAULT_BITS_PER_CHAR,
+                (long) (settings.number("link.turnaroundUs") * 1000));
+        this.lights = world.arena().lights();
+
+        // Independent streams, split in a fixed order: adding a source later (split at the end)
+        // leaves every existing stream as it was.
+        Noise systematic = new Noise(random.split());
+        for (int i = 0; i < IrSensor.COUNT; i++) {
+            proxNoise[i] = new Noise(random.split());
+        }
+        for (int i = 0; i < IrSensor.COUNT; i++) {
+            lightNoise[i] = new Noise(random.split());
+        }
+        motorNoiseL = new Noise(random.split());
+        motorNoiseR = new Noise(random.split());
+
+        double robotNoise = settings.number("noise.robot");
+        readingNoise = settings.number("noise.reading");
+        profile = settings.proximityProfile();
+        proxRange = profile.rangeMm();
+        proxNoiseAbs = settings.number("prox.noiseAbs");
+        proxNoiseRel = settings.number("prox.noiseRel");
+        proxSpikeRate = settings.number("prox.spikeRate") * readingNoise;
+        reflectance = new double[] {0, settings.number("prox.reflect.wall"), settings.number("prox.reflect.light"),
+            settings.number("prox.reflect.cap")};
+        double offsetSpread = settings.number("prox.offsetSpread");
+        double gainSpread = settings.number("prox.gainSpread");
+        double darkSpread = settings.number("light.darkSpread");
+        for (IrSensor s : IrSensor.values()) {
+            int i = s.index();
+            sensorX[i] = s.xMm();
+            sensorY[i] = s.yMm();
+            double h = StrictMath.toRadians(s.headingDeg());
+            sensorCos[i] = StrictMath.cos(h);
+            sensorSin[i] = StrictMath.sin(h);
+            // Always draw, so the streams do not depend on the settings.
+            double g = systematic.gaussian();
+            double o = systematic.uniform() * 2 - 1;
+            double d = systematic.gaussian();
+            proxGain[i] = settings.number("prox." + i + ".gain") * (1 + gainSpread * robotNoise * g);
+            proxOffset[i] = settings.number("prox.offset") + offsetSpread * robotNoise * o;
+            proxNoiseScale[i] = settings.number("prox." + i + ".noise") * readingNoise;
+            proxDead[i] = settings.flag("prox." + i + ".dead");
+            lightDark[i] = settings.number("light.dark") + darkSpread * robotNoise * d;
+            lightGain[i] = settings.number("light." + i + ".gain");
+            lightDead[i] = settings.flag("light." + i + ".dead");
+        }
+        for (int r = 0; r < RAY_ANGLES_DEG.length; r++) {
+            rayCos[r] = StrictMath.cos(StrictMath.toRadians(RAY_ANGLES_DEG[r]));
+            raySin[r] = StrictMath.sin(StrictMath.toRadians(RAY_ANGLES_DEG[r]));
+        }
+        lightBright = settings.number("light.bright");
+        lightFlickerRate = settings.number("light.flickerRate") * readingNoise;
+        lightFlickerDepth = settings.number("light.flickerDepth");
+        lightNoiseRel = settings.number("light.noiseRel") * readingNoise;
+        double motorSpread = settings.number("motor.spread") * robotNoise;
+        calibrationLeft = settings.number("motor.left.calibration") * (1 + motorSpread * systematic.gaussian());
+        calibrationRight = settings.number("motor.right.calibration") * (1 + motorSpread * systematic.gaussian());
+        motorNoiseSigmaLeft = settings.number("motor.left.noise") * readingNoise;
+        motorNoiseSigmaRight = settings.number("motor.right.noise") * readingNoise;
+        mmPerPulse = settings.number("encoder.mmPerPulse");
+
+        // The poll cycle: for each step, the robot samples when it has read the command and acted,
+        // and the controller sees the value when the reply's last character has arrived.
+        List<PollStep> steps = LinkTiming.POLL_CYCLE;
+        eventOffsets = new long[steps.size() * 2];
+        long t = 0;
+        for (int i = 0; i < steps.size(); i++) {
+            PollStep step = steps.get(i);
+            eventOffsets[2 * i] = t + link.wireNanos(step.commandChars()) + link.turnaroundNanos();
+            t += link.exchangeNanos(step);
+            eventOffsets[2 * i + 1] = t;
+        }
+        cycleNanos = t;
+
+        visited = new BitSet(grid.cols() * grid.rows());
+        footprint = footprintOffsets(grid.cellSize());
+
+        x = start.x();
+        y = start.y();
+        double h = StrictMath.toRadians(start.headingDeg());
+        cos = StrictMath.cos(h);
+        sin = StrictMath.sin(h);
+        clearance = field.clearance(x, y);
+        markVisited();
+
+        // robot-link primes every value before it starts the controller; so does the simulator.
+        sampleProximity();
+        sampleLight();
+        sampleEncoders();
+        System.arraycopy(sampledProximity, 0, visibleProximity, 0, IrSensor.COUNT);
+        System.arraycopy(sampledLight, 0, visibleLight, 0, IrSensor.COUNT);
+        visibleEncoderLeft = sampledEncoderLeft;
+        visibleEncoderRight = sampledEncoderRight;
+        cycleStart = 0;
+        phase = 0;
+    }
+
+    // ---------------------------------------------------------------- the controller's side
+
+    /**
+     * A controller asks for wheel speeds at simulated time {@code now}; the robot acts on them
+     * after the command's wire time.
+     */
+    void commandSpeeds(long now, int left, int right) {
+        askedLeft = left;
+        askedRight = right;
+        speedPending = left != sentLeft || right != sentRight;
+        if (speedPending && now >= lineFreeAt) {
+            sendSpeeds(now);
+        }
+    }
+
+    private void sendSpeeds(long start) {
+        long delay = link.speedCommandDelayNanos(askedLeft, askedRight);
+        commands.add(start + delay, CommandQueue.SPEED, askedLeft, askedRight);
+        lineFreeAt = start + delay + link.wireNanos(REPLY_CHARS);
+        sentLeft = askedLeft;
+        sentRight = askedRight;
+        speedPending = false;
+    }
+
+    /** A controller sets the position counters ({@code G}); it waits its turn on the line. */
+    void commandPositions(long now, int left, int right) {
+        long start = StrictMath.max(now, lineFreeAt);
+        long delay = link.setPositionDelayNanos(left, right);
+        commands.add(start + delay, CommandQueue.POSITION, left, right);
+        lineFreeAt = start + delay + link.wireNanos(REPLY_CHARS);
+    }
+
+    /** Stop the wheels at once: the controller has ended, failed or been stopped (robot-link sends D,0,0). */
+    void emergencyStop() {
+        askedLeft = 0;
+        askedRight = 0;
+        commands.clear();
+        speedPending = false;
+        sentLeft = 0;
+        sentRight = 0;
+        setSpeedsNow(0, 0);
+    }
+
+    int visibleProximity(int i) {
+        return visibleProximity[i];
+    }
+
+    int visibleLight(int i) {
+        return visibleLight[i];
+    }
+
+    int visibleEncoderLeft() {
+        return visibleEncoderLeft;
+    }
+
+    int visibleEncoderRight() {
+        return visibleEncoderRight;
+    }
+
+    /** Where the controller asked the gripper arm to be (the turret's mechanics come with the caps). */
+    void commandArm(ArmPosition position) {
+        arm = position;
+    }
+
+    void commandFingers(GripperState state) {
+        fingers = state;
+    }
+
+    /** @return the gripper arm's position */
+    public ArmPosition arm() {
+        return arm;
+    }
+
+    /** @return the gripper fingers' state */
+    public GripperState fingers() {
+        return fingers;
+    }
+
+    int askedLeft() {
+        return askedLeft;
+    }
+
+    int askedRight() {
+        return askedRight;
+    }
+
+    // ---------------------------------------------------------------- the engine's side
+
+    /** Apply what falls due at the start of the tick at {@code now}: commands and poll events. */
+    void beginTick(long now) {
+        if (speedPending && lineFreeAt <= now) {
+            sendSpeeds(lineFreeAt);
+        }
+        while (commands.size() > 0 && commands.headTime() <= now) {
+            int type = commands.headType();
+            int a = commands.headA();
+            int b = commands.headB();
+            commands.pop();
+            if (type == CommandQueue.SPEED) {
+                setSpeedsNow(a, b);
+            } else {
+                encoderLeft = a;
+                encoderRight = b;
+            }
+        }
+        if (now % Khepera.MOTOR_PERIOD_NANOS == 0 && (motorNoiseSigmaLeft > 0 || motorNoiseSigmaRight > 0)) {
+            motorNoiseLeft = 1 + motorNoiseSigmaLeft * motorNoiseL.gaussian();
+            motorNoiseRight = 1 + motorNoiseSigmaRight * motorNoiseR.gaussian();
+            wheelsDirty = true;
+        }
+        while (cycleStart + eventOffsets[phase] <= now) {
+            pollEvent(phase);
+            phase++;
+            if (phase == eventOffsets.length) {
+                phase = 0;
+                cycleStart += cycleNanos;
+            }
+        }
+    }
+
+    private void pollEvent(int event) {
+        switch (event) {
+            case 0 -> sampleProximity();
+            case 1 -> System.arraycopy(sampledProximity, 0, visibleProximity, 0, IrSensor.COUNT);
+            case 2 -> sampleLight();
+            case 3 -> System.arraycopy(sampledLight, 0, visibleLight, 0, IrSensor.COUNT);
+            case 4 -> sampleEncoders();
+            case 5 -> {
+                visibleEncoderLeft = sampledEncoderLeft;
+                visibleEncoderRight = sampledEncoderRight;
+            }
+            default -> throw new IllegalStateException("poll event " + event);
+        }
+    }
+
+    private void setSpeedsNow(int left, int right) {
+        speedLeft = left;
+        speedRight = right;
+        wheelsDirty = true;
+    }
+
+    /** Move the robot through one tick: differential drive, collisions, encoders. */
+    void integrate() {
+        if (wheelsDirty) {
+            wheelLeft = speedLeft * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationLeft * motorNoiseLeft;
+            wheelRight = speedRight * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationRight * motorNoiseRight;
+            wheelsDirty = false;
+        }
+        if (speedLeft == 0 && speedRight == 0) {
+            return;
+        }
+        double dl = wheelLeft * TICK_S;
+        double dr = wheelRight * TICK_S;
+        double common = (dl + dr) * 0.5;
+        double diff = (dr - dl) * 0.5;
+        double dTheta = (dr - dl) / Khepera.WHEEL_BASE_MM;
+        if (dTheta != lastDTheta) {
+            lastDTheta = dTheta;
+            halfCos = StrictMath.cos(dTheta * 0.5);
+            halfSin = StrictMath.sin(dTheta * 0.5);
+            fullCos = StrictMath.cos(dTheta);
+            fullSin = StrictMath.sin(dTheta);
+            chordFactor = dTheta == 0 ? 1 : StrictMath.sin(dTheta * 0.5) / (dTheta * 0.5);
+        }
+        // Exact arc: the chord points along the mid-tick heading.
+        double step = common * chordFactor;
+        double midCos = cos * halfCos - sin * halfSin;
+        double midSin = sin * halfCos + cos * halfSin;
+        double nx = x + step * midCos;
+        double ny = y + step * midSin;
+        double newClearance = field.clearance(nx, ny);
+        double fraction = 1;
+        boolean nowBlocked = false;
+        if (newClearance < Khepera.BODY_RADIUS_MM && newClearance < clearance) {
+            // Moving into an obstacle: go only as far as the contact, then stop translating. The
+            // rotation still happens, and the wheels' common motion stalls (so do the encoders).
+            fraction = clearance > Khepera.BODY_RADIUS_MM
+                    ? (clearance - Khepera.BODY_RADIUS_MM) / (clearance - newClearance) : 0;
+            nx = x + fraction * step * midCos;
+            ny = y + fraction * step * midSin;
+            newClearance = field.clearance(nx, ny);
+            nowBlocked = true;
+            if (!blocked) {
+                collisions++;
+            }
+        }
+        blocked = nowBlocked;
+        x = nx;
+        y = ny;
+        clearance = newClearance;
+        double c = cos * fullCos - sin * fullSin;
+        double s = sin * fullCos + cos * fullSin;
+        if (++ticksSinceNormalise >= 256) {
+            double n = 1.0 / StrictMath.sqrt(c * c + s * s);
+            c *= n;
+            s *= n;
+            ticksSinceNormalise = 0;
+        }
+        cos = c;
+        sin = s;
+        double moved = common * fraction;
+        encoderLeft += (moved - diff) / mmPerPulse;
+        encoderRight += (moved + diff) / mmPerPulse;
+        distanceTravelled += StrictMath.abs(step * fraction);
+        contact = clearance <= Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM ? contactSide() : Contact.NONE;
+        markVisited();
+    }
+
+    private Contact contactSide() {
+        double ox = field.nearestObstacleX(x, y) - x;
+        double oy = field.nearestObstacleY(x, y) - y;
+        double rel = StrictMath.atan2(oy, ox) - StrictMath.atan2(sin, cos);
+        return Contact.ofAngle(rel);
+    }
+
+    // ---------------------------------------------------------------- sensors
+
+    private void sampleProximity() {
+        for (int i = 0; i < IrSensor.COUNT; i++) {
+            double px = x + cos * sensorX[i] - sin * sensorY[i];
+            double py = y + sin * sensorX[i] + cos * sensorY[i];
+            double dx = cos * sensorCos[i] - sin * sensorSin[i];
+            double dy = sin * sensorCos[i] + cos * sensorSin[i];
+            double raw = 0;
+            if (field.clearance(px, py) < proxRange) {
+                for (int r = 0; r < rayCos.length; r++) {
+                    double rx = dx * rayCos[r] - dy * raySin[r];
+                    double ry = dy * rayCos[r] + dx * raySin[r];
+                    double d = grid.castRay(px, py, rx, ry, proxRange, hit);
+                    if (d != Double.POSITIVE_INFINITY) {
+                        double v = RAY_WEIGHTS[r] * reflectanceOf(hit.id) * profile.valueAt(d);
+                        if (v > raw) {
+                            raw = v;
+                        }
+                    }
+                }
+            }
+            double value = raw * proxGain[i] + proxOffset[i];
+            if (proxNoiseScale[i] > 0) {
+                Noise n = proxNoise[i];
+                value += n.gaussian() * (proxNoiseAbs + proxNoiseRel * raw) * proxNoiseScale[i];
+                if (n.uniform() < proxSpikeRate) {
+                    value = n.uniform() * 1023;
+                }
+            }
+            sampledProximity[i] = proxDead[i] ? 0 : clampReading(value);
+        }
+    }
+
+    private double reflectanceOf(int cellId) {
+        return cellId >= OccupancyGrid.FIRST_CAP ? reflectance[3] : reflectance[cellId];
+    }
+
+    private void sampleLight() {
+        for (int i = 0; i < IrSensor.COUNT; i++) {
+            double px = x + cos * sensorX[i] - sin * sensorY[i];
+            double py = y + sin * sensorX[i] + cos * sensorY[i];
+            double dx = cos * sensorCos[i] - sin * sensorSin[i];
+            double dy = sin * sensorCos[i] + cos * sensorSin[i];
+            double exposure = 0;
+            for (int k = 0; k < lights.size(); k++) {
+                exposure += exposure(lights.get(k), px, py, dx, dy);
+            }
+            double dark = lightDark[i];
+            Noise n = lightNoise[i];
+            double value;
+            if (exposure <= 0 || lightDead[i]) {
+                value = dark;
+                if (lightFlickerRate > 0 && n.uniform() < lightFlickerRate) {
+                    value *= 1 + lightFlickerDepth * (n.uniform() * 2 - 1);
+                }
+            } else {
+                double e = StrictMath.min(1, exposure * lightGain[i]);
+                value = dark - (dark - lightBright) * e;
+                if (lightNoiseRel > 0) {
+                    value += n.gaussian() * lightNoiseRel * (dark - value);
+                }
+            }
+            sampledLight[i] = clampReading(value);
+        }
+    }
+
+    /** How much of a light reaches a sensor at (px, py) looking along (dx, dy); 0..intensity. */
+    private double exposure(Light light, double px, double py, double dx, double dy) {
+        double lx = light.x() - px;
+        double ly = light.y() - py;
+        double r = StrictMath.sqrt(lx * lx + ly * ly);
+        if (r >= light.range()) {
+            return 0;
+        }
+        double facing = r == 0 ? 1 : (lx * dx + ly * dy) / r;
+        if (facing <= 0) {
+            return 0;
+        }
+        if (light.isDirectional()) {
+            double dir = StrictMath.toRadians(light.directionDeg());
+            double towards = r == 0 ? 1 : -(lx * StrictMath.cos(dir) + ly * StrictMath.sin(dir)) / r;
+            if (towards < StrictMath.cos(StrictMath.toRadians(light.spreadDeg() / 2))) {
+                return 0;
+            }
+        }
+        if (!grid.clearLine(px, py, light.x(), light.y(), OccupancyGrid.LIGHT)) {
+            return 0;
+        }
+        double falloff = 1 - r / light.range();
+        return light.intensity() * facing * falloff * falloff;
+    }
+
+    private void sampleEncoders() {
+        sampledEncoderLeft = (int) (long) StrictMath.floor(encoderLeft);
+        sampledEncoderRight = (int) (long) StrictMath.floor(encoderRight);
+    }
+
+    private static int clampReading(double v) {
+        if (v <= 0) {
+            return 0;
+        }
+        if (v >= 1023) {
+            return 1023;
+        }
+        return (int) StrictMath.floor(v + 0.5);
+    }
+
+    // ---------------------------------------------------------------- statistics
+
+    private static int[] footprintOffsets(double cell) {
+        int reach = (int) StrictMath.ceil(Khepera.BODY_RADIUS_MM / cell);
+        int[] tmp = new int[(2 * reach + 1) * (2 * reach + 1) * 2];
+        int n = 0;
+        for (int dr = -reach; dr <= reach; dr++) {
+            for (int dc = -reach; dc <= reach; dc++) {
+                if (StrictMath.hypot(dc * cell, dr * cell) <= Khepera.BODY_RADIUS_MM) {
+                    tmp[n++] = dc;
+                    tmp[n++] = dr;
+                }
+            }
+        }
+        return java.util.Arrays.copyOf(tmp, n);
+    }
+
+    private void markVisited() {
+        int col = grid.col(x);
+        int row = grid.row(y);
+        int cell = row * grid.cols() + col;
+        if (cell == lastCell) {
+            return;
+        }
+        lastCell = cell;
+        for (int k = 0; k < footprint.length; k += 2) {
+            int c = col + footprint[k];
+            int r = row + footprint[k + 1];
+            if (c >= 0 && r >= 0 && c < grid.cols() && r < grid.rows()) {
+                int idx = r * grid.cols() + c;
+                if (!visited.get(idx)) {
+                    visited.set(idx);
+                    if (grid.id(c, r) == OccupancyGrid.FLOOR) {
+                        visitedFree++;
+                    }
+                }
+            }
+        }
+    }
+
+    // ---------------------------------------------------------------- read-only views
+
+    /** @return the robot's index in the engine */
+    public int id() {
+        return id;
+    }
+
+    /** @return the robot's name */
+    public String name() {
+        return name;
+    }
+
+    /** @return x, mm */
+    public double x() {
+        return x;
+    }
+
+    /** @return y, mm */
+    public double y() {
+        return y;
+    }
+
+    /** @return heading, degrees counter-clockwise from +x, in (−180, 180] */
+    public double headingDeg() {
+        return StrictMath.toDegrees(StrictMath.atan2(sin, cos));
+    }
+
+    /** @return the speeds in effect on the wheels, units */
+    public int speedLeft() {
+        return speedLeft;
+    }
+
+    /** @return the speeds in effect on the wheels, units */
+    public int speedRight() {
+        return speedRight;
+    }
+
+    /** @return the robot's own left position counter, pulses (not delayed by the link) */
+    public int encoderLeft() {
+        return (int) (long) StrictMath.floor(encoderLeft);
+    }
+
+    /** @return the robot's own right position counter, pulses */
+    public int encoderRight() {
+        return (int) (long) StrictMath.floor(encoderRight);
+    }
+
+    /** @return which side touches an obstacle */
+    public Contact contact() {
+        return contact;
+    }
+
+    /** @return true when the last tick's move was stopped by an obstacle */
+    public boolean blocked() {
+        return blocked;
+    }
+
+    /** @return number of times a move was stopped by an obstacle after moving freely */
+    public int collisions() {
+        return collisions;
+    }
+
+    /** @return path length of the robot's centre, mm */
+    public double distanceTravelledMm() {
+        return distanceTravelled;
+    }
+
+    /** @return percentage of the arena's floor cells the robot's body has covered */
+    public double visitedPercent() {
+        return world.freeCells() == 0 ? 0 : 100.0 * visitedFree / world.freeCells();
+    }
+
+    /** @return the link timing this robot's controller lives with */
+    public LinkTiming link() {
+        return link;
+    }
+
+    /** @return the settings this robot was built with */
+    public Settings settings() {
+        return settings;
+    }
+
+    /** @return a copy of the proximity values the controller currently sees */
+    public int[] visibleProximity() {
+        return visibleProximity.clone();
+    }
+
+    /** @return a copy of the light values the controller currently sees */
+    public int[] visibleLight() {
+        return visibleLight.clone();
+    }
+
+    /** Copy the visible values into a snapshot's arrays without allocating. */
+    void copyVisible(int[] prox, int[] light) {
+        System.arraycopy(visibleProximity, 0, prox, 0, IrSensor.COUNT);
+        System.arraycopy(visibleLight, 0, light, 0, IrSensor.COUNT);
+    }
+
+    /** A fixed-capacity FIFO of commands in flight, allocation-free. */
+    private static final class CommandQueue {
+        static final int SPEED = 0;
+        static final int POSITION = 1;
+        private long[] time = new long[16];
+        private int[] type = new int[16];
+        private int[] a = new int[16];
+        private int[] b = new int[16];
+        private int head;
+        private int size;
+
+        void add(long t, int kind, int va, int vb) {
+            if (size == time.length) {
+                grow();
+            }
+            int i = (head + size) % time.length;
+            time[i] = t;
+            type[i] = kind;
+            a[i] = va;
+            b[i] = vb;
+            size++;
+        }
+
+        private void grow() {
+            int n = time.length * 2;
+            long[] t2 = new long[n];
+            int[] ty2 = new int[n];
+            int[] a2 = new int[n];
+            int[] b2 = new int[n];
+            for (int k = 0; k < size; k++) {
+                int i = (head + k) % time.length;
+                t2[k] = time[i];
+                ty2[k] = type[i];
+                a2[k] = a[i];
+                b2[k] = b[i];
+            }
+            time = t2;
+            type = ty2;
+            a = a2;
+            b = b2;
+            head = 0;
+        }
+
+        int size() {
+            return size;
+        }
+
+        long headTime() {
+            return time[head];
+        }
+
+        int headType() {
+            return type[head];
+        }
+
+        int headA() {
+            return a[head];
+        }
+
+        int headB() {
+            return b[head];
+        }
+
+        void pop() {
+            head = (head + 1) % time.length;
+            size--;
+        }
+
+        void clear() {
+            size = 0;
+        }
+    }
+}

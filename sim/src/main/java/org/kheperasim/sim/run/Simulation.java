@@ -1,0 +1,265 @@
+package org.kheperasim.sim.run;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.SecureRandom;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Objects;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.arena.Pose;
+import org.kheperasim.sim.engine.Engine;
+import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.SimRobot;
+import org.kheperasim.sim.engine.SnapshotListener;
+import org.kheperasim.sim.engine.World;
+import org.kheperasim.sim.host.ConsoleSink;
+import org.kheperasim.sim.host.ControllerHost;
+import org.kheperasim.sim.trace.TraceWriter;
+
+/**
+ * One headless run: an arena, a controller on every robot start of the arena, a seed, settings and
+ * a duration; optionally a trace. The command line, the benchmark and the tests all run through
+ * here, so they run the same thing.
+ */
+public final class Simulation {
+    private final Builder b;
+
+    private Simulation(Builder b) {
+        this.b = b;
+    }
+
+    /** @return a builder with the defaults: 600 s, a random seed, default settings, no trace */
+    public static Builder builder() {
+        return new Builder();
+    }
+
+    /** @return a new seed for a run that was given none (printed, so the run can be repeated) */
+    public static long randomSeed() {
+        return new SecureRandom().nextLong() & 0xFFFF_FFFFL;
+    }
+
+    /** Configures and runs a simulation. */
+    public static final class Builder {
+        private Arena arena;
+        private String controllerName;
+        private List<Path> classpath = List.of();
+        private Long seed;
+        private Settings settings = Settings.defaults();
+        private double seconds = 600;
+        private Path tracePath;
+        private Writer traceWriter;
+        private long sampleMillis = 50;
+        private ConsoleSink console = line -> { };
+        private ControllerHost.Options hostOptions = ControllerHost.Options.defaults();
+        private final List<SnapshotListener> listeners = new ArrayList<>();
+        private long listenerPeriodNanos = Engine.TICK_NANOS;
+
+        /** @param arena the arena @return this */
+        public Builder arena(Arena arena) {
+            this.arena = arena;
+            return this;
+        }
+
+        /** @param nameOrPath a bundled arena's name or an arena file @return this */
+        public Builder arena(String nameOrPath) {
+            return arena(ArenaFormat.resolve(nameOrPath));
+        }
+
+        /** @param name a bundled controller or a class on the classpath @return this */
+        public Builder controller(String name) {
+            this.controllerName = name;
+            return this;
+        }
+
+        /** @param classpath folders and jars with compiled controllers @return this */
+        public Builder classpath(List<Path> classpath) {
+            this.classpath = List.copyOf(classpath);
+            return this;
+        }
+
+        /** @param seed the run's seed @return this */
+        public Builder seed(long seed) {
+            this.seed = seed;
+            return this;
+        }
+
+        /** @param settings sensor, motor and link settings @return this */
+        public Builder settings(Settings settings) {
+            this.settings = settings;
+            return this;
+        }
+
+        /** @param seconds simulated seconds to run @return this */
+        public Builder seconds(double seconds) {
+            if (!(seconds > 0) || Double.isInfinite(seconds)) {
+                throw new IllegalArgumentException("--seconds " + seconds + ": give a positive number of simulated seconds");
+            }
+            this.seconds = seconds;
+            return this;
+        }
+
+        /** @param file write the trace there (atomically: a temporary file renamed at the end) @return this */
+        public Builder trace(Path file) {
+            this.tracePath = file;
+            return this;
+        }
+
+        /** @param out write the trace to this writer (closed at the end) @return this */
+        public Builder trace(Writer out) {
+            this.traceWriter = out;
+            return this;
+        }
+
+        /** @param millis trace sample period, whole ms @return this */
+        public Builder sampleMillis(long millis) {
+            if (millis < 1) {
+                throw new IllegalArgumentException("trace sample period " + millis + " ms must be at least 1 ms");
+            }
+            this.sampleMillis = millis;
+            return this;
+        }
+
+        /** @param console where controller messages and errors go @return this */
+        public Builder console(ConsoleSink console) {
+            this.console = Objects.requireNonNull(console);
+            return this;
+        }
+
+        /** @param options hang timeout and test jitter @return this */
+        public Builder hostOptions(ControllerHost.Options options) {
+            this.hostOptions = options;
+            return this;
+        }
+
+        /** @param listener also receives snapshots, every tick @return this */
+        public Builder listener(SnapshotListener listener) {
+            this.listeners.add(listener);
+            return this;
+        }
+
+        /** @return the seed this run will use (drawn now if none was given) */
+        public long seed() {
+            if (seed == null) {
+                seed = randomSeed();
+            }
+            return seed;
+        }
+
+        /**
+         * Run it.
+         *
+         * @return what the run produced
+         */
+        public RunResult run() {
+            Objects.requireNonNull(arena, "no arena given");
+            Objects.requireNonNull(controllerName, "no controller given");
+            return new Simulation(this).execute();
+        }
+    }
+
+    private RunResult execute() {
+        long seed = b.seed();
+        Arena arena = b.arena;
+        World world = new World(arena);
+        Engine engine = new Engine(world, seed);
+        ControllerCatalog catalog = new ControllerCatalog(b.classpath);
+        List<ControllerHost> hosts = new ArrayList<>();
+        List<SimRobot> robots = new ArrayList<>();
+        String controllerClass = null;
+        for (int i = 0; i < arena.robots().size(); i++) {
+            Pose start = arena.robots().get(i);
+            // A class loader per robot: controllers on different robots share no static state.
+            Class<?> type = catalog.load(b.controllerName);
+            controllerClass = type.getName();
+            String name = arena.robots().size() == 1 ? type.getSimpleName() : type.getSimpleName() + "#" + i;
+            SimRobot robot = engine.addRobot(name, start, b.settings);
+            ControllerHost host = new ControllerHost(robot, type, b.console, b.hostOptions);
+            engine.attach(robot, host, r -> host.status().name().toLowerCase(Locale.ROOT));
+            hosts.add(host);
+            robots.add(robot);
+        }
+        RegionTracker regions = new RegionTracker(arena.regions(), robots.size());
+        engine.addListener(regions, 10 * Engine.TICK_NANOS);
+        for (SnapshotListener l : b.listeners) {
+            engine.addListener(l, b.listenerPeriodNanos);
+        }
+
+        TraceWriter trace = null;
+        Path traceTemp = null;
+        try {
+            if (b.tracePath != null || b.traceWriter != null) {
+                Writer w = b.traceWriter;
+                if (w == null) {
+                    Path parent = b.tracePath.toAbsolutePath().getParent();
+                    Files.createDirectories(parent);
+                    traceTemp = Files.createTempFile(parent, b.tracePath.getFileName().toString(), ".part");
+                    w = Files.newBufferedWriter(traceTemp, StandardCharsets.UTF_8);
+                }
+                Map<String, String> header = new LinkedHashMap<>();
+                header.put("seed", Long.toString(seed));
+                header.put("arena", arena.name() + " sha256=" + ArenaFormat.sha256(arena));
+                header.put("controller", controllerClass);
+                header.put("settings", b.settings.describe());
+                header.put("sample-ms", Long.toString(b.sampleMillis));
+                trace = new TraceWriter(w, header);
+                engine.addListener(trace, b.sampleMillis * Engine.TICK_NANOS);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot write the trace " + b.tracePath + ": " + e.getMessage(), e);
+        }
+
+        long endNanos = (long) StrictMath.rint(b.seconds * 1e9);
+        long wallStart = System.nanoTime();
+        String sha = null;
+        try {
+            engine.runUntil(endNanos);
+            if (trace != null && engine.timeNanos() % (b.sampleMillis * Engine.TICK_NANOS) == 0) {
+                trace.onSnapshot(engine.snapshot());
+            }
+        } finally {
+            for (ControllerHost h : hosts) {
+                h.stop();
+            }
+            if (trace != null) {
+                trace.close();
+                sha = trace.sha256();
+                if (traceTemp != null) {
+                    moveIntoPlace(traceTemp, b.tracePath);
+                }
+            }
+        }
+        double wall = (System.nanoTime() - wallStart) / 1e9;
+
+        List<RunResult.RobotResult> results = new ArrayList<>();
+        for (int i = 0; i < robots.size(); i++) {
+            SimRobot r = robots.get(i);
+            ControllerHost h = hosts.get(i);
+            results.add(new RunResult.RobotResult(r.name(), r.x(), r.y(), r.headingDeg(), r.distanceTravelledMm(),
+                    r.collisions(), r.visitedPercent(), h.status(),
+                    h.failure() == null ? null : h.failure().toString(), regions.entered(i)));
+        }
+        return new RunResult(seed, arena.name(), controllerClass, engine.timeNanos() / 1e9, wall, sha, results);
+    }
+
+    private static void moveIntoPlace(Path temp, Path target) {
+        try {
+            try {
+                Files.move(temp, target, java.nio.file.StandardCopyOption.REPLACE_EXISTING,
+                        java.nio.file.StandardCopyOption.ATOMIC_MOVE);
+            } catch (java.nio.file.AtomicMoveNotSupportedException e) {
+                Files.move(temp, target, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot move the trace into place at " + target + ": " + e.getMessage(), e);
+        }
+    }
+}

@@ -1,0 +1,91 @@
+package org.kheperasim.sim.cli;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/** The command line as a user runs it. */
+@Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+class RunCommandTest {
+    private String out;
+    private String err;
+
+    private int main(String... args) {
+        PrintStream oldOut = System.out;
+        PrintStream oldErr = System.err;
+        ByteArrayOutputStream o = new ByteArrayOutputStream();
+        ByteArrayOutputStream e = new ByteArrayOutputStream();
+        try {
+            System.setOut(new PrintStream(o, true, StandardCharsets.UTF_8));
+            System.setErr(new PrintStream(e, true, StandardCharsets.UTF_8));
+            return Main.commandLine().execute(args);
+        } finally {
+            System.setOut(oldOut);
+            System.setErr(oldErr);
+            out = o.toString(StandardCharsets.UTF_8);
+            err = e.toString(StandardCharsets.UTF_8);
+        }
+    }
+
+    @Test
+    void runPrintsTheSeedAndOneLineOfResult() {
+        assertEquals(0, main("run", "--arena", "maze", "--controller", "WallFollower", "--seconds", "30", "--seed", "4"));
+        String[] lines = out.strip().split("\\R");
+        assertEquals("seed 4", lines[0]);
+        assertTrue(lines[lines.length - 1].startsWith("WallFollower in maze: 30.0 s simulated in "), out);
+        assertTrue(lines[lines.length - 1].contains("controller stopped"), out);
+    }
+
+    @Test
+    void jsonHasTheSummaryAndTheTraceHash(@TempDir Path dir) throws Exception {
+        Path trace = dir.resolve("run.trace");
+        assertEquals(0, main("run", "--arena", "lab", "--controller", "Braitenberg", "--seconds", "20", "--seed", "9",
+                "--trace", trace.toString(), "--json"));
+        String json = out.strip();
+        assertTrue(json.startsWith("{") && json.endsWith("}") && json.lines().count() == 1, json);
+        for (String key : new String[] {"\"seed\":9", "\"simulatedSeconds\":20", "\"wallSeconds\":", "\"finalPose\":{\"x\":",
+            "\"distanceMm\":", "\"collisions\":", "\"visitedPercent\":", "\"traceSha256\":\"", "\"controllerStatus\":\"stopped\""}) {
+            assertTrue(json.contains(key), key + " missing from " + json);
+        }
+        String sha = json.replaceAll(".*\"traceSha256\":\"([0-9a-f]{64})\".*", "$1");
+        byte[] digest = java.security.MessageDigest.getInstance("SHA-256").digest(Files.readAllBytes(trace));
+        assertEquals(java.util.HexFormat.of().formatHex(digest), sha, "the hash is the trace file's");
+        assertTrue(err.contains("seed 9"), "with --json the seed goes to standard error: " + err);
+        try (var files = Files.list(dir)) {
+            assertEquals(1, files.count(), "the trace is written atomically: no temporary file is left");
+        }
+    }
+
+    @Test
+    void badInputExitsWithTwoAndSaysWhatToFix(@TempDir Path dir) throws Exception {
+        Path bad = dir.resolve("bad.arena");
+        Files.writeString(bad, "khepera-arena 1\nname bad\nsize 1000 1000\nwal 0 0 10 10 5\n");
+        assertEquals(2, main("run", "--arena", bad.toString(), "--controller", "WallFollower"));
+        assertTrue(err.contains("bad.arena:4: "), err);
+        assertEquals(2, main("run", "--arena", "lab", "--controller", "Nope"));
+        assertTrue(err.contains("no controller named 'Nope'"), err);
+        assertEquals(2, main("run", "--arena", "lab", "--controller", "Braitenberg", "--set", "prox.9.gain=2"));
+        assertTrue(err.contains("unknown setting 'prox.9.gain'"), err);
+    }
+
+    @Test
+    void aFailingControllerExitsWithOne() {
+        assertEquals(1, main("run", "--arena", "lab", "--controller", "org.kheperasim.testcontrollers.Thrower", "--seconds", "5"));
+        assertTrue(err.contains("ArithmeticException"), err);
+    }
+
+    @Test
+    void benchPrintsSimulatedSecondsPerWallSecond() {
+        assertEquals(0, main("bench", "--seconds", "20", "--runs", "1"));
+        assertTrue(out.contains("median: "), out);
+        assertTrue(out.contains("simulated seconds per wall second"), out);
+    }
+}

@@ -1,0 +1,61 @@
+package org.kheperasim.sim.engine;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Locale;
+import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.arena.OccupancyGrid;
+import org.kheperasim.sim.arena.Pose;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+/**
+ * A white wall at 10, 20, 30 and 50 mm in front of the front sensors gives the reference response
+ * (the default Khepera I profile) within the per-reading noise.
+ */
+class ProximityResponseTest {
+
+    @ParameterizedTest(name = "wall at {0} mm")
+    @ValueSource(ints = {10, 20, 30, 50})
+    void frontSensorsFollowTheReferenceTable(int distanceMm) {
+        // Put the wall's face exactly on a cell boundary, and the front sensors (25 mm ahead of the
+        // robot's centre) exactly distanceMm from it.
+        double cell = OccupancyGrid.CELL_MM;
+        int faceCol = 300;
+        double face = faceCol * cell;
+        double robotX = face - 25 - distanceMm;
+        String text = String.format(Locale.ROOT, "khepera-arena 1\nname wall\nsize 1219.2 1219.2\n"
+                + "robot %s 600 0\nwall %s 400 %s 800 8\n", robotX, face + 4, face + 4);
+        World world = new World(ArenaFormat.parse(text, "wall.arena"));
+        Settings settings = Settings.defaults().with("noise.robot", "0").with("prox.spikeRate", "0");
+        Engine engine = new Engine(world, 7);
+        SimRobot robot = engine.addRobot("r", new Pose(robotX, 600, 0), settings);
+
+        double expected = ProximityProfile.KHEPERA_I.valueAt(distanceMm) + settings.number("prox.offset");
+        double sigma = settings.number("prox.noiseAbs") + settings.number("prox.noiseRel") * (expected - settings.number("prox.offset"));
+        int samples = 0;
+        double sum2 = 0;
+        double sum3 = 0;
+        int last = -1;
+        for (int t = 0; t < 20_000; t++) {
+            engine.step();
+            int v2 = robot.visibleProximity(2);
+            int v3 = robot.visibleProximity(3);
+            assertTrue(StrictMath.abs(v2 - expected) <= 5 * sigma + 1,
+                    "sensor 2 read " + v2 + ", expected " + expected + " +/- " + 5 * sigma);
+            assertTrue(StrictMath.abs(v3 - expected) <= 5 * sigma + 1,
+                    "sensor 3 read " + v3 + ", expected " + expected + " +/- " + 5 * sigma);
+            int cycle = (int) (engine.timeNanos() / robot.link().pollCycleNanos());
+            if (cycle != last) {
+                last = cycle;
+                samples++;
+                sum2 += v2;
+                sum3 += v3;
+            }
+        }
+        double tolerance = 4 * sigma / StrictMath.sqrt(samples) + 1;
+        assertEquals(expected, sum2 / samples, tolerance, "mean of sensor 2 over " + samples + " readings");
+        assertEquals(expected, sum3 / samples, tolerance, "mean of sensor 3 over " + samples + " readings");
+    }
+}

@@ -1,0 +1,68 @@
+package org.kheperasim.sim.run;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.stream.Collectors;
+import javax.tools.JavaCompiler;
+import javax.tools.ToolProvider;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import org.kheperasim.api.CurrentRobotState;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.arena.Region;
+
+/**
+ * The paper's Appendix controller, as printed (OCR errors fixed) with one import line added, is
+ * compiled by the real Java compiler and finds a wall in the maze and follows it through every
+ * corridor.
+ */
+class AppendixControllerTest {
+    /** Simulated time within which the left-hand wall follower must have entered every corridor. */
+    static final double TIME_LIMIT_S = 1500;
+
+    @TempDir
+    static Path classes;
+
+    @BeforeAll
+    static void compileTheAppendix() throws IOException {
+        String appendix;
+        try (InputStream in = AppendixControllerTest.class.getResourceAsStream("/appendix/Robot.java.txt")) {
+            appendix = new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+        Path src = classes.resolve("src");
+        Files.createDirectories(src);
+        Path file = src.resolve("Robot.java");
+        Files.writeString(file, "import org.kheperasim.api.*;\n" + appendix);
+        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
+        String apiClasses = Path.of(CurrentRobotState.class.getProtectionDomain().getCodeSource().getLocation().getPath()).toString();
+        int status = javac.run(null, null, null, "-cp", apiClasses, "-d", classes.toString(), file.toString());
+        assertEquals(0, status, "the Appendix controller must compile with one added import");
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @ValueSource(longs = {1, 2, 3})
+    @Timeout(value = 300, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void followsTheLeftWallThroughEveryCorridorOfTheMaze(long seed) {
+        Arena maze = ArenaFormat.loadBundled("maze");
+        RunResult result = Simulation.builder().arena(maze).controller("Robot").classpath(List.of(classes))
+                .seed(seed).seconds(TIME_LIMIT_S).run();
+        Map<String, Double> entered = result.first().regionsEntered();
+        List<String> missed = maze.regions().stream().map(Region::name).filter(n -> !entered.containsKey(n))
+                .collect(Collectors.toList());
+        assertTrue(missed.isEmpty(), "seed " + seed + ": within " + TIME_LIMIT_S + " s the wall follower missed "
+                + missed + "; it entered " + entered + "; " + result.first());
+        assertEquals("Robot", result.controller());
+    }
+}
