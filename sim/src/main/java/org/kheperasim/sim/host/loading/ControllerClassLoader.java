@@ -1,0 +1,388 @@
+package org.kheperasim.sim.host.loading;
+
+import java.io.Closeable;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.net.MalformedURLException;
+import java.net.URI;
+import java.net.URISyntaxException;
+import java.net.URL;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.CodeSigner;
+import java.security.CodeSource;
+import java.security.ProtectionDomain;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.Enumeration;
+import java.util.List;
+import java.util.Objects;
+import java.util.jar.JarEntry;
+import java.util.jar.JarFile;
+import java.util.zip.ZipFile;
+
+/**
+ * Loads controller classes with their time calls rewritten onto the simulation clock (see
+ * {@link TimeCallRewriter}).
+ *
+ * <p>Classes of the Java platform, of the simulator ({@code org.kheperasim.api}, {@code .sim} and
+ * {@code .link}) and of the simulator's libraries always come from the parent, so the controller
+ * and the simulator share the API types and the {@link org.kheperasim.sim.host.SimClock} hooks.
+ * Every other class is looked up child-first: in the classpath entries in order, then as a class
+ * file resource of the parent (that is how the controllers bundled with the simulator get
+ * rewritten too), and defined here after rewriting; a class found nowhere is left to the parent.
+ * Each loader defines its own classes, so a new loader picks up a recompiled controller.
+ *
+ * <p>Resources are looked up in the classpath entries first, then in the parent. Closing the loader
+ * closes its jar files; classes and resources not yet loaded from them can then no longer be found.
+ */
+public final class ControllerClassLoader extends ClassLoader implements Closeable {
+    static {
+        registerAsParallelCapable();
+    }
+
+    /** Names starting with these always come from the parent. */
+    private static final List<String> SHARED_PREFIXES = List.of(
+            "java.", "javax.", "jdk.", "sun.", "com.sun.",
+            "org.kheperasim.api.", "org.kheperasim.sim.", "org.kheperasim.link.",
+            "org.objectweb.asm.", "picocli.", "org.junit.", "org.opentest4j.", "org.apiguardian.");
+
+    private final List<Root> roots;
+    private final ClassHierarchy hierarchy;
+
+    /**
+     * @param classpath directories and jar files of the user's compiled classes, searched in order
+     *     as with {@code java -cp}; may be empty
+     * @param parent the simulator's class loader: it must see the API and the simulator
+     * @throws IllegalArgumentException when a classpath entry is neither a directory nor a file
+     * @throws UncheckedIOException when a jar file cannot be opened
+     */
+    public ControllerClassLoader(List<Path> classpath, ClassLoader parent) {
+        super(Objects.requireNonNull(parent, "parent"));
+        this.roots = open(classpath);
+        this.hierarchy = new ClassHierarchy(this::localClassFile, parent);
+    }
+
+    private static List<Root> open(List<Path> classpath) {
+        List<Root> opened = new ArrayList<>();
+        try {
+            for (Path entry : classpath) {
+                opened.add(Root.open(entry));
+            }
+            return List.copyOf(opened);
+        } catch (RuntimeException e) {
+            for (Root root : opened) {
+                try {
+                    root.close();
+                } catch (IOException suppressed) {
+                    e.addSuppressed(suppressed);
+                }
+            }
+            throw e;
+        }
+    }
+
+    /** @return whether {@code className} always comes from the parent */
+    private static boolean isShared(String className) {
+        for (String prefix : SHARED_PREFIXES) {
+            if (className.startsWith(prefix)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * Load a class: shared names from the parent, every other name child-first (see the class
+     * comment).
+     *
+     * @throws ClassNotFoundException when the class is found nowhere, or its class file cannot be
+     *     read (the message names the file)
+     * @throws ClassFormatError when its class file is malformed or too new (the message names the
+     *     class and the file)
+     * @throws NoClassDefFoundError when its class file holds a class of another name, or its
+     *     superclass is missing (the message names the file)
+     */
+    @Override
+    protected Class<?> loadClass(String name, boolean resolve) throws ClassNotFoundException {
+        if (isShared(name)) {
+            return getParent().loadClass(name);
+        }
+        synchronized (getClassLoadingLock(name)) {
+            Class<?> type = findLoadedClass(name);
+            if (type == null) {
+                type = defineLocal(name);
+            }
+            if (type == null) {
+                type = getParent().loadClass(name);
+            }
+            if (resolve) {
+                resolveClass(type);
+            }
+            return type;
+        }
+    }
+
+    /** Find, rewrite and define a class; null when no class file for it exists. */
+    private Class<?> defineLocal(String name) throws ClassNotFoundException {
+        ClassFile found;
+        try {
+            found = findClassFile(name);
+        } catch (IOException e) {
+            throw new ClassNotFoundException("Cannot read class " + name + ": " + e.getMessage(), e);
+        }
+        if (found == null) {
+            return null;
+        }
+        String failure = "Cannot load class " + name + " from " + found.location() + ": ";
+        try {
+            byte[] rewritten = TimeCallRewriter.rewrite(found.bytes(), hierarchy);
+            return defineClass(name, rewritten, 0, rewritten.length, found.domain());
+        } catch (UnsupportedClassVersionError e) {
+            throw withCause(new UnsupportedClassVersionError(failure + e.getMessage()), e);
+        } catch (ClassFormatError e) {
+            throw withCause(new ClassFormatError(failure + e.getMessage()), e);
+        } catch (NoClassDefFoundError e) { // a file in the wrong directory, or a missing superclass
+            throw withCause(new NoClassDefFoundError(failure + e.getMessage()), e);
+        }
+    }
+
+    /** A class file and where it was found. */
+    private record ClassFile(byte[] bytes, String location, ProtectionDomain domain) {
+    }
+
+    /** The class file this loader would define for {@code className}, or null. */
+    private ClassFile findClassFile(String className) throws IOException {
+        String resource = className.replace('.', '/') + ".class";
+        for (Root root : roots) {
+            byte[] bytes = root.read(resource);
+            if (bytes != null) {
+                return new ClassFile(bytes, root.describe(resource), root.domain);
+            }
+        }
+        URL url = getParent().getResource(resource);
+        if (url == null) {
+            return null;
+        }
+        try (InputStream in = url.openStream()) {
+            return new ClassFile(in.readAllBytes(), url.toString(), null);
+        } catch (IOException e) {
+            throw new IOException("cannot read " + url + ": " + e.getMessage(), e);
+        }
+    }
+
+    /** For {@link ClassHierarchy}: the class file of a class this loader defines itself, or null. */
+    private byte[] localClassFile(String internalName) {
+        String className = internalName.replace('/', '.');
+        if (isShared(className)) {
+            return null;
+        }
+        try {
+            ClassFile found = findClassFile(className);
+            return found == null ? null : found.bytes();
+        } catch (IOException e) {
+            return null; // then the parent is asked; loading the class itself reports the failure
+        }
+    }
+
+    /** Look a resource up in the classpath entries first, then in the parent. */
+    @Override
+    public URL getResource(String name) {
+        URL url = findResource(name);
+        return url != null ? url : getParent().getResource(name);
+    }
+
+    /** All copies of a resource: those in the classpath entries in order, then the parent's. */
+    @Override
+    public Enumeration<URL> getResources(String name) throws IOException {
+        List<URL> urls = Collections.list(findResources(name));
+        urls.addAll(Collections.list(getParent().getResources(name)));
+        return Collections.enumeration(urls);
+    }
+
+    /** @return the resource in the first classpath entry that has it, or null */
+    @Override
+    protected URL findResource(String name) {
+        for (Root root : roots) {
+            URL url = root.url(name);
+            if (url != null) {
+                return url;
+            }
+        }
+        return null;
+    }
+
+    /** @return the resource in every classpath entry that has it, in classpath order */
+    @Override
+    protected Enumeration<URL> findResources(String name) {
+        List<URL> urls = new ArrayList<>();
+        for (Root root : roots) {
+            URL url = root.url(name);
+            if (url != null) {
+                urls.add(url);
+            }
+        }
+        return Collections.enumeration(urls);
+    }
+
+    /** Close the jar files of the classpath. */
+    @Override
+    public void close() throws IOException {
+        IOException failure = null;
+        for (Root root : roots) {
+            try {
+                root.close();
+            } catch (IOException e) {
+                if (failure == null) {
+                    failure = e;
+                } else {
+                    failure.addSuppressed(e);
+                }
+            }
+        }
+        if (failure != null) {
+            throw failure;
+        }
+    }
+
+    private static <T extends Throwable> T withCause(T error, Throwable cause) {
+        error.initCause(cause);
+        return error;
+    }
+
+    private static URL toUrl(URI uri) {
+        try {
+            return uri.toURL();
+        } catch (MalformedURLException e) {
+            throw new IllegalStateException("No URL for " + uri, e);
+        }
+    }
+
+    /** One classpath entry: a directory or a jar file. */
+    private abstract static class Root implements Closeable {
+        final ProtectionDomain domain;
+
+        Root(Path path) {
+            this.domain = new ProtectionDomain(new CodeSource(toUrl(path.toUri()), (CodeSigner[]) null), null);
+        }
+
+        static Root open(Path entry) {
+            Path path = entry.toAbsolutePath().normalize();
+            if (Files.isDirectory(path)) {
+                return new DirectoryRoot(path);
+            }
+            if (Files.isRegularFile(path)) {
+                return new JarRoot(path);
+            }
+            throw new IllegalArgumentException("Classpath entry " + entry + " is neither a directory nor a jar file");
+        }
+
+        /** @return the resource's bytes, or null when this entry has no such resource */
+        abstract byte[] read(String resource) throws IOException;
+
+        /** @return the resource's URL, or null when this entry has no such resource */
+        abstract URL url(String resource);
+
+        /** @return where the resource is, for messages */
+        abstract String describe(String resource);
+    }
+
+    private static final class DirectoryRoot extends Root {
+        private final Path directory;
+
+        DirectoryRoot(Path directory) {
+            super(directory);
+            this.directory = directory;
+        }
+
+        /** The resource's file, or null when it is missing or its name points outside the directory. */
+        private Path file(String resource) {
+            Path file = directory.resolve(resource).normalize();
+            return file.startsWith(directory) && Files.isRegularFile(file) ? file : null;
+        }
+
+        @Override
+        byte[] read(String resource) throws IOException {
+            Path file = file(resource);
+            if (file == null) {
+                return null;
+            }
+            try {
+                return Files.readAllBytes(file);
+            } catch (IOException e) {
+                throw new IOException("cannot read " + file + ": " + e, e);
+            }
+        }
+
+        @Override
+        URL url(String resource) {
+            Path file = file(resource);
+            return file == null ? null : toUrl(file.toUri());
+        }
+
+        @Override
+        String describe(String resource) {
+            return directory.resolve(resource).toString();
+        }
+
+        @Override
+        public void close() {
+        }
+    }
+
+    private static final class JarRoot extends Root {
+        private final Path path;
+        private final JarFile jar;
+
+        JarRoot(Path path) {
+            super(path);
+            this.path = path;
+            try {
+                this.jar = new JarFile(path.toFile(), false, ZipFile.OPEN_READ, JarFile.runtimeVersion());
+            } catch (IOException e) {
+                throw new UncheckedIOException("Cannot open classpath jar " + path + ": " + e.getMessage(), e);
+            }
+        }
+
+        private JarEntry entry(String resource) {
+            JarEntry entry = jar.getJarEntry(resource);
+            return entry == null || entry.isDirectory() ? null : entry;
+        }
+
+        @Override
+        byte[] read(String resource) throws IOException {
+            JarEntry entry = entry(resource);
+            if (entry == null) {
+                return null;
+            }
+            try (InputStream in = jar.getInputStream(entry)) {
+                return in.readAllBytes();
+            } catch (IOException e) {
+                throw new IOException("cannot read " + describe(resource) + ": " + e, e);
+            }
+        }
+
+        @Override
+        URL url(String resource) {
+            if (entry(resource) == null) {
+                return null;
+            }
+            try {
+                return toUrl(new URI("jar", path.toUri() + "!/" + resource, null));
+            } catch (URISyntaxException e) {
+                throw new IllegalStateException("No URL for " + describe(resource), e);
+            }
+        }
+
+        @Override
+        String describe(String resource) {
+            return path + "!/" + resource;
+        }
+
+        @Override
+        public void close() throws IOException {
+            jar.close();
+        }
+    }
+}
