@@ -1,0 +1,73 @@
+package org.kheperasim.sim.arena;
+
+import java.util.HashSet;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+
+/**
+ * A complete arena: its size, where the robots start, and the fixed and movable objects on the
+ * floor. Millimetres throughout; x to the right, y up, origin at the lower-left corner.
+ *
+ * <p>Immutable; the lists are unmodifiable copies. The record checks only what keeps the model
+ * consistent (positive size, at least one robot, unique region names); {@link ArenaFormat#parse}
+ * additionally checks that everything lies inside the arena and that no robot starts inside a
+ * wall or lamp.
+ *
+ * @param name    identifier of letters, digits, {@code _} and {@code -}
+ * @param width   extent along x, mm, greater than 0
+ * @param height  extent along y, mm, greater than 0
+ * @param robots  start poses, one per robot, at least one
+ * @param walls   fixed walls
+ * @param lights  fixed lamps
+ * @param caps    movable bottle caps, in the order that gives them their grid ids
+ * @param regions named rectangles, names unique
+ */
+public record Arena(String name, double width, double height, List<Pose> robots, List<Wall> walls,
+                    List<Light> lights, List<Cap> caps, List<Region> regions) {
+
+    /** Body radius of the robot (a Khepera I is a 55 mm disc), mm. */
+    public static final double ROBOT_RADIUS_MM = 27.5;
+
+    /**
+     * @throws IllegalArgumentException if the name is not an identifier, the size is not positive,
+     *                                  there is no robot, or two regions share a name
+     * @throws NullPointerException     if a list or an element is null
+     */
+    public Arena {
+        if (name == null || !Region.NAME.matcher(name).matches()) {
+            throw new IllegalArgumentException("arena name '" + name
+                    + "' is not allowed; use letters, digits, '_' and '-' only");
+        }
+        width = Numbers.positive("arena width", width, "mm");
+        height = Numbers.positive("arena height", height, "mm");
+        robots = List.copyOf(robots);
+        walls = List.copyOf(walls);
+        lights = List.copyOf(lights);
+        caps = List.copyOf(caps);
+        regions = List.copyOf(regions);
+        if (robots.isEmpty()) {
+            throw new IllegalArgumentException("arena '" + name + "' has no robot; add a start pose");
+        }
+        Set<String> names = new HashSet<>();
+        for (Region r : regions) {
+            if (!names.add(r.name())) {
+                throw new IllegalArgumentException("region name '" + r.name()
+                        + "' is used twice; give each region its own name");
+            }
+        }
+    }
+
+    /**
+     * @param regionName a region's name
+     * @return the region of that name, or empty if there is none
+     */
+    public Optional<Region> region(String regionName) {
+        for (Region r : regions) {
+            if (r.name().equals(regionName)) {
+                return Optional.of(r);
+            }
+        }
+        return Optional.empty();
+    }
+}
