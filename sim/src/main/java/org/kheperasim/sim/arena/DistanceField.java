@@ -115,6 +115,39 @@ public final class DistanceField {
     }
 
     /**
+     * Like {@link #clearance}, but takes the nearest obstacle of the point's cell and of its eight
+     * neighbours, which brings the estimate to within a small fraction of a cell of the true
+     * clearance. About nine times the work: use it where precision matters (contact).
+     *
+     * @param x point, mm
+     * @param y point, mm
+     * @return clearance, mm; 0 inside an obstacle cell or outside the grid
+     */
+    public double preciseClearance(double x, double y) {
+        int c = grid.col(x);
+        int r = grid.row(y);
+        if (c < 0 || r < 0 || c >= grid.cols() || r >= grid.rows()) {
+            return 0;
+        }
+        double best = Double.POSITIVE_INFINITY;
+        for (int dr = 0; dr <= 2; dr++) {
+            int base = (r + dr) * pw + c;
+            for (int dc = 0; dc <= 2; dc++) {
+                int n = nearest[base + dc];
+                double left = (n % pw - 1) * OccupancyGrid.CELL_MM;
+                double bottom = (n / pw - 1) * OccupancyGrid.CELL_MM;
+                double dx = Math.max(0, Math.max(left - x, x - (left + OccupancyGrid.CELL_MM)));
+                double dy = Math.max(0, Math.max(bottom - y, y - (bottom + OccupancyGrid.CELL_MM)));
+                double d = dx * dx + dy * dy;
+                if (d < best) {
+                    best = d;
+                }
+            }
+        }
+        return Math.sqrt(best);
+    }
+
+    /**
      * @param x point, mm
      * @param y point, mm
      * @return x of the centre of the obstacle cell nearest to the point's cell, mm (the point's own

@@ -15,7 +15,7 @@ import org.kheperasim.sim.arena.Pose;
  *
  * <p>One tick at time t: commands and poll-cycle events due by t take effect; every driver whose
  * wake time falls before t + tick runs up to t + tick, seeing the world as of t; listeners due at t
- * receive a snapshot; then every robot moves through the tick.
+ * receive a snapshot; then every robot moves through the tick. See {@link #advance()}.
  */
 public final class Engine {
     /** The tick: 1 ms of simulated time. */
@@ -29,6 +29,10 @@ public final class Engine {
     private final List<Function<SimRobot, String>> driverStatus = new ArrayList<>();
     private final List<Subscription> listeners = new ArrayList<>();
     private long tick;
+    private long endNanos = Long.MAX_VALUE;
+    private boolean inTick;
+    private int driverCursor;
+    private boolean hasDrivers;
 
     private record Subscription(SnapshotListener listener, long periodTicks) {
     }
@@ -67,6 +71,7 @@ public final class Engine {
      */
     public void attach(SimRobot robot, RobotDriver driver, Function<SimRobot, String> status) {
         drivers.set(robot.id(), driver);
+        hasDrivers = true;
         driverStatus.set(robot.id(), status);
     }
 
@@ -84,6 +89,11 @@ public final class Engine {
     /** @param listener a listener to stop calling */
     public void removeListener(SnapshotListener listener) {
         listeners.removeIf(s -> s.listener == listener);
+    }
+
+    /** @return ticks completed so far (a cheap progress counter for watchdogs) */
+    public long ticks() {
+        return tick;
     }
 
     /** @return simulated time now, ns */
@@ -116,45 +126,77 @@ public final class Engine {
         return false;
     }
 
-    /** Advance the world by one tick. */
-    public void step() {
-        long t = tick * TICK_NANOS;
-        long end = t + TICK_NANOS;
-        int n = robots.size();
-        for (int i = 0; i < n; i++) {
-            robots.get(i).beginTick(t);
-        }
-        for (int i = 0; i < n; i++) {
-            RobotDriver d = drivers.get(i);
-            if (d != null && d.wakeNanos() < end) {
-                d.runSlice(t, end);
-            }
-        }
-        publish();
-        for (int i = 0; i < n; i++) {
-            robots.get(i).integrate();
-        }
-        tick++;
+    /**
+     * Set where {@link #advance()} stops: the run's end.
+     *
+     * @param endNanos simulated time, ns
+     */
+    public void setEnd(long endNanos) {
+        this.endNanos = endNanos;
     }
 
     /**
-     * Run until simulated time reaches {@code endNanos} or every driver has ended.
+     * Advance the world until a driver must run, or until the end set by {@link #setEnd} is
+     * reached or every driver has ended. Whoever holds the turn calls this, the engine's owner or a
+     * controller thread that has just used up its slice: the world does not care which thread
+     * steps it, only that one thread at a time does.
      *
-     * @param endNanos simulated time to stop at, ns
+     * <p>The order within a tick at time t never changes: commands and poll events due by t; each
+     * driver in robot order whose wake time falls before t + tick runs to t + tick (this method
+     * returns it, after {@link RobotDriver#grant granting} it that slice; the next call carries on
+     * with the next driver); listeners due at t; every robot moves through the tick.
+     *
+     * @return the driver that must run now, or null when the run is over
      */
-    public void runUntil(long endNanos) {
-        while (timeNanos() < endNanos && (anyDriverRunning() || !hasDrivers())) {
-            step();
+    public RobotDriver advance() {
+        while (true) {
+            if (!inTick) {
+                if (tick * TICK_NANOS >= endNanos || (hasDrivers && !anyDriverRunning())) {
+                    return null;
+                }
+                long t = tick * TICK_NANOS;
+                for (int i = 0; i < robots.size(); i++) {
+                    robots.get(i).beginTick(t);
+                }
+                inTick = true;
+                driverCursor = 0;
+            }
+            long end = (tick + 1) * TICK_NANOS;
+            while (driverCursor < drivers.size()) {
+                RobotDriver d = drivers.get(driverCursor++);
+                if (d != null && d.wakeNanos() < end) {
+                    d.grant(end);
+                    return d;
+                }
+            }
+            publish();
+            for (int i = 0; i < robots.size(); i++) {
+                robots.get(i).integrate(end);
+            }
+            tick++;
+            inTick = false;
         }
     }
 
-    private boolean hasDrivers() {
-        for (RobotDriver d : drivers) {
-            if (d != null) {
-                return true;
-            }
+    /**
+     * Advance the world by one tick. Only for an engine without drivers (tests, tools); a run with
+     * controllers goes through the controller host, which runs them in lockstep.
+     */
+    public void step() {
+        runUntil(timeNanos() + TICK_NANOS);
+    }
+
+    /**
+     * Run an engine without drivers until {@code endNanos}.
+     *
+     * @param endNanos simulated time to stop at, ns
+     * @throws IllegalStateException if a driver needs to run: use the controller host
+     */
+    public void runUntil(long endNanos) {
+        setEnd(endNanos);
+        if (advance() != null) {
+            throw new IllegalStateException("this engine has controllers: run it through the controller host");
         }
-        return false;
     }
 
     private void publish() {

@@ -1,19 +1,19 @@
 package org.kheperasim.sim.engine;
 
 /**
- * What drives a robot: its controller, running in lockstep with the engine. The engine asks each
- * tick whether the driver needs to run, and if so lets it run for that tick's stretch of simulated
- * time; the driver returns only when it needs time beyond the stretch (or has ended).
+ * What drives a robot: its controller, running in lockstep with the engine. Each tick the engine
+ * asks every driver whether it needs to run; if so it grants the driver the rest of the tick as its
+ * slice and hands it the turn (see {@link Engine#advance()}).
  */
 public interface RobotDriver {
     /** @return the simulated time the driver next needs to run at, ns; {@link Long#MAX_VALUE} once it has ended */
     long wakeNanos();
 
     /**
-     * Run the controller from its wake time up to (not including) {@code endNanos}.
+     * The driver may run up to (not including) this simulated time before it must give the turn
+     * back.
      *
-     * @param startNanos the tick's start, ns
-     * @param endNanos the tick's end, ns
+     * @param limitNanos the end of the current tick, ns
      */
-    void runSlice(long startNanos, long endNanos);
+    void grant(long limitNanos);
 }

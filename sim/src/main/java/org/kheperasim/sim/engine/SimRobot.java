@@ -13,6 +13,7 @@ import org.kheperasim.sim.arena.Light;
 import org.kheperasim.sim.arena.OccupancyGrid;
 import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.arena.RayHit;
+import org.kheperasim.sim.arena.Region;
 
 /**
  * One simulated Khepera: its pose, wheels, encoders and sensors, and the link between it and its
@@ -29,6 +30,8 @@ public final class SimRobot {
     private static final double[] RAY_WEIGHTS = {1.0, 0.85, 0.85, 0.5, 0.5};
     /** Closer than this to an obstacle (beyond the body radius) counts as touching. */
     private static final double CONTACT_EPSILON_MM = 0.5;
+    /** The fast clearance estimate can exceed the true one by up to 2.2 cells; below this margin, refine. */
+    private static final double NEAR_MM = 3 * 2.4384;
     private static final double TICK_S = Engine.TICK_NANOS / 1e9;
     /** A command's acknowledgement, e.g. {@code d} CR LF. */
     private static final int REPLY_CHARS = 3;
@@ -57,6 +60,7 @@ public final class SimRobot {
     private double wheelLeft;   // actual wheel speeds, mm/s
     private double wheelRight;
     private boolean wheelsDirty = true;
+    private long nextMotorNoise;
     private double motorNoiseLeft = 1;
     private double motorNoiseRight = 1;
     private double lastDTheta = Double.NaN;
@@ -107,6 +111,12 @@ public final class SimRobot {
     private int visitedFree;
     private int lastCell = -1;
     private final int[] footprint;
+    /** For each step (dr, dc) to a neighbouring cell: the footprint's cells not in the footprint before the step. */
+    private final int[][] footprintEdges = new int[9][];
+    private int lastCellCol = Integer.MIN_VALUE;
+    private int lastCellRow = Integer.MIN_VALUE;
+    private final List<Region> regions;
+    private final long[] regionEntered;
 
     // Sensor model, with the per-robot miscalibration drawn once.
     private final ProximityProfile profile;
@@ -236,15 +246,23 @@ public final class SimRobot {
         cycleNanos = t;
 
         visited = new BitSet(grid.cols() * grid.rows());
+        regions = world.arena().regions();
+        regionEntered = new long[regions.size()];
+        java.util.Arrays.fill(regionEntered, -1);
         footprint = footprintOffsets(grid.cellSize());
+        for (int dr = -1; dr <= 1; dr++) {
+            for (int dc = -1; dc <= 1; dc++) {
+                footprintEdges[(dr + 1) * 3 + (dc + 1)] = leadingEdge(footprint, dc, dr);
+            }
+        }
 
         x = start.x();
         y = start.y();
         double h = StrictMath.toRadians(start.headingDeg());
         cos = StrictMath.cos(h);
         sin = StrictMath.sin(h);
-        clearance = field.clearance(x, y);
-        markVisited();
+        clearance = clearanceAt(x, y);
+        markVisited(0);
 
         // robot-link primes every value before it starts the controller; so does the simulator.
         sampleProximity();
@@ -264,7 +282,7 @@ public final class SimRobot {
      * A controller asks for wheel speeds at simulated time {@code now}; the robot acts on them
      * after the command's wire time.
      */
-    void commandSpeeds(long now, int left, int right) {
+    public void commandSpeeds(long now, int left, int right) {
         askedLeft = left;
         askedRight = right;
         speedPending = left != sentLeft || right != sentRight;
@@ -283,7 +301,7 @@ public final class SimRobot {
     }
 
     /** A controller sets the position counters ({@code G}); it waits its turn on the line. */
-    void commandPositions(long now, int left, int right) {
+    public void commandPositions(long now, int left, int right) {
         long start = StrictMath.max(now, lineFreeAt);
         long delay = link.setPositionDelayNanos(left, right);
         commands.add(start + delay, CommandQueue.POSITION, left, right);
@@ -291,7 +309,7 @@ public final class SimRobot {
     }
 
     /** Stop the wheels at once: the controller has ended, failed or been stopped (robot-link sends D,0,0). */
-    void emergencyStop() {
+    public void emergencyStop() {
         askedLeft = 0;
         askedRight = 0;
         commands.clear();
@@ -301,28 +319,33 @@ public final class SimRobot {
         setSpeedsNow(0, 0);
     }
 
-    int visibleProximity(int i) {
+    /** @param i sensor index @return the proximity value the controller sees now */
+    public int visibleProximity(int i) {
         return visibleProximity[i];
     }
 
-    int visibleLight(int i) {
+    /** @param i sensor index @return the light value the controller sees now */
+    public int visibleLight(int i) {
         return visibleLight[i];
     }
 
-    int visibleEncoderLeft() {
+    /** @return the left position counter the controller sees now, pulses */
+    public int visibleEncoderLeft() {
         return visibleEncoderLeft;
     }
 
-    int visibleEncoderRight() {
+    /** @return the right position counter the controller sees now, pulses */
+    public int visibleEncoderRight() {
         return visibleEncoderRight;
     }
 
     /** Where the controller asked the gripper arm to be (the turret's mechanics come with the caps). */
-    void commandArm(ArmPosition position) {
+    public void commandArm(ArmPosition position) {
         arm = position;
     }
 
-    void commandFingers(GripperState state) {
+    /** @param state fingers open or closed */
+    public void commandFingers(GripperState state) {
         fingers = state;
     }
 
@@ -336,11 +359,13 @@ public final class SimRobot {
         return fingers;
     }
 
-    int askedLeft() {
+    /** @return the left speed the controller last asked for, units */
+    public int askedLeft() {
         return askedLeft;
     }
 
-    int askedRight() {
+    /** @return the right speed the controller last asked for, units */
+    public int askedRight() {
         return askedRight;
     }
 
@@ -363,10 +388,13 @@ public final class SimRobot {
                 encoderRight = b;
             }
         }
-        if (now % Khepera.MOTOR_PERIOD_NANOS == 0 && (motorNoiseSigmaLeft > 0 || motorNoiseSigmaRight > 0)) {
-            motorNoiseLeft = 1 + motorNoiseSigmaLeft * motorNoiseL.gaussian();
-            motorNoiseRight = 1 + motorNoiseSigmaRight * motorNoiseR.gaussian();
-            wheelsDirty = true;
+        if (now >= nextMotorNoise) {
+            nextMotorNoise = now + Khepera.MOTOR_PERIOD_NANOS;
+            if (motorNoiseSigmaLeft > 0 || motorNoiseSigmaRight > 0) {
+                motorNoiseLeft = 1 + motorNoiseSigmaLeft * motorNoiseL.gaussian();
+                motorNoiseRight = 1 + motorNoiseSigmaRight * motorNoiseR.gaussian();
+                wheelsDirty = true;
+            }
         }
         while (cycleStart + eventOffsets[phase] <= now) {
             pollEvent(phase);
@@ -399,8 +427,12 @@ public final class SimRobot {
         wheelsDirty = true;
     }
 
-    /** Move the robot through one tick: differential drive, collisions, encoders. */
-    void integrate() {
+    /**
+     * Move the robot through one tick: differential drive, collisions, encoders.
+     *
+     * @param endNanos simulated time at the end of the tick
+     */
+    void integrate(long endNanos) {
         if (wheelsDirty) {
             wheelLeft = speedLeft * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationLeft * motorNoiseLeft;
             wheelRight = speedRight * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationRight * motorNoiseRight;
@@ -416,11 +448,11 @@ public final class SimRobot {
         double dTheta = (dr - dl) / Khepera.WHEEL_BASE_MM;
         if (dTheta != lastDTheta) {
             lastDTheta = dTheta;
-            halfCos = StrictMath.cos(dTheta * 0.5);
-            halfSin = StrictMath.sin(dTheta * 0.5);
-            fullCos = StrictMath.cos(dTheta);
-            fullSin = StrictMath.sin(dTheta);
-            chordFactor = dTheta == 0 ? 1 : StrictMath.sin(dTheta * 0.5) / (dTheta * 0.5);
+            halfCos = cosSmall(dTheta * 0.5);
+            halfSin = sinSmall(dTheta * 0.5);
+            fullCos = cosSmall(dTheta);
+            fullSin = sinSmall(dTheta);
+            chordFactor = dTheta == 0 ? 1 : halfSin / (dTheta * 0.5);
         }
         // Exact arc: the chord points along the mid-tick heading.
         double step = common * chordFactor;
@@ -428,7 +460,7 @@ public final class SimRobot {
         double midSin = sin * halfCos + cos * halfSin;
         double nx = x + step * midCos;
         double ny = y + step * midSin;
-        double newClearance = field.clearance(nx, ny);
+        double newClearance = clearanceAt(nx, ny);
         double fraction = 1;
         boolean nowBlocked = false;
         if (newClearance < Khepera.BODY_RADIUS_MM && newClearance < clearance) {
@@ -438,7 +470,7 @@ public final class SimRobot {
                     ? (clearance - Khepera.BODY_RADIUS_MM) / (clearance - newClearance) : 0;
             nx = x + fraction * step * midCos;
             ny = y + fraction * step * midSin;
-            newClearance = field.clearance(nx, ny);
+            newClearance = clearanceAt(nx, ny);
             nowBlocked = true;
             if (!blocked) {
                 collisions++;
@@ -463,7 +495,34 @@ public final class SimRobot {
         encoderRight += (moved + diff) / mmPerPulse;
         distanceTravelled += StrictMath.abs(step * fraction);
         contact = clearance <= Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM ? contactSide() : Contact.NONE;
-        markVisited();
+        markVisited(endNanos);
+    }
+
+    /** Clearance of the body's centre: the fast estimate, refined where contact is possible. */
+    private double clearanceAt(double px, double py) {
+        double c = field.clearance(px, py);
+        return c < Khepera.BODY_RADIUS_MM + NEAR_MM ? field.preciseClearance(px, py) : c;
+    }
+
+    /**
+     * sin of a per-tick turn (|a| ≤ 0.04 rad at full speed): its Taylor series to the a⁹ term is
+     * exact to double precision there, plain arithmetic, and several times cheaper than StrictMath.
+     */
+    private static double sinSmall(double a) {
+        if (StrictMath.abs(a) > 0.1) {
+            return StrictMath.sin(a);
+        }
+        double a2 = a * a;
+        return a * (1 - a2 / 6 * (1 - a2 / 20 * (1 - a2 / 42 * (1 - a2 / 72))));
+    }
+
+    /** cos of a per-tick turn; see {@link #sinSmall}. */
+    private static double cosSmall(double a) {
+        if (StrictMath.abs(a) > 0.1) {
+            return StrictMath.cos(a);
+        }
+        double a2 = a * a;
+        return 1 - a2 / 2 * (1 - a2 / 12 * (1 - a2 / 30 * (1 - a2 / 56 * (1 - a2 / 90))));
     }
 
     private Contact contactSide() {
@@ -482,11 +541,15 @@ public final class SimRobot {
             double dx = cos * sensorCos[i] - sin * sensorSin[i];
             double dy = sin * sensorCos[i] + cos * sensorSin[i];
             double raw = 0;
-            if (field.clearance(px, py) < proxRange) {
+            double free = field.clearance(px, py);
+            if (free < proxRange) {
+                // Nothing lies nearer than the clearance (less the estimate's error): start the
+                // beams there instead of walking the empty cells.
+                double skip = StrictMath.max(0, free - NEAR_MM);
                 for (int r = 0; r < rayCos.length; r++) {
                     double rx = dx * rayCos[r] - dy * raySin[r];
                     double ry = dy * rayCos[r] + dx * raySin[r];
-                    double d = grid.castRay(px, py, rx, ry, proxRange, hit);
+                    double d = skip + grid.castRay(px + skip * rx, py + skip * ry, rx, ry, proxRange - skip, hit);
                     if (d != Double.POSITIVE_INFINITY) {
                         double v = RAY_WEIGHTS[r] * reflectanceOf(hit.id) * profile.valueAt(d);
                         if (v > raw) {
@@ -598,7 +661,24 @@ public final class SimRobot {
         return java.util.Arrays.copyOf(tmp, n);
     }
 
-    private void markVisited() {
+    /** Offsets of {@code disc} that are not offsets of the disc shifted back by (dc, dr). */
+    private static int[] leadingEdge(int[] disc, int dc, int dr) {
+        java.util.Set<Long> before = new java.util.HashSet<>();
+        for (int k = 0; k < disc.length; k += 2) {
+            before.add(((long) (disc[k] - dc) << 32) ^ ((disc[k + 1] - dr) & 0xFFFFFFFFL));
+        }
+        int[] out = new int[disc.length];
+        int n = 0;
+        for (int k = 0; k < disc.length; k += 2) {
+            if (!before.contains(((long) disc[k] << 32) ^ (disc[k + 1] & 0xFFFFFFFFL))) {
+                out[n++] = disc[k];
+                out[n++] = disc[k + 1];
+            }
+        }
+        return java.util.Arrays.copyOf(out, n);
+    }
+
+    private void markVisited(long timeNanos) {
         int col = grid.col(x);
         int row = grid.row(y);
         int cell = row * grid.cols() + col;
@@ -606,9 +686,23 @@ public final class SimRobot {
             return;
         }
         lastCell = cell;
-        for (int k = 0; k < footprint.length; k += 2) {
-            int c = col + footprint[k];
-            int r = row + footprint[k + 1];
+        for (int k = 0; k < regions.size(); k++) {
+            if (regionEntered[k] < 0 && regions.get(k).contains(x, y)) {
+                regionEntered[k] = timeNanos;
+            }
+        }
+        int lastCol = lastCellCol;
+        int lastRow = lastCellRow;
+        lastCellCol = col;
+        lastCellRow = row;
+        int dc = col - lastCol;
+        int dr = row - lastRow;
+        // A step to a neighbouring cell only uncovers the disc's leading edge in that direction.
+        int[] offsets = lastCol != Integer.MIN_VALUE && StrictMath.abs(dc) <= 1 && StrictMath.abs(dr) <= 1
+                ? footprintEdges[(dr + 1) * 3 + (dc + 1)] : footprint;
+        for (int k = 0; k < offsets.length; k += 2) {
+            int c = col + offsets[k];
+            int r = row + offsets[k + 1];
             if (c >= 0 && r >= 0 && c < grid.cols() && r < grid.rows()) {
                 int idx = r * grid.cols() + c;
                 if (!visited.get(idx)) {
@@ -691,6 +785,20 @@ public final class SimRobot {
     /** @return percentage of the arena's floor cells the robot's body has covered */
     public double visitedPercent() {
         return world.freeCells() == 0 ? 0 : 100.0 * visitedFree / world.freeCells();
+    }
+
+    /**
+     * @return the named regions of the arena the robot's centre has entered, with the simulated
+     *     time of the first entry in seconds, in arena order
+     */
+    public java.util.Map<String, Double> regionsEntered() {
+        java.util.Map<String, Double> out = new java.util.LinkedHashMap<>();
+        for (int k = 0; k < regions.size(); k++) {
+            if (regionEntered[k] >= 0) {
+                out.put(regions.get(k).name(), regionEntered[k] / 1e9);
+            }
+        }
+        return out;
     }
 
     /** @return the link timing this robot's controller lives with */

@@ -17,7 +17,7 @@ public final class World {
     /** @param arena the arena to build the world from */
     public World(Arena arena) {
         this.arena = arena;
-        this.grid = new OccupancyGrid(arena);
+        this.grid = OccupancyGrid.of(arena);
         this.field = DistanceField.of(grid);
         int free = 0;
         for (int r = 0; r < grid.rows(); r++) {

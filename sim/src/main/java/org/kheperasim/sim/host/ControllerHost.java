@@ -23,11 +23,14 @@ import org.kheperasim.sim.engine.SimRobot;
  * The controller has its own simulated clock. Each API call costs {@code api.callCostUs} of
  * simulated time (that is how a busy loop makes time pass), {@code Thread.sleep(ms)} costs exactly
  * {@code ms}, and computing between calls costs nothing. The engine lets the controller run through
- * one tick's stretch of simulated time at a time; a call that would reach past the stretch hands
- * control back to the engine and continues when the engine has caught up. Only one of the two runs
- * at any moment, so a run does not depend on thread scheduling, machine speed or load.
+ * one tick's stretch of simulated time at a time; a call that would reach past the stretch steps the
+ * world forward itself, on the controller's own thread, until a controller must run again (see
+ * {@link Lockstep}). Exactly one thread holds the turn at any moment, so a run does not depend on
+ * thread scheduling, machine speed or load.
  *
- * <p>The hand-off spins briefly (about 0.1 µs a round trip) while there are spare cores, then parks.
+ * <p>With one robot the controller's thread never waits for another thread: it runs its code, then
+ * the world, then its code again. Between several robots the turn is passed with a short spin, then
+ * a park.
  * A controller that runs for {@code hangTimeout} of real time without an API call is reported by
  * name with the simulated time, and stopped; the engine never hangs on it.
  */
@@ -53,9 +56,6 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
 
     /** Robot time starts at the Appendix controller's creation date, so currentTimeMillis looks plausible. */
     private static final long EPOCH_MILLIS = Instant.parse("2001-07-27T11:06:00Z").toEpochMilli();
-    private static final int ENGINE = 0;
-    private static final int CONTROLLER = 1;
-    private static final int SPIN_LIMIT = Runtime.getRuntime().availableProcessors() > 1 ? 20_000 : 0;
     private static final long STOP_GRACE_MILLIS = 2_000;
 
     private final SimRobot robot;
@@ -67,18 +67,17 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     private final CurrentRobotState state;
     private final MessagePasser messages;
 
-    private Thread controller;
-    private Thread engineThread;
-    private volatile int turn = ENGINE;
-    private volatile boolean engineWaiting;
+    private final Thread controller;
+    private Lockstep lockstep;
     private volatile boolean controllerWaiting;
+    private long apiCalls;
     private volatile ControllerStatus status = ControllerStatus.NOT_STARTED;
     private volatile boolean stopRequested;
     private volatile boolean detached;
     private boolean stopAnnounced;
     private volatile Throwable failure;
 
-    // The controller's clock; handed between the threads by the volatile `turn`.
+    // The controller's clock; only the thread holding the turn touches it (the turn is volatile).
     private long now;
     private long limit;
     private long wake;
@@ -103,11 +102,13 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
         // The clock is inheritable: binding it while the controller's Thread object is constructed
         // gives it to the controller thread, and only to it.
         SimClock.bind(this);
+        Thread created;
         try {
-            controller = Controllers.instantiate(type, state, messages);
+            created = Controllers.instantiate(type, state, messages);
         } finally {
             SimClock.unbind();
         }
+        controller = created;
         controller.setDaemon(true);
         controller.setUncaughtExceptionHandler((t, e) -> ended(e));
     }
@@ -137,7 +138,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
         return now;
     }
 
-    // ------------------------------------------------------------------ the engine's side
+    // ------------------------------------------------------------------ the turn
 
     @Override
     public long wakeNanos() {
@@ -145,63 +146,80 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     }
 
     @Override
-    public void runSlice(long startNanos, long endNanos) {
-        if (status.ended()) {
-            return;
-        }
-        limit = endNanos;
-        jitter();
-        if (status == ControllerStatus.NOT_STARTED) {
-            engineThread = Thread.currentThread();
-            status = ControllerStatus.RUNNING;
-            turn = CONTROLLER;
-            controller.start();
-        } else {
-            turn = CONTROLLER;
-            if (controllerWaiting) {
-                LockSupport.unpark(controller);
-            }
-        }
-        awaitEngineTurn();
+    public void grant(long limitNanos) {
+        limit = limitNanos;
     }
 
-    private void awaitEngineTurn() {
+    /** Join a run: the lockstep that passes this host the turn. */
+    void join(Lockstep lockstep) {
+        this.lockstep = lockstep;
+    }
+
+    /** @return the controller's thread */
+    Thread thread() {
+        return controller;
+    }
+
+    /** @return API calls made so far; read without synchronisation by the watchdog */
+    long apiCalls() {
+        return apiCalls;
+    }
+
+    /** Give this host the turn, from whichever thread holds it: start the controller, or wake it. */
+    void receiveTurn() {
+        if (status == ControllerStatus.NOT_STARTED) {
+            status = ControllerStatus.RUNNING;
+            controller.start();
+        } else if (controllerWaiting) {
+            LockSupport.unpark(controller);
+        }
+    }
+
+    /** The controller's slice is used up: step the world on this thread until someone must run. */
+    private void yieldTurn() {
+        wake = now;
+        jitter();
+        RobotDriver next;
+        try {
+            next = lockstep.engine().advance();
+        } catch (RuntimeException | Error e) {
+            lockstep.engineFailed(e);
+            next = null;
+        }
+        if (next == this) {
+            return;
+        }
+        lockstep.passTo(next);
+        awaitTurn();
+        if (stopRequested) {
+            throw new ControllerStoppedError("controller " + name + " was stopped");
+        }
+    }
+
+    private void awaitTurn() {
+        long spinStart = 0;
         int spins = 0;
-        long wallStart = 0;
-        while (turn != ENGINE) {
-            if (spins < SPIN_LIMIT) {
-                spins++;
-                Thread.onSpinWait();
+        while (!lockstep.holds(controller)) {
+            if (spins == 0) {
+                spinStart = System.nanoTime();
+            }
+            if (Lockstep.spinning(++spins, spinStart)) {
                 continue;
             }
-            if (wallStart == 0) {
-                wallStart = System.nanoTime();
+            controllerWaiting = true;
+            if (!lockstep.holds(controller)) {
+                LockSupport.park(this);
             }
-            engineWaiting = true;
-            if (turn != ENGINE) {
-                LockSupport.parkNanos(this, 1_000_000L);
-            }
-            engineWaiting = false;
-            if (turn == ENGINE) {
-                break;
-            }
-            if (!controller.isAlive()) {
-                // run() returned normally (an exception would have handed the turn back).
-                finish(ControllerStatus.FINISHED);
-                break;
-            }
-            if (System.nanoTime() - wallStart > options.hangTimeoutNanos()) {
-                hung(wallStart);
-                break;
-            }
+            controllerWaiting = false;
         }
     }
 
     /**
-     * Stop the controller: call its {@code killControl()}, then unwind its thread. Returns when the
-     * thread has ended, or after a grace period (the controller is then detached and reported).
+     * Stop the controller: call its {@code killControl()}, then unwind its thread (the owner gives
+     * it the turn so that it sees the stop). Returns when the thread has ended, or after a grace
+     * period (the controller is then detached and reported). Called by the run's owner.
      */
-    public void stop() {
+    void stop() {
         if (status == ControllerStatus.NOT_STARTED) {
             status = ControllerStatus.STOPPED;
             return;
@@ -211,26 +229,24 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
         }
         announceStop();
         Controllers.requestStop(controller);
-        turn = CONTROLLER;
-        LockSupport.unpark(controller);
-        try {
-            controller.join(STOP_GRACE_MILLIS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        if (controller.isAlive()) {
+        lockstep.passTo(this);
+        lockstep.awaitOwner(STOP_GRACE_MILLIS * 1_000_000L);
+        if (status == ControllerStatus.RUNNING) {
             detached = true;
             controller.interrupt();
             say(ConsoleLine.Kind.ERROR, "did not stop within " + STOP_GRACE_MILLIS / 1000 + " s of being asked;"
                     + " it was left behind. Does it catch Throwable, or loop inside a library call?");
             finish(ControllerStatus.STOPPED);
-        } else if (status == ControllerStatus.RUNNING) {
-            finish(ControllerStatus.STOPPED);
         }
     }
 
-    private void hung(long wallStart) {
-        double realSeconds = (System.nanoTime() - wallStart) / 1e9;
+    /** The watchdog saw the controller's thread end while it held the turn: run() returned. */
+    void returned() {
+        finish(ControllerStatus.FINISHED);
+    }
+
+    /** The watchdog saw no progress for the hang timeout while this controller held the turn. */
+    void hung(double realSeconds) {
         say(ConsoleLine.Kind.ERROR, String.format(Locale.ROOT,
                 "controller %s (%s) stopped making API calls at simulated time %.3f s: it ran for %.1f s of"
                         + " real time without reading a sensor, setting a motor or sleeping. A loop that waits for"
@@ -252,7 +268,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
         }
     }
 
-    /** Called on the engine's thread, or on the controller's thread while it holds the turn. */
+    /** Called by whoever holds the turn. */
     private void finish(ControllerStatus end) {
         if (status.ended()) {
             return;
@@ -276,10 +292,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
             finish(ControllerStatus.FAILED);
         }
         settleStop();
-        turn = ENGINE;
-        if (engineWaiting) {
-            LockSupport.unpark(engineThread);
-        }
+        lockstep.passTo(null);
     }
 
     private void settleStop() {
@@ -333,38 +346,14 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
         if (stopRequested) {
             throw new ControllerStoppedError("controller " + name + " was stopped");
         }
+        apiCalls++;
         if (now >= limit) {
-            yieldToEngine();
+            yieldTurn();
         }
     }
 
     private void leave() {
         now += apiCostNanos;
-    }
-
-    private void yieldToEngine() {
-        wake = now;
-        jitter();
-        turn = ENGINE;
-        if (engineWaiting) {
-            LockSupport.unpark(engineThread);
-        }
-        int spins = 0;
-        while (turn != CONTROLLER) {
-            if (spins < SPIN_LIMIT) {
-                spins++;
-                Thread.onSpinWait();
-                continue;
-            }
-            controllerWaiting = true;
-            if (turn != CONTROLLER) {
-                LockSupport.park(this);
-            }
-            controllerWaiting = false;
-        }
-        if (stopRequested) {
-            throw new ControllerStoppedError("controller " + name + " was stopped");
-        }
     }
 
     @Override
@@ -379,9 +368,10 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
         if (Thread.interrupted()) {
             throw new InterruptedException("sleep interrupted");
         }
+        apiCalls++;
         now += StrictMath.max(nanos, apiCostNanos);
         if (now >= limit) {
-            yieldToEngine();
+            yieldTurn();
         }
     }
 

@@ -23,6 +23,7 @@ import org.kheperasim.sim.engine.SnapshotListener;
 import org.kheperasim.sim.engine.World;
 import org.kheperasim.sim.host.ConsoleSink;
 import org.kheperasim.sim.host.ControllerHost;
+import org.kheperasim.sim.host.Lockstep;
 import org.kheperasim.sim.trace.TraceWriter;
 
 /**
@@ -187,8 +188,6 @@ public final class Simulation {
             hosts.add(host);
             robots.add(robot);
         }
-        RegionTracker regions = new RegionTracker(arena.regions(), robots.size());
-        engine.addListener(regions, 10 * Engine.TICK_NANOS);
         for (SnapshotListener l : b.listeners) {
             engine.addListener(l, b.listenerPeriodNanos);
         }
@@ -218,17 +217,16 @@ public final class Simulation {
         }
 
         long endNanos = (long) StrictMath.rint(b.seconds * 1e9);
+        Lockstep lockstep = new Lockstep(engine, hosts, b.hostOptions.hangTimeoutNanos());
         long wallStart = System.nanoTime();
         String sha = null;
         try {
-            engine.runUntil(endNanos);
+            lockstep.run(endNanos);
             if (trace != null && engine.timeNanos() % (b.sampleMillis * Engine.TICK_NANOS) == 0) {
                 trace.onSnapshot(engine.snapshot());
             }
         } finally {
-            for (ControllerHost h : hosts) {
-                h.stop();
-            }
+            lockstep.stopAll();
             if (trace != null) {
                 trace.close();
                 sha = trace.sha256();
@@ -245,7 +243,7 @@ public final class Simulation {
             ControllerHost h = hosts.get(i);
             results.add(new RunResult.RobotResult(r.name(), r.x(), r.y(), r.headingDeg(), r.distanceTravelledMm(),
                     r.collisions(), r.visitedPercent(), h.status(),
-                    h.failure() == null ? null : h.failure().toString(), regions.entered(i)));
+                    h.failure() == null ? null : h.failure().toString(), r.regionsEntered()));
         }
         return new RunResult(seed, arena.name(), controllerClass, engine.timeNanos() / 1e9, wall, sha, results);
     }
