@@ -35,7 +35,7 @@ public final class Settings {
         num("prox.gainSpread", "0.05", 0, 1, "per-robot spread of each sensor's gain, standard deviation (relative)");
         num("prox.noiseAbs", "3", 0, 1023, "per-reading proximity noise, standard deviation, counts");
         num("prox.noiseRel", "0.03", 0, 1, "per-reading proximity noise, standard deviation relative to the signal");
-        num("prox.spikeRate", "0.001", 0, 1, "probability that a proximity reading is a spurious spike");
+        num("prox.spikeRate", "0.0002", 0, 1, "probability that a proximity reading is a spurious spike");
         num("prox.reflect.wall", "1", 0, 10, "reflectance of walls relative to the white reference wall");
         num("prox.reflect.light", "1", 0, 10, "reflectance of light sources");
         num("prox.reflect.cap", "1", 0, 10, "reflectance of bottle caps");
