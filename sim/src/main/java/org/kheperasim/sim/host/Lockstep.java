@@ -141,7 +141,8 @@ public final class Lockstep {
             if (host == null) {
                 continue;
             }
-            if (!h.isAlive()) {
+            // TERMINATED, not !isAlive(): a thread just handed its first turn may not have started yet.
+            if (h.getState() == Thread.State.TERMINATED) {
                 if (holder == h) {
                     // Its run() returned while it held the turn: take the turn back.
                     holder = owner;
