@@ -8,8 +8,6 @@ public final class Khepera {
     public static final double WHEEL_BASE_MM = 53.0;
     /** One speed unit is one pulse per 10 ms: 0.08 mm / 0.01 s. */
     public static final double MM_PER_S_PER_SPEED_UNIT = 8.0;
-    /** Wheel travel per encoder pulse (the manual's 0.08 mm; the alternative 12 pulses/mm is a setting). */
-    public static final double DEFAULT_MM_PER_PULSE = 0.08;
     /** The robot's motor controller period: motor noise is redrawn this often. */
     public static final long MOTOR_PERIOD_NANOS = 10_000_000L;
 

@@ -133,11 +133,6 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
         return failure;
     }
 
-    /** @return the controller's simulated clock, ns */
-    public long controllerNanos() {
-        return now;
-    }
-
     // ------------------------------------------------------------------ the turn
 
     @Override
