@@ -109,7 +109,6 @@ public final class SimRobot {
     private double distanceTravelled;
     private final BitSet visited;
     private int visitedFree;
-    private int lastCell = -1;
     private final int[] footprint;
     /** For each step (dr, dc) to a neighbouring cell: the footprint's cells not in the footprint before the step. */
     private final int[][] footprintEdges = new int[9][];
@@ -125,6 +124,10 @@ public final class SimRobot {
     private final double[] sensorY = new double[IrSensor.COUNT];
     private final double[] sensorCos = new double[IrSensor.COUNT];
     private final double[] sensorSin = new double[IrSensor.COUNT];
+    private final double[] placedX = new double[IrSensor.COUNT];
+    private final double[] placedY = new double[IrSensor.COUNT];
+    private final double[] placedDx = new double[IrSensor.COUNT];
+    private final double[] placedDy = new double[IrSensor.COUNT];
     private final double[] rayCos = new double[RAY_ANGLES_DEG.length];
     private final double[] raySin = new double[RAY_ANGLES_DEG.length];
     private final double[] proxGain = new double[IrSensor.COUNT];
@@ -534,12 +537,23 @@ public final class SimRobot {
 
     // ---------------------------------------------------------------- sensors
 
-    private void sampleProximity() {
+    /** Where each sensor is in the arena now, and which way it looks. */
+    private void placeSensors() {
         for (int i = 0; i < IrSensor.COUNT; i++) {
-            double px = x + cos * sensorX[i] - sin * sensorY[i];
-            double py = y + sin * sensorX[i] + cos * sensorY[i];
-            double dx = cos * sensorCos[i] - sin * sensorSin[i];
-            double dy = sin * sensorCos[i] + cos * sensorSin[i];
+            placedX[i] = x + cos * sensorX[i] - sin * sensorY[i];
+            placedY[i] = y + sin * sensorX[i] + cos * sensorY[i];
+            placedDx[i] = cos * sensorCos[i] - sin * sensorSin[i];
+            placedDy[i] = sin * sensorCos[i] + cos * sensorSin[i];
+        }
+    }
+
+    private void sampleProximity() {
+        placeSensors();
+        for (int i = 0; i < IrSensor.COUNT; i++) {
+            double px = placedX[i];
+            double py = placedY[i];
+            double dx = placedDx[i];
+            double dy = placedDy[i];
             double raw = 0;
             double free = field.clearance(px, py);
             if (free < proxRange) {
@@ -575,11 +589,12 @@ public final class SimRobot {
     }
 
     private void sampleLight() {
+        placeSensors();
         for (int i = 0; i < IrSensor.COUNT; i++) {
-            double px = x + cos * sensorX[i] - sin * sensorY[i];
-            double py = y + sin * sensorX[i] + cos * sensorY[i];
-            double dx = cos * sensorCos[i] - sin * sensorSin[i];
-            double dy = sin * sensorCos[i] + cos * sensorSin[i];
+            double px = placedX[i];
+            double py = placedY[i];
+            double dx = placedDx[i];
+            double dy = placedDy[i];
             double exposure = 0;
             for (int k = 0; k < lights.size(); k++) {
                 exposure += exposure(lights.get(k), px, py, dx, dy);
@@ -630,8 +645,13 @@ public final class SimRobot {
     }
 
     private void sampleEncoders() {
-        sampledEncoderLeft = (int) (long) StrictMath.floor(encoderLeft);
-        sampledEncoderRight = (int) (long) StrictMath.floor(encoderRight);
+        sampledEncoderLeft = pulses(encoderLeft);
+        sampledEncoderRight = pulses(encoderRight);
+    }
+
+    /** The 32-bit counter's value for a wheel travel of {@code count} pulses (it wraps like the robot's). */
+    private static int pulses(double count) {
+        return (int) (long) StrictMath.floor(count);
     }
 
     private static int clampReading(double v) {
@@ -681,11 +701,9 @@ public final class SimRobot {
     private void markVisited(long timeNanos) {
         int col = grid.col(x);
         int row = grid.row(y);
-        int cell = row * grid.cols() + col;
-        if (cell == lastCell) {
+        if (col == lastCellCol && row == lastCellRow) {
             return;
         }
-        lastCell = cell;
         for (int k = 0; k < regions.size(); k++) {
             if (regionEntered[k] < 0 && regions.get(k).contains(x, y)) {
                 regionEntered[k] = timeNanos;
@@ -754,12 +772,12 @@ public final class SimRobot {
 
     /** @return the robot's own left position counter, pulses (not delayed by the link) */
     public int encoderLeft() {
-        return (int) (long) StrictMath.floor(encoderLeft);
+        return pulses(encoderLeft);
     }
 
     /** @return the robot's own right position counter, pulses */
     public int encoderRight() {
-        return (int) (long) StrictMath.floor(encoderRight);
+        return pulses(encoderRight);
     }
 
     /** @return which side touches an obstacle */
@@ -809,16 +827,6 @@ public final class SimRobot {
     /** @return the settings this robot was built with */
     public Settings settings() {
         return settings;
-    }
-
-    /** @return a copy of the proximity values the controller currently sees */
-    public int[] visibleProximity() {
-        return visibleProximity.clone();
-    }
-
-    /** @return a copy of the light values the controller currently sees */
-    public int[] visibleLight() {
-        return visibleLight.clone();
     }
 
     /** Copy the visible values into a snapshot's arrays without allocating. */

@@ -62,7 +62,6 @@ public final class Simulation {
         private ConsoleSink console = line -> { };
         private ControllerHost.Options hostOptions = ControllerHost.Options.defaults();
         private final List<SnapshotListener> listeners = new ArrayList<>();
-        private long listenerPeriodNanos = Engine.TICK_NANOS;
 
         /** @param arena the arena @return this */
         public Builder arena(Arena arena) {
@@ -189,7 +188,7 @@ public final class Simulation {
             robots.add(robot);
         }
         for (SnapshotListener l : b.listeners) {
-            engine.addListener(l, b.listenerPeriodNanos);
+            engine.addListener(l, Engine.TICK_NANOS);
         }
 
         TraceWriter trace = null;
