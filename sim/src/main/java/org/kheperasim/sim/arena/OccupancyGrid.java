@@ -56,21 +56,48 @@ public final class OccupancyGrid {
      * @throws IllegalArgumentException if the arena has more caps than cell ids can number
      */
     public static OccupancyGrid of(Arena arena) {
-        int c = (int) Math.max(1, Math.round(arena.width() / CELL_MM));
-        int r = (int) Math.max(1, Math.round(arena.height() / CELL_MM));
-        OccupancyGrid g = new OccupancyGrid(c, r);
+        OccupancyGrid g = new OccupancyGrid(colsFor(arena), rowsFor(arena));
+        g.paint(arena);
+        return g;
+    }
+
+    /**
+     * Rasterise an arena of this grid's size again, in place: every cell is cleared first (an
+     * edited arena during a run).
+     *
+     * @param arena the arena, with {@code colsFor(arena) == cols()} and {@code rowsFor(arena) == rows()}
+     * @throws IllegalArgumentException if the arena's size does not match the grid's
+     */
+    public void repaint(Arena arena) {
+        if (colsFor(arena) != cols || rowsFor(arena) != rows) {
+            throw new IllegalArgumentException("arena " + arena.name() + " is " + arena.width() + " x "
+                    + arena.height() + " mm but the grid is " + cols + " x " + rows
+                    + " cells; the size cannot change during a run (start a new run instead)");
+        }
+        java.util.Arrays.fill(cells, (short) FLOOR);
+        paint(arena);
+    }
+
+    private void paint(Arena arena) {
         for (Wall w : arena.walls()) {
-            g.paintWall(w);
+            paintWall(w);
         }
         for (Light l : arena.lights()) {
-            g.paintDisc(l.x(), l.y(), l.radius(), LIGHT);
+            paintDisc(l.x(), l.y(), l.radius(), LIGHT);
         }
         List<Cap> caps = arena.caps();
         for (int i = 0; i < caps.size(); i++) {
             Cap cap = caps.get(i);
-            g.paintDisc(cap.x(), cap.y(), cap.radius(), capId(i));
+            paintDisc(cap.x(), cap.y(), cap.radius(), capId(i));
         }
-        return g;
+    }
+
+    private static int colsFor(Arena arena) {
+        return (int) Math.max(1, Math.round(arena.width() / CELL_MM));
+    }
+
+    private static int rowsFor(Arena arena) {
+        return (int) Math.max(1, Math.round(arena.height() / CELL_MM));
     }
 
     /**
@@ -319,6 +346,44 @@ public final class OccupancyGrid {
             int r1 = Math.min(rows - 1, row(Math.max(ys, ye)));
             for (int r = r0; r <= r1; r++) {
                 paintFloor(c, r, WALL);
+            }
+        }
+    }
+
+    /**
+     * Paint a cap onto the floor cells of its disc (a cap that has moved).
+     *
+     * @param capIndex the cap's index
+     * @param cx centre, mm
+     * @param cy centre, mm
+     * @param radius mm
+     */
+    public void paintCap(int capIndex, double cx, double cy, double radius) {
+        paintDisc(cx, cy, radius, capId(capIndex));
+    }
+
+    /**
+     * Turn a cap's cells back into floor (the cap moves or is picked up). Only the cells of its
+     * disc around (cx, cy) are looked at, so this is cheap.
+     *
+     * @param capIndex the cap's index
+     * @param cx where it was painted, mm
+     * @param cy where it was painted, mm
+     * @param radius mm
+     */
+    public void eraseCap(int capIndex, double cx, double cy, double radius) {
+        int id = capId(capIndex);
+        double reach = radius + cellSize();
+        int c0 = Math.max(0, col(cx - reach));
+        int c1 = Math.min(cols - 1, col(cx + reach));
+        int r0 = Math.max(0, row(cy - reach));
+        int r1 = Math.min(rows - 1, row(cy + reach));
+        for (int r = r0; r <= r1; r++) {
+            for (int c = c0; c <= c1; c++) {
+                int i = r * cols + c;
+                if (cells[i] == id) {
+                    cells[i] = FLOOR;
+                }
             }
         }
     }

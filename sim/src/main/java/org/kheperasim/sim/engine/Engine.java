@@ -212,6 +212,27 @@ public final class Engine {
         }
     }
 
+    /**
+     * Edit the arena during a run (an instructor drops a wall in front of a robot): walls, lights
+     * and regions are replaced, and cap i of {@code edited} moves cap i unless a gripper holds it.
+     * Robots keep their poses. Call it between ticks, from the thread that holds the turn (the
+     * run's owner between {@code Lockstep.run} calls); a run that replays its edits at the same
+     * ticks computes the same trace.
+     *
+     * @param edited the edited arena, of the same size
+     * @throws IllegalArgumentException if the size differs
+     * @throws IllegalStateException inside a tick
+     */
+    public void edit(org.kheperasim.sim.arena.Arena edited) {
+        if (inTick) {
+            throw new IllegalStateException("the arena can only be edited between ticks, by the thread holding the turn");
+        }
+        world.replaceArena(edited);
+        for (SimRobot r : robots) {
+            r.arenaEdited();
+        }
+    }
+
     /** @return the world as it is now */
     public Snapshot snapshot() {
         List<RobotView> views = new ArrayList<>(robots.size());
@@ -221,8 +242,8 @@ public final class Engine {
             r.copyVisible(prox, light);
             views.add(new RobotView(r.id(), r.name(), r.x(), r.y(), r.headingDeg(), r.speedLeft(), r.speedRight(),
                     r.encoderLeft(), r.encoderRight(), r.contact(), prox, light, r.collisions(),
-                    r.distanceTravelledMm(), driverStatus.get(r.id()).apply(r)));
+                    r.distanceTravelledMm(), driverStatus.get(r.id()).apply(r), r.gripperView()));
         }
-        return new Snapshot(timeNanos(), views);
+        return new Snapshot(timeNanos(), views, world.caps());
     }
 }

@@ -20,10 +20,11 @@ import java.util.Arrays;
  * @param collisions collisions so far
  * @param distanceMm path length so far, mm
  * @param controller the controller's state, as text (running, finished, failed, hung, none)
+ * @param gripper the gripper turret's state
  */
 public record RobotView(int id, String name, double x, double y, double headingDeg, int speedLeft, int speedRight,
         int encoderLeft, int encoderRight, Contact contact, int[] proximity, int[] light, int collisions,
-        double distanceMm, String controller) {
+        double distanceMm, String controller, GripperView gripper) {
 
     /** Copies the arrays, so the view cannot change. */
     public RobotView {
@@ -59,7 +60,8 @@ public record RobotView(int id, String name, double x, double y, double headingD
                 && v.headingDeg == headingDeg && v.speedLeft == speedLeft && v.speedRight == speedRight
                 && v.encoderLeft == encoderLeft && v.encoderRight == encoderRight && v.contact == contact
                 && Arrays.equals(v.proximity, proximity) && Arrays.equals(v.light, light)
-                && v.collisions == collisions && v.distanceMm == distanceMm && v.controller.equals(controller);
+                && v.collisions == collisions && v.distanceMm == distanceMm && v.controller.equals(controller)
+                && v.gripper.equals(gripper);
     }
 
     @Override

@@ -114,8 +114,8 @@ public final class SimRobot {
     private final int[][] footprintEdges = new int[9][];
     private int lastCellCol = Integer.MIN_VALUE;
     private int lastCellRow = Integer.MIN_VALUE;
-    private final List<Region> regions;
-    private final long[] regionEntered;
+    private List<Region> regions;
+    private long[] regionEntered;
 
     // Sensor model, with the per-robot miscalibration drawn once.
     private final ProximityProfile profile;
@@ -151,7 +151,7 @@ public final class SimRobot {
     private final double motorNoiseSigmaLeft;
     private final double motorNoiseSigmaRight;
     private final double mmPerPulse;
-    private final List<Light> lights;
+    private List<Light> lights;
 
     private final Noise[] proxNoise = new Noise[IrSensor.COUNT];
     private final Noise[] lightNoise = new Noise[IrSensor.COUNT];
@@ -360,6 +360,30 @@ public final class SimRobot {
     /** @return the gripper fingers' state */
     public GripperState fingers() {
         return fingers;
+    }
+
+    /** @return the gripper turret's state now */
+    public GripperView gripperView() {
+        return new GripperView(arm == ArmPosition.UP ? GripperTurret.ARM_UP : GripperTurret.ARM_DOWN, false, fingers,
+                false, 0, -1);
+    }
+
+    /** The arena was edited: pick up its lights and regions, and check the body's clearance again. */
+    void arenaEdited() {
+        lights = world.arena().lights();
+        List<Region> edited = world.arena().regions();
+        long[] entered = new long[edited.size()];
+        java.util.Arrays.fill(entered, -1);
+        for (int k = 0; k < edited.size(); k++) {
+            for (int j = 0; j < regions.size(); j++) {
+                if (regions.get(j).name().equals(edited.get(k).name())) {
+                    entered[k] = regionEntered[j];
+                }
+            }
+        }
+        regions = edited;
+        regionEntered = entered;
+        clearance = clearanceAt(x, y);
     }
 
     /** @return the left speed the controller last asked for, units */

@@ -8,11 +8,13 @@ import java.util.List;
  *
  * @param timeNanos simulated time, ns since the run started
  * @param robots every robot, in engine order
+ * @param caps every bottle cap, in arena order (held ones where their gripper holds them)
  */
-public record Snapshot(long timeNanos, List<RobotView> robots) {
-    /** Copies the list. */
+public record Snapshot(long timeNanos, List<RobotView> robots, List<CapView> caps) {
+    /** Copies the lists. */
     public Snapshot {
         robots = List.copyOf(robots);
+        caps = List.copyOf(caps);
     }
 
     /** @return simulated time, seconds */
