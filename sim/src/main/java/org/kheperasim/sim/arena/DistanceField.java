@@ -1,16 +1,17 @@
 package org.kheperasim.sim.arena;
 
 /**
- * How far every point of the floor is from the nearest obstacle: the exact Euclidean distance
- * transform of an {@link OccupancyGrid}'s non-floor cells, with everything outside the grid
- * counting as obstacle, plus the nearest obstacle cell itself (the feature transform).
+ * How far every point of the floor is from the nearest fixed obstacle: the exact Euclidean
+ * distance transform of an {@link OccupancyGrid}'s wall and light cells, with everything outside
+ * the grid counting as obstacle, plus the nearest obstacle cell itself (the feature transform).
+ * Caps move, so they take no part: the engine tests them one by one, as discs.
  *
  * <p>Computed in linear time by Felzenszwalb and Huttenlocher's method: the squared distance is
  * the lower envelope of parabolas, taken first down each column and then along each row, on a copy
  * of the grid padded by one obstacle cell on every side. A 500 x 500 grid takes a few
  * milliseconds. Queries are O(1) and allocate nothing.
  *
- * <p>The field is a snapshot: after editing the grid (a cap moved) call {@link #recompute()}.
+ * <p>The field is a snapshot: after editing the grid's walls or lights call {@link #recompute()}.
  * Not thread-safe.
  */
 public final class DistanceField {
@@ -180,7 +181,11 @@ public final class DistanceField {
 
     private boolean isObstacle(int px, int py) {
         return px == 0 || py == 0 || px == pw - 1 || py == ph - 1
-                || grid.id(px - 1, py - 1) != OccupancyGrid.FLOOR;
+                || isFixed(grid.id(px - 1, py - 1));
+    }
+
+    private static boolean isFixed(int id) {
+        return id != OccupancyGrid.FLOOR && id < OccupancyGrid.FIRST_CAP;
     }
 
     /**

@@ -72,9 +72,15 @@ final class Json {
         return this;
     }
 
-    Json put(String key, Map<String, Double> values) {
+    Json put(String key, Map<String, ? extends Number> values) {
         beginObject(key);
-        values.forEach(this::put);
+        values.forEach((k, v) -> {
+            if (v instanceof Integer || v instanceof Long) {
+                put(k, v.longValue());
+            } else {
+                put(k, v.doubleValue());
+            }
+        });
         return end();
     }
 

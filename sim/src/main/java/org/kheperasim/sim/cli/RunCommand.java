@@ -124,6 +124,9 @@ final class RunCommand implements Callable<Integer> {
                 result.realTimeFactor(), r.x(), r.y(), r.headingDeg(), r.distanceMm() / 1000, r.collisions(),
                 r.visitedPercent()));
         s.append("; controller ").append(r.status().name().toLowerCase(Locale.ROOT));
+        if (result.caps() > 0) {
+            s.append("; caps per region ").append(result.capsInRegions());
+        }
         if (result.traceSha256() != null) {
             s.append("; trace sha256 ").append(result.traceSha256());
         }
@@ -145,7 +148,9 @@ final class RunCommand implements Callable<Integer> {
                 .put("visitedPercent", first.visitedPercent())
                 .put("controllerStatus", first.status().name().toLowerCase(Locale.ROOT))
                 .put("traceSha256", result.traceSha256())
-                .put("regionsEntered", first.regionsEntered());
+                .put("regionsEntered", first.regionsEntered())
+                .put("caps", result.caps())
+                .put("capsInRegions", result.capsInRegions());
         j.beginArray("robots");
         for (RunResult.RobotResult r : result.robots()) {
             j.element().put("name", r.name())

@@ -57,6 +57,9 @@ public final class Settings {
             num("motor." + w + ".noise", "0.02", 0, 10, "speed noise of the " + w + " wheel, standard deviation (relative), redrawn every 10 ms");
         }
         num("motor.spread", "0.02", 0, 1, "per-robot spread of each wheel's calibration, standard deviation (relative)");
+        num("gripper.armTravelMs", "1000", 1, 60_000, "time the gripper arm takes between up and down, ms (an estimate: the turret's manual was not found)");
+        num("gripper.fingerMs", "400", 1, 10_000, "time the gripper fingers take to open or close, ms (an estimate)");
+        num("gripper.capResistivity", "120", 0, 255, "resistivity reading of a held bottle cap, 0..255 (empty fingers read 0)");
         num("encoder.mmPerPulse", "0.08", 0.001, 10, "wheel travel per encoder pulse, mm (the manual also gives 1/12 mm)");
     }
 

@@ -32,6 +32,8 @@ public final class SimRobot {
     private static final double CONTACT_EPSILON_MM = 0.5;
     /** The fast clearance estimate can exceed the true one by up to 2.2 cells; below this margin, refine. */
     private static final double NEAR_MM = 3 * 2.4384;
+    /** No sensor sits farther than this from the robot's centre, mm. */
+    private static final double SENSOR_REACH_MM = 26.5;
     private static final double TICK_S = Engine.TICK_NANOS / 1e9;
     /** A command's acknowledgement, e.g. {@code d} CR LF. */
     private static final int REPLY_CHARS = 3;
@@ -98,9 +100,26 @@ public final class SimRobot {
     private int visibleEncoderLeft;
     private int visibleEncoderRight;
 
-    // The gripper turret.
-    private ArmPosition arm = ArmPosition.UP;
+    // The gripper turret: the arm's position moves toward its target at a fixed rate; the fingers
+    // report the state they last reached, and a cap between them when they close is held.
+    private final Caps caps;
+    private double armPos = GripperTurret.ARM_UP;
+    private int armTarget = GripperTurret.ARM_UP;
+    private ArmPosition armRest = ArmPosition.UP;
+    private final double armStepPerTick;
     private GripperState fingers = GripperState.OPEN;
+    private GripperState fingerTarget = GripperState.OPEN;
+    private long fingersDoneAt = Long.MAX_VALUE;
+    private final long fingerNanos;
+    private int heldCap = -1;
+    private final int capResistivity;
+    // Caps near the robot: recheck only after moving capSlack mm or when a cap has moved.
+    private int capVersion = -1;
+    private double capCheckX;
+    private double capCheckY;
+    private double capSlack;
+    private int blockingCap = -1;
+    private final double[] push = new double[2];
 
     // Contact and statistics.
     private Contact contact = Contact.NONE;
@@ -176,6 +195,7 @@ public final class SimRobot {
         this.link = new LinkTiming((int) settings.number("link.baud"), LinkTiming.DEFAULT_BITS_PER_CHAR,
                 (long) (settings.number("link.turnaroundUs") * 1000));
         this.lights = world.arena().lights();
+        this.caps = world.capSet();
 
         // Independent streams, split in a fixed order: adding a source later (split at the end)
         // leaves every existing stream as it was.
@@ -234,6 +254,10 @@ public final class SimRobot {
         motorNoiseSigmaLeft = settings.number("motor.left.noise") * readingNoise;
         motorNoiseSigmaRight = settings.number("motor.right.noise") * readingNoise;
         mmPerPulse = settings.number("encoder.mmPerPulse");
+        armStepPerTick = (GripperTurret.ARM_DOWN - GripperTurret.ARM_UP)
+                / (settings.number("gripper.armTravelMs") * 1e6 / Engine.TICK_NANOS);
+        fingerNanos = (long) StrictMath.rint(settings.number("gripper.fingerMs") * 1e6);
+        capResistivity = (int) settings.number("gripper.capResistivity");
 
         // The poll cycle: for each step, the robot samples when it has read the command and acted,
         // and the controller sees the value when the reply's last character has arrived.
@@ -342,30 +366,90 @@ public final class SimRobot {
         return visibleEncoderRight;
     }
 
-    /** Where the controller asked the gripper arm to be (the turret's mechanics come with the caps). */
-    public void commandArm(ArmPosition position) {
-        arm = position;
+    /**
+     * A controller moves the gripper arm ({@code T,1,E,pos}); it waits its turn on the line, and the
+     * arm starts moving when the command has arrived.
+     *
+     * @param now simulated time, ns
+     * @param position target in the turret's 8-bit units, larger = lower (see {@link GripperTurret})
+     */
+    public void commandArm(long now, int position) {
+        int target = StrictMath.max(0, StrictMath.min(255, position));
+        queueTurretCommand(now, CommandQueue.ARM, target, "T,1,E," + target, 3);
     }
 
-    /** @param state fingers open or closed */
-    public void commandFingers(GripperState state) {
-        fingers = state;
+    /** @param position up or down, see {@link #commandArm(long, int)} */
+    public void commandArm(long now, ArmPosition position) {
+        commandArm(now, position == ArmPosition.DOWN ? GripperTurret.ARM_DOWN : GripperTurret.ARM_UP);
     }
 
-    /** @return the gripper arm's position */
-    public ArmPosition arm() {
-        return arm;
+    /** A controller opens or closes the fingers ({@code T,1,D,0|1}), after the command's wire time. */
+    public void commandFingers(long now, GripperState state) {
+        int closed = state == GripperState.CLOSED ? 1 : 0;
+        queueTurretCommand(now, CommandQueue.FINGERS, closed, "T,1,D," + closed, 3);
     }
 
-    /** @return the gripper fingers' state */
+    private void queueTurretCommand(long now, int type, int value, String command, int replyPayload) {
+        long start = StrictMath.max(now, lineFreeAt);
+        // The command line and CR, then the reply: "t,1," + payload + CR LF.
+        long delay = link.wireNanos(command.length() + 1) + link.turnaroundNanos();
+        commands.add(start + delay, type, value, 0);
+        lineFreeAt = start + delay + link.wireNanos(4 + replyPayload + 2);
+    }
+
+    /** @return where the arm last came to rest (while moving: the position it left) */
+    public ArmPosition armRest() {
+        return armRest;
+    }
+
+    /** @return the arm's position now, in the turret's 8-bit units */
+    public int armPosition() {
+        return (int) StrictMath.rint(armPos);
+    }
+
+    /** @return true while the arm travels */
+    public boolean armMoving() {
+        return armPos != armTarget;
+    }
+
+    /** @return the state the fingers last reached (while moving: the state they left) */
     public GripperState fingers() {
         return fingers;
     }
 
+    /** @return the id of the cap the fingers hold, or -1 */
+    public int heldCap() {
+        return heldCap;
+    }
+
+    /**
+     * The optical barrier between the fingers: broken by a held cap, or, with the arm low, by
+     * anything on the floor crossing the line between the fingers.
+     *
+     * @return true when something breaks it
+     */
+    public boolean objectPresent() {
+        if (heldCap >= 0) {
+            return true;
+        }
+        if (armPos < GripperTurret.ARM_LOW) {
+            return false;
+        }
+        double half = GripperTurret.OPEN_HALF_GAP_MM - GripperTurret.FINGER_RADIUS_MM;
+        // From the left finger's inner face across to the right one's.
+        double ox = x + cos * GripperTurret.GRIP_MM - sin * half;
+        double oy = y + sin * GripperTurret.GRIP_MM + cos * half;
+        return grid.castRay(ox, oy, sin, -cos, 2 * half, hit) != Double.POSITIVE_INFINITY;
+    }
+
+    /** @return resistivity of what the fingers hold, 0..255; 0 when they hold nothing */
+    public int resistivity() {
+        return heldCap >= 0 ? capResistivity : 0;
+    }
+
     /** @return the gripper turret's state now */
     public GripperView gripperView() {
-        return new GripperView(arm == ArmPosition.UP ? GripperTurret.ARM_UP : GripperTurret.ARM_DOWN, false, fingers,
-                false, 0, -1);
+        return new GripperView(armPosition(), armMoving(), fingers, objectPresent(), resistivity(), heldCap);
     }
 
     /** The arena was edited: pick up its lights and regions, and check the body's clearance again. */
@@ -384,6 +468,10 @@ public final class SimRobot {
         regions = edited;
         regionEntered = entered;
         clearance = clearanceAt(x, y);
+        if (heldCap >= caps.count()) {
+            heldCap = -1;
+        }
+        capVersion = -1;
     }
 
     /** @return the left speed the controller last asked for, units */
@@ -408,11 +496,15 @@ public final class SimRobot {
             int a = commands.headA();
             int b = commands.headB();
             commands.pop();
-            if (type == CommandQueue.SPEED) {
-                setSpeedsNow(a, b);
-            } else {
-                encoderLeft = a;
-                encoderRight = b;
+            switch (type) {
+                case CommandQueue.SPEED -> setSpeedsNow(a, b);
+                case CommandQueue.POSITION -> {
+                    encoderLeft = a;
+                    encoderRight = b;
+                }
+                case CommandQueue.ARM -> armTarget = a;
+                case CommandQueue.FINGERS -> startFingers(now, a == 1 ? GripperState.CLOSED : GripperState.OPEN);
+                default -> throw new IllegalStateException("command type " + type);
             }
         }
         if (now >= nextMotorNoise) {
@@ -460,6 +552,9 @@ public final class SimRobot {
      * @param endNanos simulated time at the end of the tick
      */
     void integrate(long endNanos) {
+        if (armPos != armTarget || fingersDoneAt != Long.MAX_VALUE) {
+            moveGripper(endNanos);
+        }
         if (wheelsDirty) {
             wheelLeft = speedLeft * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationLeft * motorNoiseLeft;
             wheelRight = speedRight * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationRight * motorNoiseRight;
@@ -503,10 +598,6 @@ public final class SimRobot {
                 collisions++;
             }
         }
-        blocked = nowBlocked;
-        x = nx;
-        y = ny;
-        clearance = newClearance;
         double c = cos * fullCos - sin * fullSin;
         double s = sin * fullCos + cos * fullSin;
         if (++ticksSinceNormalise >= 256) {
@@ -515,14 +606,236 @@ public final class SimRobot {
             s *= n;
             ticksSinceNormalise = 0;
         }
+        blockingCap = -1;
+        if (capsNear(nx, ny)) {
+            // Caps give way when they can; one that cannot blocks the robot like a wall.
+            double tx = nx - x;
+            double ty = ny - y;
+            if (!capsAllow(nx, ny, c, s)) {
+                if (!capsAllow(x, y, c, s)) {
+                    c = cos;
+                    s = sin;
+                    diff = 0;
+                }
+                double f = 0;
+                if (capsAllow(x, y, c, s)) {
+                    double hi = 1;
+                    for (int k = 0; k < 8; k++) {
+                        double mid = (f + hi) * 0.5;
+                        if (capsAllow(x + mid * tx, y + mid * ty, c, s)) {
+                            f = mid;
+                        } else {
+                            hi = mid;
+                        }
+                    }
+                }
+                nx = x + f * tx;
+                ny = y + f * ty;
+                fraction *= f;
+                newClearance = clearanceAt(nx, ny);
+                if (!nowBlocked && !blocked) {
+                    collisions++;
+                }
+                nowBlocked = true;
+            }
+            pushCaps(nx, ny, c, s);
+        }
+        blocked = nowBlocked;
+        x = nx;
+        y = ny;
+        clearance = newClearance;
         cos = c;
         sin = s;
+        if (heldCap >= 0) {
+            caps.carry(heldCap, x + cos * GripperTurret.GRIP_MM, y + sin * GripperTurret.GRIP_MM);
+        }
         double moved = common * fraction;
         encoderLeft += (moved - diff) / mmPerPulse;
         encoderRight += (moved + diff) / mmPerPulse;
         distanceTravelled += StrictMath.abs(step * fraction);
-        contact = clearance <= Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM ? contactSide() : Contact.NONE;
+        if (clearance <= Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) {
+            contact = contactSide(field.nearestObstacleX(x, y), field.nearestObstacleY(x, y));
+        } else if (blockingCap >= 0) {
+            contact = contactSide(caps.x(blockingCap), caps.y(blockingCap));
+        } else {
+            contact = Contact.NONE;
+        }
         markVisited(endNanos);
+    }
+
+    // ---------------------------------------------------------------- the gripper and the caps
+
+    private void startFingers(long now, GripperState target) {
+        if (target == fingerTarget) {
+            return;
+        }
+        fingerTarget = target;
+        fingersDoneAt = now + fingerNanos;
+        if (target == GripperState.OPEN && heldCap >= 0) {
+            // The cap falls as soon as the fingers part.
+            caps.drop(heldCap, x + cos * GripperTurret.GRIP_MM, y + sin * GripperTurret.GRIP_MM, x, y,
+                    Khepera.BODY_RADIUS_MM);
+            heldCap = -1;
+        }
+    }
+
+    private void moveGripper(long endNanos) {
+        if (armPos != armTarget) {
+            double d = armTarget - armPos;
+            armPos = StrictMath.abs(d) <= armStepPerTick ? armTarget : armPos + StrictMath.signum(d) * armStepPerTick;
+            if (armPos == armTarget) {
+                armRest = armTarget >= GripperTurret.ARM_LOW ? ArmPosition.DOWN : ArmPosition.UP;
+            }
+        }
+        if (fingersDoneAt <= endNanos) {
+            fingersDoneAt = Long.MAX_VALUE;
+            fingers = fingerTarget;
+            if (fingers == GripperState.CLOSED && heldCap < 0 && armPos >= GripperTurret.ARM_LOW) {
+                int cap = capBetweenFingers();
+                if (cap >= 0) {
+                    caps.hold(cap, id);
+                    heldCap = cap;
+                    caps.carry(cap, x + cos * GripperTurret.GRIP_MM, y + sin * GripperTurret.GRIP_MM);
+                }
+            }
+        }
+    }
+
+    /** @return the cap on the floor whose centre lies between the open fingers, nearest the grip point; or -1 */
+    private int capBetweenFingers() {
+        int best = -1;
+        double bestScore = Double.POSITIVE_INFINITY;
+        double inner = GripperTurret.OPEN_HALF_GAP_MM - GripperTurret.FINGER_RADIUS_MM;
+        for (int i = 0; i < caps.count(); i++) {
+            if (caps.heldBy(i) >= 0) {
+                continue;
+            }
+            double dx = caps.x(i) - x;
+            double dy = caps.y(i) - y;
+            double lx = dx * cos + dy * sin;
+            double ly = dy * cos - dx * sin;
+            if (lx >= Khepera.BODY_RADIUS_MM - 1 && lx <= GripperTurret.FINGER_TIP_MM && StrictMath.abs(ly) < inner) {
+                double score = StrictMath.abs(lx - GripperTurret.GRIP_MM) + StrictMath.abs(ly);
+                if (score < bestScore) {
+                    bestScore = score;
+                    best = i;
+                }
+            }
+        }
+        return best;
+    }
+
+    /**
+     * Whether a cap could touch the robot at (px, py) in any heading. Cheap when none is near: the
+     * answer holds until the robot has moved by the distance to the nearest cap or a cap has moved.
+     */
+    private boolean capsNear(double px, double py) {
+        if (caps.count() == 0) {
+            return false;
+        }
+        double dx = px - capCheckX;
+        double dy = py - capCheckY;
+        if (caps.version() == capVersion && dx * dx + dy * dy < capSlack * capSlack) {
+            return false;
+        }
+        capVersion = caps.version();
+        capCheckX = px;
+        capCheckY = py;
+        double reach = armPos >= GripperTurret.ARM_LOW ? GripperTurret.REACH_MM : Khepera.BODY_RADIUS_MM;
+        double gap = caps.nearestSurface(px, py) - reach;
+        capSlack = gap > 0 ? gap : 0;
+        return gap <= 0;
+    }
+
+    /** The parts that push caps: 0 the body, 1 and 2 the lowered fingers, 3 a cap held low. */
+    private int pusherCount() {
+        if (armPos < GripperTurret.ARM_LOW) {
+            return 1;
+        }
+        return heldCap >= 0 ? 4 : 3;
+    }
+
+    /**
+     * How far part {@code part} of the robot at pose (px, py, pc, ps) overlaps cap i: writes the
+     * displacement that would free the cap into {@link #push} and returns its length (≤ 0: no overlap).
+     */
+    private double overlap(int part, double px, double py, double pc, double ps, int i) {
+        double cx = caps.x(i);
+        double cy = caps.y(i);
+        double qx;
+        double qy;
+        double radius;
+        if (part == 0) {
+            qx = px;
+            qy = py;
+            radius = Khepera.BODY_RADIUS_MM;
+        } else if (part == 3) {
+            qx = px + pc * GripperTurret.GRIP_MM;
+            qy = py + ps * GripperTurret.GRIP_MM;
+            radius = caps.radius(heldCap);
+        } else {
+            // A finger: the segment from base to tip at its lateral offset; the nearest point on it.
+            double side = part == 1 ? 1 : -1;
+            double half = fingers == GripperState.CLOSED && fingersDoneAt == Long.MAX_VALUE
+                    ? (heldCap >= 0 ? caps.radius(heldCap) : 0) + GripperTurret.FINGER_RADIUS_MM
+                    : GripperTurret.OPEN_HALF_GAP_MM;
+            double lx = (cx - px) * pc + (cy - py) * ps;
+            lx = StrictMath.max(GripperTurret.FINGER_BASE_MM, StrictMath.min(GripperTurret.FINGER_TIP_MM, lx));
+            double ly = side * half;
+            qx = px + pc * lx - ps * ly;
+            qy = py + ps * lx + pc * ly;
+            radius = GripperTurret.FINGER_RADIUS_MM;
+        }
+        double ex = cx - qx;
+        double ey = cy - qy;
+        double d2 = ex * ex + ey * ey;
+        double touch = radius + caps.radius(i);
+        if (d2 >= touch * touch) {
+            return 0;
+        }
+        double d = StrictMath.sqrt(d2);
+        if (d == 0) {
+            // Dead centre: push straight ahead.
+            ex = pc;
+            ey = ps;
+            d = 1;
+        }
+        double need = touch - d + 1e-9;
+        push[0] = ex / d * need;
+        push[1] = ey / d * need;
+        return need;
+    }
+
+    /** Whether every cap the robot at this pose overlaps can give way (nothing moves). */
+    private boolean capsAllow(double px, double py, double pc, double ps) {
+        int parts = pusherCount();
+        for (int i = 0; i < caps.count(); i++) {
+            if (caps.heldBy(i) >= 0) {
+                continue;
+            }
+            for (int part = 0; part < parts; part++) {
+                if (overlap(part, px, py, pc, ps, i) > 0 && caps.reach(i, push[0], push[1], Caps.CHAIN - 1) < 1) {
+                    blockingCap = i;
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    /** Push every cap the robot at this pose overlaps out of its way. */
+    private void pushCaps(double px, double py, double pc, double ps) {
+        int parts = pusherCount();
+        for (int i = 0; i < caps.count(); i++) {
+            if (caps.heldBy(i) >= 0) {
+                continue;
+            }
+            for (int part = 0; part < parts; part++) {
+                if (overlap(part, px, py, pc, ps, i) > 0) {
+                    caps.push(i, push[0], push[1], Caps.CHAIN - 1);
+                }
+            }
+        }
     }
 
     /** Clearance of the body's centre: the fast estimate, refined where contact is possible. */
@@ -552,9 +865,9 @@ public final class SimRobot {
         return 1 - a2 / 2 * (1 - a2 / 12 * (1 - a2 / 30 * (1 - a2 / 56 * (1 - a2 / 90))));
     }
 
-    private Contact contactSide() {
-        double ox = field.nearestObstacleX(x, y) - x;
-        double oy = field.nearestObstacleY(x, y) - y;
+    private Contact contactSide(double obstacleX, double obstacleY) {
+        double ox = obstacleX - x;
+        double oy = obstacleY - y;
         double rel = StrictMath.atan2(oy, ox) - StrictMath.atan2(sin, cos);
         return Contact.ofAngle(rel);
     }
@@ -573,13 +886,16 @@ public final class SimRobot {
 
     private void sampleProximity() {
         placeSensors();
+        // Caps are not in the distance field: bound the beams' empty stretch by the nearest cap too.
+        double capFree = caps.count() == 0 ? Double.POSITIVE_INFINITY
+                : caps.nearestSurface(x, y) - SENSOR_REACH_MM;
         for (int i = 0; i < IrSensor.COUNT; i++) {
             double px = placedX[i];
             double py = placedY[i];
             double dx = placedDx[i];
             double dy = placedDy[i];
             double raw = 0;
-            double free = field.clearance(px, py);
+            double free = StrictMath.min(field.clearance(px, py), capFree);
             if (free < proxRange) {
                 // Nothing lies nearer than the clearance (less the estimate's error): start the
                 // beams there instead of walking the empty cells.
@@ -863,6 +1179,8 @@ public final class SimRobot {
     private static final class CommandQueue {
         static final int SPEED = 0;
         static final int POSITION = 1;
+        static final int ARM = 2;
+        static final int FINGERS = 3;
         private long[] time = new long[16];
         private int[] type = new int[16];
         private int[] a = new int[16];

@@ -1,10 +1,7 @@
 package org.kheperasim.sim.engine;
 
-import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.arena.Cap;
 import org.kheperasim.sim.arena.DistanceField;
 import org.kheperasim.sim.arena.OccupancyGrid;
 
@@ -22,18 +19,15 @@ public final class World {
     private final DistanceField field;
     private int freeCells;
 
-    // The caps: index i is the arena's cap i, grid id FIRST_CAP + i.
-    private double[] capX = new double[0];
-    private double[] capY = new double[0];
-    private double[] capR = new double[0];
-    private int[] capHeldBy = new int[0];
+    private final Caps caps;
 
     /** @param arena the arena to build the world from */
     public World(Arena arena) {
         this.arena = arena;
         this.grid = OccupancyGrid.of(arena);
         this.field = DistanceField.of(grid);
-        loadCaps(arena.caps());
+        this.caps = new Caps(grid, field);
+        caps.load(arena.caps());
         this.freeCells = countFree();
     }
 
@@ -49,25 +43,6 @@ public final class World {
         return free;
     }
 
-    private void loadCaps(List<Cap> caps) {
-        int n = caps.size();
-        int old = capX.length;
-        capX = Arrays.copyOf(capX, n);
-        capY = Arrays.copyOf(capY, n);
-        capR = Arrays.copyOf(capR, n);
-        capHeldBy = Arrays.copyOf(capHeldBy, n);
-        for (int i = 0; i < n; i++) {
-            if (i >= old) {
-                capHeldBy[i] = -1;
-            }
-            if (capHeldBy[i] < 0) {
-                capX[i] = caps.get(i).x();
-                capY[i] = caps.get(i).y();
-            }
-            capR[i] = caps.get(i).radius();
-        }
-    }
-
     /**
      * Replace the arena in the middle of a run: walls, lights, regions and start poses come from
      * {@code edited}; cap i of {@code edited} moves cap i unless a gripper holds it. Call it between
@@ -77,26 +52,14 @@ public final class World {
      * @throws IllegalArgumentException if the size differs
      */
     void replaceArena(Arena edited) {
-        loadCaps(edited.caps());
-        List<Cap> placed = new ArrayList<>(capX.length);
-        for (int i = 0; i < capX.length; i++) {
-            placed.add(new Cap(capX[i], capY[i], capR[i]));
-        }
-        Arena painted = new Arena(edited.name(), edited.width(), edited.height(), edited.robots(), edited.walls(),
+        Arena fixed = new Arena(edited.name(), edited.width(), edited.height(), edited.robots(), edited.walls(),
                 edited.lights(), List.of(), edited.regions());
-        grid.repaint(painted);
+        grid.repaint(fixed);
         this.arena = edited;
-        for (int i = 0; i < capX.length; i++) {
-            if (capHeldBy[i] < 0) {
-                paintCap(i);
-            }
-        }
+        caps.load(edited.caps());
+        caps.paintAll();
         field.recompute();
         freeCells = countFree();
-    }
-
-    private void paintCap(int i) {
-        grid.paintCap(i, capX[i], capY[i], capR[i]);
     }
 
     /** @return the arena (as last edited) */
@@ -119,16 +82,35 @@ public final class World {
         return freeCells;
     }
 
-    /** @return the number of caps */
+    /** @return the number of bottle caps */
     public int capCount() {
-        return capX.length;
+        return caps.count();
+    }
+
+    /** @return the bottle caps */
+    Caps capSet() {
+        return caps;
     }
 
     /** @return every cap as it is now, in arena order */
     public List<CapView> caps() {
-        List<CapView> out = new ArrayList<>(capX.length);
-        for (int i = 0; i < capX.length; i++) {
-            out.add(new CapView(i, capX[i], capY[i], capR[i], capHeldBy[i]));
+        return caps.views();
+    }
+
+    /**
+     * @return for each named region, in arena order, how many caps lie on the floor with their
+     *     centre inside it
+     */
+    public java.util.Map<String, Integer> capsInRegions() {
+        java.util.Map<String, Integer> out = new java.util.LinkedHashMap<>();
+        for (org.kheperasim.sim.arena.Region region : arena.regions()) {
+            int n = 0;
+            for (int i = 0; i < caps.count(); i++) {
+                if (caps.heldBy(i) < 0 && region.contains(caps.x(i), caps.y(i))) {
+                    n++;
+                }
+            }
+            out.put(region.name(), n);
         }
         return out;
     }

@@ -476,14 +476,14 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     @Override
     public void setArm(ArmPosition position) {
         enter();
-        robot.commandArm(position);
+        robot.commandArm(now, position);
         leave();
     }
 
     @Override
     public ArmPosition armPosition() {
         enter();
-        ArmPosition v = robot.arm();
+        ArmPosition v = robot.armRest();
         leave();
         return v;
     }
@@ -491,14 +491,15 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     @Override
     public boolean armMoving() {
         enter();
+        boolean v = robot.armMoving();
         leave();
-        return false;
+        return v;
     }
 
     @Override
     public void setFingers(GripperState fingers) {
         enter();
-        robot.commandFingers(fingers);
+        robot.commandFingers(now, fingers);
         leave();
     }
 
@@ -513,15 +514,17 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     @Override
     public boolean objectPresent() {
         enter();
+        boolean v = robot.objectPresent();
         leave();
-        return false;
+        return v;
     }
 
     @Override
     public int resistivity() {
         enter();
+        int v = robot.resistivity();
         leave();
-        return 0;
+        return v;
     }
 
     @Override

@@ -14,13 +14,17 @@ import org.kheperasim.sim.host.ControllerStatus;
  * @param wallSeconds real time the run took, s
  * @param traceSha256 SHA-256 of the trace, hex; null when no trace was written
  * @param robots per robot results, in engine order
+ * @param capsInRegions for each named region of the arena, in arena order, how many caps lie on
+ *     the floor inside it at the end
+ * @param caps how many caps the arena has
  */
 public record RunResult(long seed, String arena, String controller, double simulatedSeconds, double wallSeconds,
-        String traceSha256, List<RobotResult> robots) {
+        String traceSha256, List<RobotResult> robots, Map<String, Integer> capsInRegions, int caps) {
 
-    /** Copies the list. */
+    /** Copies the list and the map. */
     public RunResult {
         robots = List.copyOf(robots);
+        capsInRegions = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(capsInRegions));
     }
 
     /**

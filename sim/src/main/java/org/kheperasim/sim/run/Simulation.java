@@ -244,7 +244,8 @@ public final class Simulation {
                     r.collisions(), r.visitedPercent(), h.status(),
                     h.failure() == null ? null : h.failure().toString(), r.regionsEntered()));
         }
-        return new RunResult(seed, arena.name(), controllerClass, engine.timeNanos() / 1e9, wall, sha, results);
+        return new RunResult(seed, arena.name(), controllerClass, engine.timeNanos() / 1e9, wall, sha, results,
+                world.capsInRegions(), world.capCount());
     }
 
     private static void moveIntoPlace(Path temp, Path target) {

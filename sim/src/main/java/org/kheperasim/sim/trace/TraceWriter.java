@@ -7,7 +7,10 @@ import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.HexFormat;
+import java.util.List;
 import java.util.Map;
+import org.kheperasim.sim.engine.CapView;
+import org.kheperasim.sim.engine.GripperView;
 import org.kheperasim.sim.engine.RobotView;
 import org.kheperasim.sim.engine.Snapshot;
 import org.kheperasim.sim.engine.SnapshotListener;
@@ -23,18 +26,27 @@ import org.kheperasim.sim.engine.SnapshotListener;
  * # controller org.kheperasim.controllers.WallFollower
  * # settings defaults
  * # sample-ms 50
- * # columns t_s robot x_mm y_mm heading_deg speed_l speed_r enc_l enc_r contact prox0..prox7 light0..light7
- * 0.000 0 150.000 150.000 90.000 0 0 0 0 NONE 15 14 …
+ * # columns t_s robot x_mm y_mm heading_deg speed_l speed_r enc_l enc_r contact prox0..prox7 light0..light7 arm fingers object held_cap
+ * # caps t_s cap id x_mm y_mm held_by
+ * 0.000 0 150.000 150.000 90.000 0 0 0 0 NONE 15 14 … 180 OPEN 0 -1
+ * 0.000 cap 0 300.000 420.000 -1
  * </pre>
+ *
+ * <p>A cap line is written at the first sample and then only when the cap has moved, been
+ * picked up or put down since the last sample.
  */
 public final class TraceWriter implements SnapshotListener, AutoCloseable {
     /** The trace format's version. */
-    public static final int FORMAT_VERSION = 1;
+    public static final int FORMAT_VERSION = 2;
 
     private final Writer out;
     private final MessageDigest digest;
     private final StringBuilder line = new StringBuilder(256);
     private String sha256;
+    private double[] capX = new double[0];
+    private double[] capY = new double[0];
+    private int[] capHeld = new int[0];
+    private boolean first = true;
 
     /**
      * @param out where the text goes (the writer is closed with this one)
@@ -51,7 +63,8 @@ public final class TraceWriter implements SnapshotListener, AutoCloseable {
         header.forEach((k, v) -> write("# " + k + " " + v + "\n"));
         write("# columns t_s robot x_mm y_mm heading_deg speed_l speed_r enc_l enc_r contact"
                 + " prox0 prox1 prox2 prox3 prox4 prox5 prox6 prox7"
-                + " light0 light1 light2 light3 light4 light5 light6 light7\n");
+                + " light0 light1 light2 light3 light4 light5 light6 light7 arm fingers object held_cap\n");
+        write("# caps t_s cap id x_mm y_mm held_by\n");
     }
 
     @Override
@@ -71,9 +84,33 @@ public final class TraceWriter implements SnapshotListener, AutoCloseable {
             for (int i = 0; i < 8; i++) {
                 line.append(' ').append(r.light(i));
             }
+            GripperView g = r.gripper();
+            line.append(' ').append(g.armPosition()).append(' ').append(g.fingers().name()).append(' ')
+                    .append(g.objectPresent() ? 1 : 0).append(' ').append(g.heldCap());
             line.append('\n');
             write(line.toString());
         }
+        List<CapView> caps = snapshot.caps();
+        if (caps.size() != capX.length) {
+            capX = new double[caps.size()];
+            capY = new double[caps.size()];
+            capHeld = new int[caps.size()];
+            first = true;
+        }
+        for (CapView c : caps) {
+            int i = c.id();
+            if (first || c.x() != capX[i] || c.y() != capY[i] || c.heldBy() != capHeld[i]) {
+                capX[i] = c.x();
+                capY[i] = c.y();
+                capHeld[i] = c.heldBy();
+                line.setLength(0);
+                Fixed.append(line, snapshot.timeNanos() / 1e9, 3).append(" cap ").append(i).append(' ');
+                Fixed.append(line, c.x(), 3).append(' ');
+                Fixed.append(line, c.y(), 3).append(' ').append(c.heldBy()).append('\n');
+                write(line.toString());
+            }
+        }
+        first = false;
     }
 
     private void write(String text) {

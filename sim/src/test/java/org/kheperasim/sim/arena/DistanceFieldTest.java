@@ -1,7 +1,6 @@
 package org.kheperasim.sim.arena;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.kheperasim.sim.arena.OccupancyGrid.CELL_MM;
 import static org.kheperasim.sim.arena.OccupancyGrid.FLOOR;
@@ -30,12 +29,17 @@ class DistanceFieldTest {
         return g;
     }
 
+    /** Walls and lights are obstacles to the field; caps move and are not. */
+    private static boolean fixed(int id) {
+        return id == WALL || id == OccupancyGrid.LIGHT;
+    }
+
     /** Squared centre distance, in cells, from a cell to the nearest obstacle cell (the ring outside counts). */
     private static long bruteDist2(OccupancyGrid g, int col, int row) {
         long best = Long.MAX_VALUE;
         for (int r = -1; r <= g.rows(); r++) {
             for (int c = -1; c <= g.cols(); c++) {
-                if (g.id(c, r) != FLOOR) {
+                if (fixed(g.id(c, r))) {
                     long d = (long) (c - col) * (c - col) + (long) (r - row) * (r - row);
                     best = Math.min(best, d);
                 }
@@ -49,7 +53,7 @@ class DistanceFieldTest {
         double best = Math.min(Math.min(x, y), Math.min(g.cols() * CELL_MM - x, g.rows() * CELL_MM - y));
         for (int r = 0; r < g.rows(); r++) {
             for (int c = 0; c < g.cols(); c++) {
-                if (g.id(c, r) != FLOOR) {
+                if (fixed(g.id(c, r))) {
                     best = Math.min(best, toSquare(x, y, c, r));
                 }
             }
@@ -76,7 +80,7 @@ class DistanceFieldTest {
                 double ny = df.nearestObstacleY(x, y);
                 int nc = g.col(nx);
                 int nr = g.row(ny);
-                assertNotEquals(FLOOR, g.id(nc, nr), "nearest of " + c + "," + r + " is an obstacle");
+                assertTrue(fixed(g.id(nc, nr)), "nearest of " + c + "," + r + " is an obstacle");
                 long d2 = (long) (nc - c) * (nc - c) + (long) (nr - r) * (nr - r);
                 assertEquals(bruteDist2(g, c, r), d2, "cell " + c + "," + r);
                 assertEquals(toSquare(x, y, nc, nr), df.clearance(x, y), EPS);
@@ -127,7 +131,10 @@ class DistanceFieldTest {
         double x = 25.5 * CELL_MM;
         double y = 25.5 * CELL_MM;
         assertEquals(24.5 * CELL_MM, df.clearance(x, y), EPS); // to the grid's right edge
-        g.set(30, 25, 3);
+        g.set(30, 25, OccupancyGrid.FIRST_CAP);
+        df.recompute();
+        assertEquals(24.5 * CELL_MM, df.clearance(x, y), EPS); // caps are not in the field
+        g.set(30, 25, WALL);
         assertEquals(24.5 * CELL_MM, df.clearance(x, y), EPS); // a snapshot until recomputed
         df.recompute();
         assertEquals(4.5 * CELL_MM, df.clearance(x, y), EPS);
