@@ -117,6 +117,67 @@ public abstract class Controller extends Thread {
         return robot.getGripper();
     }
 
+    /**
+     * Lower the gripper arm to the floor and wait until it is there (about a second). Returns
+     * early if the controller is asked to stop.
+     */
+    protected final void lowerArm() {
+        gripper().lowerArm();
+        awaitArm(ArmPosition.DOWN);
+    }
+
+    /** Raise the gripper arm and wait until it is up. Returns early if the controller is asked to stop. */
+    protected final void raiseArm() {
+        gripper().raiseArm();
+        awaitArm(ArmPosition.UP);
+    }
+
+    /**
+     * Close the fingers on whatever is between them and wait until they have closed.
+     *
+     * @return true when they hold something (the optical barrier between them is broken)
+     */
+    protected final boolean grab() {
+        gripper().closeGripper();
+        awaitFingers(GripperState.CLOSED);
+        return gripper().isObjectPresent();
+    }
+
+    /** Open the fingers, letting go of what they hold, and wait until they are open. */
+    protected final void release() {
+        gripper().openGripper();
+        awaitFingers(GripperState.OPEN);
+    }
+
+    /** @return true when something is between the fingers (the optical barrier is broken) */
+    protected final boolean objectBetweenFingers() {
+        return gripper().isObjectPresent();
+    }
+
+    /** How long the plain gripper verbs wait for the turret before giving up, ms of robot time. */
+    private static final long TURRET_PATIENCE_MS = 10_000;
+    private static final long TURRET_POLL_MS = 20;
+
+    private void awaitArm(ArmPosition target) {
+        Gripper g = gripper();
+        for (long waited = 0; active && waited < TURRET_PATIENCE_MS; waited += TURRET_POLL_MS) {
+            if (g.getArmPosition() == target && !g.isArmMoving()) {
+                return;
+            }
+            sleepMillis(TURRET_POLL_MS);
+        }
+    }
+
+    private void awaitFingers(GripperState target) {
+        Gripper g = gripper();
+        for (long waited = 0; active && waited < TURRET_PATIENCE_MS; waited += TURRET_POLL_MS) {
+            if (g.getGripperState() == target) {
+                return;
+            }
+            sleepMillis(TURRET_POLL_MS);
+        }
+    }
+
     /** @return the robot's live state */
     protected final CurrentRobotState robot() {
         return robot;

@@ -216,7 +216,7 @@ public final class OccupancyGrid {
      *         within {@code maxDist}
      */
     public double castRay(double x, double y, double dirX, double dirY, double maxDist, RayHit hit) {
-        return march(x, y, dirX, dirY, maxDist, FLOOR, hit);
+        return march(x, y, dirX, dirY, maxDist, FLOOR, false, hit);
     }
 
     /**
@@ -240,21 +240,42 @@ public final class OccupancyGrid {
             int id = idAt(x1, y1);
             return id == FLOOR || id == transparentId;
         }
-        return march(x1, y1, dx / len, dy / len, len, transparentId, null) == Double.POSITIVE_INFINITY;
+        return march(x1, y1, dx / len, dy / len, len, transparentId, false, null) == Double.POSITIVE_INFINITY;
+    }
+
+    /**
+     * Whether a lamp's light crosses a straight line: only walls (and the outside) block it. Caps
+     * are too low to shade a sensor, and the lamp's own body does not hide it.
+     *
+     * @param x1 start, mm
+     * @param y1 start, mm
+     * @param x2 end, mm
+     * @param y2 end, mm
+     * @return true if no wall cell lies on the segment
+     */
+    public boolean lightReaches(double x1, double y1, double x2, double y2) {
+        double dx = x2 - x1;
+        double dy = y2 - y1;
+        double len = Math.sqrt(dx * dx + dy * dy);
+        if (len == 0) {
+            return id(col(x1), row(y1)) != WALL;
+        }
+        return march(x1, y1, dx / len, dy / len, len, LIGHT, true, null) == Double.POSITIVE_INFINITY;
     }
 
     /**
      * The grid traversal behind {@link #castRay} and {@link #clearLine}: the distance to the first
-     * cell whose id is neither FLOOR nor {@code transparentId}. Each boundary distance is computed
+     * cell whose id is neither FLOOR nor {@code transparentId} (nor a cap's, when caps are
+     * transparent). Each boundary distance is computed
      * from the boundary's position rather than accumulated, so a face on a cell boundary is found
      * at its exact distance.
      */
     private double march(double x, double y, double dirX, double dirY, double maxDist,
-                         int transparentId, RayHit hit) {
+                         int transparentId, boolean capsTransparent, RayHit hit) {
         int c = col(x);
         int r = row(y);
         int id = id(c, r);
-        if (id != FLOOR && id != transparentId) {
+        if (id != FLOOR && id != transparentId && !(capsTransparent && id >= FIRST_CAP)) {
             return record(hit, 0, id, c, r);
         }
         int stepC = dirX > 0 ? 1 : dirX < 0 ? -1 : 0;
@@ -279,7 +300,7 @@ public final class OccupancyGrid {
                 return record(hit, Double.POSITIVE_INFINITY, FLOOR, -1, -1);
             }
             id = id(c, r);
-            if (id != FLOOR && id != transparentId) {
+            if (id != FLOOR && id != transparentId && !(capsTransparent && id >= FIRST_CAP)) {
                 return record(hit, t > 0 ? t : 0, id, c, r);
             }
         }

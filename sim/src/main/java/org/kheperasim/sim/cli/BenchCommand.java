@@ -4,6 +4,12 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.arena.Cap;
+import org.kheperasim.sim.arena.DistanceField;
+import org.kheperasim.sim.arena.OccupancyGrid;
+import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
 import picocli.CommandLine.Command;
@@ -33,10 +39,18 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--seed", defaultValue = "1", description = "seed of the first run; each run adds one (default: ${DEFAULT-VALUE})")
     long seed;
 
+    @Option(names = "--add-caps", defaultValue = "0", paramLabel = "N",
+            description = "scatter N more caps over the arena's free floor, on an even lattice (default: ${DEFAULT-VALUE})")
+    int addCaps;
+
+    private Arena scenario;
+
     @Override
     public Integer call() {
-        System.out.printf(Locale.ROOT, "benchmark: %s in %s, %.0f simulated s per run, %d runs after a warm-up, %d cores, %s%n",
-                controller, arena, seconds, runs, Runtime.getRuntime().availableProcessors(),
+        scenario = withCaps(ArenaFormat.resolve(arena), addCaps);
+        System.out.printf(Locale.ROOT, "benchmark: %s in %s with %d caps, %.0f simulated s per run, %d runs after a warm-up,"
+                + " %d cores, %s%n", controller, arena, scenario.caps().size(), seconds, runs,
+                Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
         run(seed - 1);
         List<Double> factors = new ArrayList<>();
@@ -54,6 +68,60 @@ final class BenchCommand implements Callable<Integer> {
     }
 
     private RunResult run(long runSeed) {
-        return Simulation.builder().arena(arena).controller(controller).seconds(seconds).seed(runSeed).run();
+        return Simulation.builder().arena(scenario).controller(controller).seconds(seconds).seed(runSeed).run();
+    }
+
+    /**
+     * The arena with {@code n} more caps on the floor: lattice points over the whole arena, kept
+     * where a cap is clear of walls, lights, other caps and the robots' start poses, taken in an
+     * order that spreads them out.
+     */
+    static Arena withCaps(Arena arena, int n) {
+        if (n <= 0) {
+            return arena;
+        }
+        DistanceField field = DistanceField.of(OccupancyGrid.of(arena));
+        List<Cap> caps = new ArrayList<>(arena.caps());
+        int side = 2;
+        while (true) {
+            List<Cap> found = new ArrayList<>();
+            for (int i = 0; i < side && found.size() < n; i++) {
+                for (int j = 0; j < side && found.size() < n; j++) {
+                    double x = arena.width() * (i + 0.5) / side;
+                    double y = arena.height() * (j + 0.5) / side;
+                    if (clear(arena, field, caps, found, x, y)) {
+                        found.add(new Cap(x, y));
+                    }
+                }
+            }
+            if (found.size() == n) {
+                caps.addAll(found);
+                return new Arena(arena.name(), arena.width(), arena.height(), arena.robots(), arena.walls(),
+                        arena.lights(), caps, arena.regions());
+            }
+            if (side > 200) {
+                throw new IllegalArgumentException("no room for " + n + " more caps in " + arena.name());
+            }
+            side++;
+        }
+    }
+
+    private static boolean clear(Arena arena, DistanceField field, List<Cap> a, List<Cap> b, double x, double y) {
+        if (field.preciseClearance(x, y) < 3 * Cap.DEFAULT_RADIUS) {
+            return false;
+        }
+        for (Pose p : arena.robots()) {
+            if (StrictMath.hypot(p.x() - x, p.y() - y) < 80) {
+                return false;
+            }
+        }
+        for (List<Cap> list : List.of(a, b)) {
+            for (Cap c : list) {
+                if (StrictMath.hypot(c.x() - x, c.y() - y) < 4 * Cap.DEFAULT_RADIUS) {
+                    return false;
+                }
+            }
+        }
+        return true;
     }
 }

@@ -977,7 +977,7 @@ public final class SimRobot {
                 return 0;
             }
         }
-        if (!grid.clearLine(px, py, light.x(), light.y(), OccupancyGrid.LIGHT)) {
+        if (!grid.lightReaches(px, py, light.x(), light.y())) {
             return 0;
         }
         double falloff = 1 - r / light.range();

@@ -217,6 +217,11 @@ class OccupancyGridTest {
         assertFalse(g.clearLine(200, 800, 800, 800, LIGHT)); // the cap is in the way
         assertTrue(g.clearLine(400, 400, 400, 400, LIGHT));
         assertFalse(g.clearLine(500, 400, 500, 400, LIGHT));
+        // Light itself passes over caps (too low to shade a sensor) but not through walls.
+        assertTrue(g.lightReaches(200, 800, 800, 800));
+        assertTrue(g.lightReaches(600, 500, 800, 800));
+        assertFalse(g.lightReaches(200, 300, 800, 300));
+        assertFalse(g.lightReaches(500, 400, 500, 400));
     }
 
     @Test
