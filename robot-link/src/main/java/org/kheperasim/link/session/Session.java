@@ -77,6 +77,7 @@ public final class Session implements AutoCloseable {
     private final LongAdder retries = new LongAdder();
     private final LongAdder skippedLines = new LongAdder();
     private final LongAdder discardedChars = new LongAdder();
+    private final LongAdder foreignLines = new LongAdder();
     private long rttSum;
     private long rttMax;
     private volatile String lastSent;
@@ -173,6 +174,9 @@ public final class Session implements AutoCloseable {
                         return reply;
                     } catch (ProtocolException e) {
                         skippedLines.increment();
+                        if (!looksLikeReply(got)) {
+                            foreignLines.increment();
+                        }
                         if (e.kind() == ProtocolException.Kind.COMMAND_NOT_FOUND
                                 || e.kind() == ProtocolException.Kind.ROBOT_ERROR) {
                             refusal = e;
@@ -236,6 +240,22 @@ public final class Session implements AutoCloseable {
             wait = quietMillis;
         }
         return got;
+    }
+
+    /**
+     * Lines that were neither a reply nor an error reply: a boot banner (the robot was reset and has
+     * forgotten its speeds) or noise. A caller that keeps state on the robot sends it again when this grows.
+     *
+     * @return how many such lines were skipped while waiting for replies
+     */
+    public long foreignLines() {
+        return foreignLines.sum();
+    }
+
+    private static boolean looksLikeReply(String line) {
+        return line.equals(KheperaProtocol.COMMAND_NOT_FOUND)
+                || (!line.isEmpty() && line.charAt(0) >= 'a' && line.charAt(0) <= 'z'
+                        && (line.length() == 1 || line.charAt(1) == ','));
     }
 
     /** @return the last line written to the link, or null */
