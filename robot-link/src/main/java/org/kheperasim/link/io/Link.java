@@ -37,6 +37,31 @@ public interface Link extends AutoCloseable {
      */
     int discardInput() throws IOException;
 
+    /**
+     * Run {@code hook} when the JVM exits (Ctrl-C, a kill), while this link can still carry a last
+     * command. Serial ports need this: jSerialComm shuts its ports down at exit, and runs the hooks
+     * given to it first.
+     *
+     * @param hook an unstarted thread; it must do nothing when its work was already done
+     */
+    default void addExitHook(Thread hook) {
+        Runtime.getRuntime().addShutdownHook(hook);
+    }
+
+    /**
+     * Withdraw an exit hook where the link allows it (a serial port's stays registered, so it must
+     * be harmless to run twice).
+     *
+     * @param hook a hook given to {@link #addExitHook}
+     */
+    default void removeExitHook(Thread hook) {
+        try {
+            Runtime.getRuntime().removeShutdownHook(hook);
+        } catch (IllegalStateException e) {
+            // the JVM is already exiting: the hook is running or has run
+        }
+    }
+
     /** @return what this link is connected to, for messages (e.g. {@code /dev/ttyUSB0 at 38400 baud}) */
     String describe();
 

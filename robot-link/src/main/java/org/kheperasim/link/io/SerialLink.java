@@ -131,6 +131,17 @@ public final class SerialLink extends ByteLink {
     }
 
     @Override
+    public void addExitHook(Thread hook) {
+        // jSerialComm runs these before it closes its ports at exit; a plain JVM hook would race it.
+        SerialPort.addShutdownHook(hook);
+    }
+
+    @Override
+    public void removeExitHook(Thread hook) {
+        // jSerialComm cannot withdraw one: the hook stays, and does nothing once the robot is stopped.
+    }
+
+    @Override
     public String describe() {
         return settings.path() + " at " + settings.baud() + " baud";
     }

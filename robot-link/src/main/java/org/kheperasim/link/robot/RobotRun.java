@@ -85,7 +85,7 @@ public final class RobotRun {
             requestStop("the program is exiting (Ctrl-C?)");
             backend.stop();
         }, "khepera-stop-on-exit");
-        Runtime.getRuntime().addShutdownHook(hook);
+        backend.session().link().addExitHook(hook);
         try {
             RobotBackend b = backend;
             Thread controller = Controllers.instantiate(type, new CurrentRobotState(b), new MessagePasser(
@@ -142,11 +142,7 @@ public final class RobotRun {
             return new Result(end, detail, backend.pollRateHz(), backend.session().stats(), acknowledged, thrown);
         } finally {
             backend.stop();
-            try {
-                Runtime.getRuntime().removeShutdownHook(hook);
-            } catch (IllegalStateException e) {
-                // the JVM is already shutting down: the hook is running or has run
-            }
+            backend.session().link().removeExitHook(hook);
         }
     }
 
