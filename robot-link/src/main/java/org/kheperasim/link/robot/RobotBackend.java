@@ -58,6 +58,7 @@ public final class RobotBackend implements RobotPort {
     private volatile SessionException failure;
     private volatile long cycles;
     private volatile long startNanos;
+    private volatile long endNanos;
     private volatile Consumer<Sample> sampleListener = s -> { };
     private final Object stopLock = new Object();
     private Boolean stopAcknowledged;
@@ -192,6 +193,7 @@ public final class RobotBackend implements RobotPort {
             }
             stopped = true;
             running = false;
+            endNanos = System.nanoTime();
             if (Thread.currentThread() != poller) {
                 try {
                     poller.join(5000);
@@ -240,7 +242,7 @@ public final class RobotBackend implements RobotPort {
 
     /** @return complete poll cycles per second since polling started */
     public double pollRateHz() {
-        long elapsed = System.nanoTime() - startNanos;
+        long elapsed = (endNanos != 0 ? endNanos : System.nanoTime()) - startNanos;
         return elapsed <= 0 ? 0 : cycles * 1e9 / elapsed;
     }
 
@@ -268,13 +270,22 @@ public final class RobotBackend implements RobotPort {
 
     // ------------------------------------------------------------------ RobotPort
 
+    /** After the stop, a controller still reading sensors or sleeping is unwound (see {@link ControllerStoppedError}). */
+    private void unwindIfStopped() {
+        if (stopped && Thread.currentThread() != poller) {
+            throw new ControllerStoppedError();
+        }
+    }
+
     @Override
     public int proximity(int index) {
+        unwindIfStopped();
         return proximity[index];
     }
 
     @Override
     public int ambientLight(int index) {
+        unwindIfStopped();
         return light[index];
     }
 
@@ -307,11 +318,13 @@ public final class RobotBackend implements RobotPort {
 
     @Override
     public int leftPosition() {
+        unwindIfStopped();
         return leftPosition;
     }
 
     @Override
     public int rightPosition() {
+        unwindIfStopped();
         return rightPosition;
     }
 
@@ -394,6 +407,7 @@ public final class RobotBackend implements RobotPort {
 
     @Override
     public void sleep(long millis) throws InterruptedException {
+        unwindIfStopped();
         Thread.sleep(millis);
     }
 

@@ -91,7 +91,11 @@ public final class RobotRun {
             Thread controller = Controllers.instantiate(type, new CurrentRobotState(b), new MessagePasser(
                     new ForwardingMessages(b, say)));
             controller.setDaemon(true);
-            controller.setUncaughtExceptionHandler((t, e) -> thrown = e);
+            controller.setUncaughtExceptionHandler((t, e) -> {
+                if (!(e instanceof ControllerStoppedError)) {
+                    thrown = e;
+                }
+            });
             try {
                 backend.start(10_000);
             } catch (SessionException e) {
