@@ -1,0 +1,106 @@
+package org.kheperasim.link.cli;
+
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import org.kheperasim.link.robot.ControllerLoader;
+import org.kheperasim.link.robot.Recorder;
+import org.kheperasim.link.robot.RobotBackend;
+import org.kheperasim.link.robot.RobotRun;
+import org.kheperasim.link.robot.RobotSettings;
+import org.kheperasim.link.session.Session;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/** {@code run}: a controller drives the robot. */
+@Command(name = "run", description = "Run a controller on the robot until it ends, --seconds pass, or Ctrl-C."
+        + " The robot is sent D,0,0 on every way out.")
+final class RunCommand implements Callable<Integer> {
+    @Spec
+    CommandSpec spec;
+
+    @Mixin
+    Connection connection;
+
+    @Option(names = "--controller", required = true, paramLabel = "NAME",
+            description = "A bundled controller (WallFollower, Braitenberg, Template) or a class on --classpath.")
+    String controller;
+
+    @Option(names = "--classpath", paramLabel = "DIR_OR_JAR", split = "${sys:path.separator}",
+            description = "Folders and jars with your compiled controller.")
+    List<Path> classpath = new ArrayList<>();
+
+    @Option(names = "--seconds", paramLabel = "T", description = "Stop after T seconds (default: run until the controller ends or Ctrl-C).")
+    double seconds;
+
+    @Option(names = "--record", paramLabel = "FILE", description = "Write every poll cycle to FILE (text).")
+    Path record;
+
+    @Option(names = "--max-speed", defaultValue = "" + RobotSettings.DEFAULT_MAX_SPEED, paramLabel = "UNITS",
+            description = "Speed clamp, 0..127 units of about 8 mm/s. Default: ${DEFAULT-VALUE}.")
+    int maxSpeed;
+
+    @Option(names = "--gripper", description = "A gripper turret is fitted: poll it and send its commands.")
+    boolean gripper;
+
+    @Option(names = "--park-gripper", description = "On stop, open the fingers and raise the arm (with --gripper).")
+    boolean parkGripper;
+
+    @Override
+    public Integer call() throws Exception {
+        PrintWriter out = spec.commandLine().getOut();
+        RobotSettings settings = RobotSettings.defaults().withMaxSpeed(maxSpeed).withGripper(gripper, parkGripper);
+        Class<?> type = new ControllerLoader(classpath).load(controller);
+        try (Session session = connection.open(out)) {
+            Session.Versions v = session.open();
+            out.println("robot answers: BIOS " + v.bios() + ", protocol " + v.protocol());
+            out.println("running " + type.getName() + (seconds > 0 ? " for " + seconds + " s" : " until it ends or Ctrl-C")
+                    + "; speed clamp ±" + maxSpeed);
+            out.flush();
+            RobotBackend backend = new RobotBackend(session, settings, line -> {
+                out.println(line);
+                out.flush();
+            });
+            Recorder recorder = null;
+            if (record != null) {
+                recorder = new Recorder(record, "controller " + type.getName() + ", port " + connection.port
+                        + ", " + connection.baud + " baud");
+                backend.onSample(recorder);
+            }
+            RobotRun.Result r;
+            try {
+                r = new RobotRun(backend, type, line -> {
+                    out.println(line);
+                    out.flush();
+                }).run((long) (seconds * 1000));
+            } finally {
+                if (recorder != null) {
+                    recorder.close();
+                }
+            }
+            out.println("ended: " + r.detail());
+            out.println(String.format(Locale.ROOT, "poll rate %.1f cycles/s; %d exchanges, %d retries, %d lines skipped;"
+                    + " mean round trip %.2f ms", r.pollRateHz(), r.stats().exchanges(), r.stats().retries(),
+                    r.stats().skippedLines(), r.stats().meanRoundTripNanos() / 1e6));
+            out.println(r.stopAcknowledged() ? "robot stopped (D,0,0 acknowledged)"
+                    : "D,0,0 was sent but not acknowledged: CHECK THE ROBOT HAS STOPPED");
+            if (record != null) {
+                out.println("recorded to " + record.toAbsolutePath());
+            }
+            if (r.failure() != null) {
+                r.failure().printStackTrace(out);
+            }
+            out.flush();
+            return switch (r.end()) {
+                case FINISHED, TIME_UP, STOPPED -> 0;
+                case FAILED, LINK_LOST -> 1;
+            };
+        }
+    }
+}

@@ -1,0 +1,97 @@
+package org.kheperasim.link.protocol;
+
+/**
+ * A command for a turret, sent inside {@code T,id,<cmd>}. The gripper turret's commands are
+ * typed; any other text is carried as {@link Raw}.
+ */
+public sealed interface TurretCommand {
+
+    /** @return the command letter, upper case */
+    char letter();
+
+    /** @return the command text after {@code T,id,}, e.g. {@code E,190} */
+    String encode();
+
+    /** @return how many values follow {@code t,id,x} in the reply; -1 when unknown */
+    int replyValueCount();
+
+    /** Arm position at or above which ({@code <=}) the arm counts as up: larger values are lower. */
+    int ARM_UP = 180;
+    /** The usual arm-down position. */
+    int ARM_DOWN = 249;
+
+    /** {@code D,0} opens, {@code D,1} closes the fingers; reply {@code t,1,d}. */
+    record Fingers(boolean close) implements TurretCommand {
+        public char letter() { return 'D'; }
+        public String encode() { return "D," + (close ? 1 : 0); }
+        public int replyValueCount() { return 0; }
+    }
+
+    /** {@code E,pos}: move the arm, 0..255, larger = lower (up ≈ 175–190, down ≈ 240–255); reply {@code t,1,e}. */
+    record Arm(int position) implements TurretCommand {
+        /** @param position 0..255 */
+        public Arm {
+            if (position < 0 || position > 255) {
+                throw new IllegalArgumentException("T,1,E: arm position " + position + " is outside 0..255"
+                        + " (larger = lower; up is about 180, down about 250)");
+            }
+        }
+
+        public char letter() { return 'E'; }
+        public String encode() { return "E," + position; }
+        public int replyValueCount() { return 0; }
+    }
+
+    /** {@code F}: resistivity of what is between the fingers; reply {@code t,1,f,v}. */
+    record Resistivity() implements TurretCommand {
+        public char letter() { return 'F'; }
+        public String encode() { return "F"; }
+        public int replyValueCount() { return 1; }
+    }
+
+    /** {@code G}: the optical barrier between the fingers, 0 = nothing there; reply {@code t,1,g,v}. */
+    record Barrier() implements TurretCommand {
+        public char letter() { return 'G'; }
+        public String encode() { return "G"; }
+        public int replyValueCount() { return 1; }
+    }
+
+    /** {@code H,0} gripper, {@code H,1} arm motor position; reply {@code t,1,h,v} (uncertain in the sources). */
+    record MotorPosition(int motor) implements TurretCommand {
+        /** @param motor 0 gripper, 1 arm */
+        public MotorPosition {
+            if (motor != 0 && motor != 1) {
+                throw new IllegalArgumentException("T,1,H: motor " + motor + " must be 0 (gripper) or 1 (arm)");
+            }
+        }
+
+        public char letter() { return 'H'; }
+        public String encode() { return "H," + motor; }
+        public int replyValueCount() { return 1; }
+    }
+
+    /** {@code B}: the turret's version; reply {@code t,1,b,v,r}. */
+    record Version() implements TurretCommand {
+        public char letter() { return 'B'; }
+        public String encode() { return "B"; }
+        public int replyValueCount() { return 2; }
+    }
+
+    /**
+     * Any other turret command, passed through as text (for turrets other than the gripper).
+     *
+     * @param text the command after {@code T,id,}, starting with its letter
+     */
+    record Raw(String text) implements TurretCommand {
+        /** @param text starts with a letter */
+        public Raw {
+            if (text == null || text.isEmpty() || !Character.isLetter(text.charAt(0))) {
+                throw new IllegalArgumentException("T: turret command '" + text + "' must start with a letter");
+            }
+        }
+
+        public char letter() { return Character.toUpperCase(text.charAt(0)); }
+        public String encode() { return text; }
+        public int replyValueCount() { return -1; }
+    }
+}

@@ -1,0 +1,32 @@
+package org.kheperasim.link.robot;
+
+import org.kheperasim.api.ArmPosition;
+import org.kheperasim.api.GripperState;
+import org.kheperasim.api.spi.RobotPort;
+
+/** A {@link RobotPort} that passes every call on; subclasses change one or two. */
+class DelegatingPort implements RobotPort {
+    private final RobotPort target;
+
+    DelegatingPort(RobotPort target) {
+        this.target = target;
+    }
+
+    @Override public int proximity(int index) { return target.proximity(index); }
+    @Override public int ambientLight(int index) { return target.ambientLight(index); }
+    @Override public void setSpeeds(int left, int right) { target.setSpeeds(left, right); }
+    @Override public int leftSpeed() { return target.leftSpeed(); }
+    @Override public int rightSpeed() { return target.rightSpeed(); }
+    @Override public int leftPosition() { return target.leftPosition(); }
+    @Override public int rightPosition() { return target.rightPosition(); }
+    @Override public void setPositions(int left, int right) { target.setPositions(left, right); }
+    @Override public void setArm(ArmPosition position) { target.setArm(position); }
+    @Override public ArmPosition armPosition() { return target.armPosition(); }
+    @Override public boolean armMoving() { return target.armMoving(); }
+    @Override public void setFingers(GripperState state) { target.setFingers(state); }
+    @Override public GripperState fingers() { return target.fingers(); }
+    @Override public boolean objectPresent() { return target.objectPresent(); }
+    @Override public int resistivity() { return target.resistivity(); }
+    @Override public void sleep(long millis) throws InterruptedException { target.sleep(millis); }
+    @Override public void message(String text) { target.message(text); }
+}

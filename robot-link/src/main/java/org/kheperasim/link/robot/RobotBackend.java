@@ -1,0 +1,418 @@
+package org.kheperasim.link.robot;
+
+import java.util.Queue;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import org.kheperasim.api.ArmPosition;
+import org.kheperasim.api.GripperState;
+import org.kheperasim.api.spi.RobotPort;
+import org.kheperasim.link.protocol.Command;
+import org.kheperasim.link.protocol.Reply;
+import org.kheperasim.link.protocol.TurretCommand;
+import org.kheperasim.link.session.Session;
+import org.kheperasim.link.session.SessionException;
+import org.kheperasim.link.timing.LinkTiming;
+import org.kheperasim.link.timing.PollStep;
+
+/**
+ * A real Khepera behind the student API. A poll thread runs the cycle of {@link LinkTiming#POLL_CYCLE}
+ * ({@code N}, {@code O}, {@code H}, then the gripper's barrier and resistivity when one is fitted) as
+ * fast as the link allows, and the API reads the values it last stored. Before each exchange it
+ * sends what the controller changed: a {@code D} when the asked speeds differ from those last sent,
+ * and queued position-counter and gripper commands. So a motor command waits at most one exchange.
+ *
+ * <p>{@link #stop()} ends polling and sends {@code D,0,0} (and parks the gripper if asked); after it,
+ * nothing more is sent, so {@code D,0,0} is the last thing the robot hears.
+ */
+public final class RobotBackend implements RobotPort {
+    private final Session session;
+    private final RobotSettings settings;
+    private final Consumer<String> console;
+    private final Queue<Command> queued = new ConcurrentLinkedQueue<>();
+    private final CountDownLatch firstCycle = new CountDownLatch(1);
+    private final Thread poller;
+
+    private volatile int[] proximity = new int[8];
+    private volatile int[] light = new int[8];
+    private volatile int leftPosition;
+    private volatile int rightPosition;
+    private volatile int askedLeft;
+    private volatile int askedRight;
+    private volatile long wantedSpeeds = pack(0, 0);
+    private volatile long sentSpeeds = Long.MIN_VALUE;
+    private long foreignSeen;
+    private volatile boolean objectPresent;
+    private volatile int resistivity;
+    private volatile GripperState fingers = GripperState.OPEN;
+    private volatile ArmPosition armRest = ArmPosition.UP;
+    private volatile ArmPosition armTarget = ArmPosition.UP;
+    private volatile long armArrivesNanos;
+    private volatile boolean gripperPolled;
+    private volatile boolean clampReported;
+    private volatile boolean gripperWarned;
+
+    private volatile boolean running;
+    private volatile boolean stopped;
+    private volatile SessionException failure;
+    private volatile long cycles;
+    private volatile long startNanos;
+    private volatile long endNanos;
+    private volatile Consumer<Sample> sampleListener = s -> { };
+    private final Object stopLock = new Object();
+    private Boolean stopAcknowledged;
+
+    /**
+     * @param session an open session
+     * @param settings speed clamp and gripper
+     * @param console where controller messages and warnings go, one line each
+     */
+    public RobotBackend(Session session, RobotSettings settings, Consumer<String> console) {
+        this.session = session;
+        this.settings = settings;
+        this.console = console;
+        this.gripperPolled = settings.gripper();
+        this.poller = new Thread(this::poll, "khepera-poll");
+        poller.setDaemon(true);
+    }
+
+    /** @param listener called on the poll thread after every cycle (a recorder) */
+    public void onSample(Consumer<Sample> listener) {
+        sampleListener = listener;
+    }
+
+    /**
+     * Start polling and wait for the first complete cycle, so a controller never sees unread values.
+     *
+     * @param timeoutMillis how long to wait for the first cycle, ms
+     * @throws SessionException when the first cycle fails (the robot does not answer)
+     */
+    public void start(long timeoutMillis) throws SessionException, InterruptedException {
+        running = true;
+        startNanos = System.nanoTime();
+        poller.start();
+        if (!firstCycle.await(timeoutMillis, TimeUnit.MILLISECONDS) && failure == null) {
+            throw new SessionException(SessionException.Kind.NO_REPLY, new Command.ReadProximity(),
+                    "the first poll cycle did not finish in " + timeoutMillis + " ms on " + session.link().describe(), null);
+        }
+        if (failure != null) {
+            throw failure;
+        }
+    }
+
+    private void poll() {
+        try {
+            while (running) {
+                for (PollStep step : LinkTiming.POLL_CYCLE) {
+                    if (!running) {
+                        return;
+                    }
+                    sendChanges();
+                    read(step);
+                }
+                if (gripperPolled) {
+                    sendChanges();
+                    pollGripper();
+                }
+                cycles++;
+                firstCycle.countDown();
+                sampleListener.accept(new Sample(System.nanoTime() - startNanos, proximity, light, leftPosition,
+                        rightPosition, unpackLeft(sentSpeeds), unpackRight(sentSpeeds)));
+            }
+        } catch (SessionException e) {
+            failure = e;
+            running = false;
+            firstCycle.countDown();
+        } catch (RuntimeException e) {
+            failure = new SessionException(SessionException.Kind.LINK_LOST, null, "the poll loop failed: " + e, e);
+            running = false;
+            firstCycle.countDown();
+        }
+    }
+
+    private void read(PollStep step) throws SessionException {
+        switch (step) {
+            case PROXIMITY -> proximity = session.exchange(new Command.ReadProximity()).ints();
+            case LIGHT -> light = session.exchange(new Command.ReadLight()).ints();
+            case ENCODERS -> {
+                int[] v = session.exchange(new Command.ReadPositionCounters()).ints();
+                leftPosition = v[0];
+                rightPosition = v[1];
+            }
+        }
+    }
+
+    private void pollGripper() throws SessionException {
+        try {
+            Reply barrier = session.exchange(Command.Turret.gripper(new TurretCommand.Barrier()));
+            objectPresent = barrier.intValue(0) != 0;
+            Reply res = session.exchange(Command.Turret.gripper(new TurretCommand.Resistivity()));
+            resistivity = res.intValue(0);
+        } catch (SessionException e) {
+            if (e.kind() != SessionException.Kind.REFUSED) {
+                throw e;
+            }
+            gripperPolled = false;
+            console.accept("warning: the robot refused a gripper command (" + e.getMessage()
+                    + "); gripper polling is off. Is the gripper turret fitted?");
+        }
+    }
+
+    /** Send the changed speeds, then queued commands. Runs on the poll thread. */
+    private void sendChanges() throws SessionException {
+        long foreign = session.foreignLines();
+        if (foreign != foreignSeen) {
+            // A banner (a reset robot has stopped its wheels) or noise: say the speeds again.
+            foreignSeen = foreign;
+            sentSpeeds = Long.MIN_VALUE;
+        }
+        long wanted = wantedSpeeds;
+        if (wanted != sentSpeeds) {
+            session.exchange(new Command.SetSpeed(unpackLeft(wanted), unpackRight(wanted)));
+            sentSpeeds = wanted;
+        }
+        Command c;
+        while ((c = queued.poll()) != null) {
+            session.exchange(c);
+        }
+    }
+
+    /**
+     * Stop the robot: end polling, then send {@code D,0,0} (park the gripper and send {@code D,0,0}
+     * again if asked). Safe to call from any thread, more than once; the first call does the work,
+     * later calls wait for it.
+     *
+     * @return true when the robot acknowledged the stop, false when it was sent without an answer
+     *     (or could not be sent: the link has gone)
+     */
+    public boolean stop() {
+        synchronized (stopLock) {
+            if (stopAcknowledged != null) {
+                return stopAcknowledged;
+            }
+            stopped = true;
+            running = false;
+            endNanos = System.nanoTime();
+            if (Thread.currentThread() != poller) {
+                try {
+                    poller.join(5000);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }
+            boolean ok = sendStop();
+            if (settings.parkGripperOnStop() && settings.gripper() && !session.isLost()) {
+                try {
+                    session.exchange(Command.Turret.gripper(new TurretCommand.Fingers(false)));
+                    session.exchange(Command.Turret.gripper(new TurretCommand.Arm(settings.armUp())));
+                } catch (SessionException e) {
+                    console.accept("warning: could not park the gripper: " + e.getMessage());
+                }
+                ok = sendStop();
+            }
+            stopAcknowledged = ok;
+            return ok;
+        }
+    }
+
+    private boolean sendStop() {
+        if (!session.isLost()) {
+            try {
+                session.exchange(Command.SetSpeed.STOP);
+                sentSpeeds = pack(0, 0);
+                return true;
+            } catch (SessionException e) {
+                // fall through: say it anyway, the robot may hear without being heard
+            }
+        }
+        session.sendBlind(Command.SetSpeed.STOP);
+        return false;
+    }
+
+    /** @return why polling ended early (the link failed), or null */
+    public SessionException failure() {
+        return failure;
+    }
+
+    /** @return true while the poll loop runs */
+    public boolean isPolling() {
+        return running && poller.isAlive();
+    }
+
+    /** @return complete poll cycles per second since polling started */
+    public double pollRateHz() {
+        long elapsed = (endNanos != 0 ? endNanos : System.nanoTime()) - startNanos;
+        return elapsed <= 0 ? 0 : cycles * 1e9 / elapsed;
+    }
+
+    /** @return complete poll cycles so far */
+    public long cycles() {
+        return cycles;
+    }
+
+    /** @return the session */
+    public Session session() {
+        return session;
+    }
+
+    private static long pack(int left, int right) {
+        return ((long) left << 32) | (right & 0xffffffffL);
+    }
+
+    private static int unpackLeft(long packed) {
+        return packed == Long.MIN_VALUE ? 0 : (int) (packed >> 32);
+    }
+
+    private static int unpackRight(long packed) {
+        return packed == Long.MIN_VALUE ? 0 : (int) packed;
+    }
+
+    // ------------------------------------------------------------------ RobotPort
+
+    /** After the stop, a controller still reading sensors or sleeping is unwound (see {@link ControllerStoppedError}). */
+    private void unwindIfStopped() {
+        if (stopped && Thread.currentThread() != poller) {
+            throw new ControllerStoppedError();
+        }
+    }
+
+    @Override
+    public int proximity(int index) {
+        unwindIfStopped();
+        return proximity[index];
+    }
+
+    @Override
+    public int ambientLight(int index) {
+        unwindIfStopped();
+        return light[index];
+    }
+
+    @Override
+    public void setSpeeds(int left, int right) {
+        askedLeft = left;
+        askedRight = right;
+        int max = settings.maxSpeed();
+        int l = Math.max(-max, Math.min(max, left));
+        int r = Math.max(-max, Math.min(max, right));
+        if ((l != left || r != right) && !clampReported) {
+            clampReported = true;
+            console.accept("note: speeds (" + left + ", " + right + ") were limited to ±" + max
+                    + " units by the speed clamp (--max-speed); this is reported once");
+        }
+        if (!stopped) {
+            wantedSpeeds = pack(l, r);
+        }
+    }
+
+    @Override
+    public int leftSpeed() {
+        return askedLeft;
+    }
+
+    @Override
+    public int rightSpeed() {
+        return askedRight;
+    }
+
+    @Override
+    public int leftPosition() {
+        unwindIfStopped();
+        return leftPosition;
+    }
+
+    @Override
+    public int rightPosition() {
+        unwindIfStopped();
+        return rightPosition;
+    }
+
+    @Override
+    public void setPositions(int left, int right) {
+        if (!stopped) {
+            queued.add(new Command.SetPositionCounters(left, right));
+        }
+    }
+
+    private boolean gripperUsable() {
+        if (settings.gripper()) {
+            return true;
+        }
+        if (!gripperWarned) {
+            gripperWarned = true;
+            console.accept("warning: the controller uses the gripper, but robot-link was started without --gripper;"
+                    + " gripper commands are not sent");
+        }
+        return false;
+    }
+
+    @Override
+    public void setArm(ArmPosition position) {
+        if (stopped || !gripperUsable()) {
+            return;
+        }
+        settleArm();
+        if (position != armTarget) {
+            armTarget = position;
+            armArrivesNanos = System.nanoTime() + settings.armTravelMillis() * 1_000_000L;
+            queued.add(Command.Turret.gripper(new TurretCommand.Arm(
+                    position == ArmPosition.UP ? settings.armUp() : settings.armDown())));
+        }
+    }
+
+    private void settleArm() {
+        if (armRest != armTarget && System.nanoTime() >= armArrivesNanos) {
+            armRest = armTarget;
+        }
+    }
+
+    @Override
+    public ArmPosition armPosition() {
+        settleArm();
+        return armRest;
+    }
+
+    @Override
+    public boolean armMoving() {
+        settleArm();
+        return armRest != armTarget;
+    }
+
+    @Override
+    public void setFingers(GripperState state) {
+        if (stopped || !gripperUsable()) {
+            return;
+        }
+        if (state != fingers) {
+            fingers = state;
+            queued.add(Command.Turret.gripper(new TurretCommand.Fingers(state == GripperState.CLOSED)));
+        }
+    }
+
+    @Override
+    public GripperState fingers() {
+        return fingers;
+    }
+
+    @Override
+    public boolean objectPresent() {
+        return objectPresent;
+    }
+
+    @Override
+    public int resistivity() {
+        return resistivity;
+    }
+
+    @Override
+    public void sleep(long millis) throws InterruptedException {
+        unwindIfStopped();
+        Thread.sleep(millis);
+    }
+
+    @Override
+    public void message(String text) {
+        console.accept(text);
+    }
+}

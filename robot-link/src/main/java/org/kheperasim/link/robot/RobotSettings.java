@@ -1,0 +1,45 @@
+package org.kheperasim.link.robot;
+
+/**
+ * How the robot backend drives the robot.
+ *
+ * @param maxSpeed the speed clamp: wheel speeds a controller asks for are limited to ±maxSpeed
+ *     speed units (≈ 8 mm/s each) before they are sent
+ * @param gripper whether a gripper turret is fitted: its state is polled and its commands are sent
+ * @param parkGripperOnStop on stop, open the fingers and raise the arm (then stop the wheels again)
+ * @param armUp arm position sent for {@code UP}, 0..255 (larger = lower)
+ * @param armDown arm position sent for {@code DOWN}
+ * @param armTravelMillis how long the arm takes between up and down, ms (the robot does not say)
+ */
+public record RobotSettings(int maxSpeed, boolean gripper, boolean parkGripperOnStop, int armUp, int armDown,
+        long armTravelMillis) {
+
+    /** The default speed clamp: 20 units ≈ 16 cm/s, well below the robot's 127. */
+    public static final int DEFAULT_MAX_SPEED = 20;
+
+    /** Checks the values. */
+    public RobotSettings {
+        if (maxSpeed < 0 || maxSpeed > 127) {
+            throw new IllegalArgumentException("--max-speed " + maxSpeed + " must lie in 0..127 speed units"
+                    + " (1 unit is about 8 mm/s)");
+        }
+        if (armUp < 0 || armUp > 255 || armDown < 0 || armDown > 255) {
+            throw new IllegalArgumentException("arm positions " + armUp + " / " + armDown + " must lie in 0..255");
+        }
+    }
+
+    /** @return clamp 20, no gripper */
+    public static RobotSettings defaults() {
+        return new RobotSettings(DEFAULT_MAX_SPEED, false, false, 180, 249, 1000);
+    }
+
+    /** @param units the clamp @return these settings with it */
+    public RobotSettings withMaxSpeed(int units) {
+        return new RobotSettings(units, gripper, parkGripperOnStop, armUp, armDown, armTravelMillis);
+    }
+
+    /** @param fitted gripper fitted @param park park it on stop @return these settings with them */
+    public RobotSettings withGripper(boolean fitted, boolean park) {
+        return new RobotSettings(maxSpeed, fitted, park, armUp, armDown, armTravelMillis);
+    }
+}

@@ -1,0 +1,295 @@
+package org.kheperasim.link.session;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.LongAdder;
+import org.kheperasim.link.io.Link;
+import org.kheperasim.link.io.LinkClosedException;
+import org.kheperasim.link.protocol.Command;
+import org.kheperasim.link.protocol.KheperaProtocol;
+import org.kheperasim.link.protocol.ProtocolException;
+import org.kheperasim.link.protocol.Reply;
+import org.kheperasim.link.timing.LinkTiming;
+
+/**
+ * One conversation with a robot. The host is master: it sends one command and waits for its reply
+ * before the next ({@link #exchange} is synchronized). Before each command, whatever is waiting on
+ * the line (a late reply, a boot banner, noise) is thrown away; while waiting, lines that do not
+ * start with the command's reply letter are skipped (resynchronisation). A command with no fitting
+ * reply in time is sent again, up to {@link Options#retries} more times.
+ */
+public final class Session implements AutoCloseable {
+
+    /**
+     * @param replyTimeoutMillis how long to wait for a reply beyond its wire time, ms (clients use 100–500)
+     * @param retries how many more times to send a command that got no reply
+     * @param bannerQuietMillis at open, input stops counting as a boot banner after this much silence, ms
+     * @param bannerMaxMillis at open, the longest time spent throwing away a banner, ms
+     */
+    public record Options(long replyTimeoutMillis, int retries, long bannerQuietMillis, long bannerMaxMillis) {
+        /** @return 300 ms timeout, 3 retries, 200 ms of quiet ends a banner, at most 3 s */
+        public static Options defaults() {
+            return new Options(300, 3, 200, 3000);
+        }
+
+        /** Checks the values. */
+        public Options {
+            if (replyTimeoutMillis < 1 || retries < 0 || bannerQuietMillis < 0 || bannerMaxMillis < 0) {
+                throw new IllegalArgumentException("reply timeout must be at least 1 ms and retries not negative: "
+                        + replyTimeoutMillis + " ms, " + retries + " retries");
+            }
+        }
+
+        /** @param millis reply timeout, ms @return these options with it */
+        public Options withReplyTimeout(long millis) {
+            return new Options(millis, retries, bannerQuietMillis, bannerMaxMillis);
+        }
+
+        /** @param n retries @return these options with them */
+        public Options withRetries(int n) {
+            return new Options(replyTimeoutMillis, n, bannerQuietMillis, bannerMaxMillis);
+        }
+    }
+
+    /** The robot's versions from the {@code B} handshake. @param bios BIOS version @param protocol protocol version */
+    public record Versions(String bios, String protocol) {
+    }
+
+    /**
+     * What the session has seen so far.
+     *
+     * @param exchanges commands answered
+     * @param retries commands sent again after no fitting reply in time
+     * @param skippedLines lines thrown away while waiting (stale replies, banners, noise)
+     * @param discardedChars characters thrown away before commands (late replies, noise)
+     * @param meanRoundTripNanos mean time from sending a command to its reply, ns
+     * @param maxRoundTripNanos longest such time, ns
+     */
+    public record Stats(long exchanges, long retries, long skippedLines, long discardedChars,
+            long meanRoundTripNanos, long maxRoundTripNanos) {
+    }
+
+    private final Link link;
+    private final Options options;
+    private final LinkTiming timing;
+    private final LongAdder exchanges = new LongAdder();
+    private final LongAdder retries = new LongAdder();
+    private final LongAdder skippedLines = new LongAdder();
+    private final LongAdder discardedChars = new LongAdder();
+    private final LongAdder foreignLines = new LongAdder();
+    private long rttSum;
+    private long rttMax;
+    private volatile String lastSent;
+    private volatile boolean lost;
+
+    /**
+     * @param link the open link
+     * @param timing the line's timing, to allow each reply its wire time on top of the timeout
+     * @param options timeouts and retries
+     */
+    public Session(Link link, LinkTiming timing, Options options) {
+        this.link = link;
+        this.timing = timing;
+        this.options = options;
+        this.lastSent = null;
+    }
+
+    /** @return the link */
+    public Link link() {
+        return link;
+    }
+
+    /** @return the options */
+    public Options options() {
+        return options;
+    }
+
+    /**
+     * Start the conversation: throw away a boot banner and stale input, then ask the versions.
+     *
+     * @return the robot's versions
+     * @throws SessionException naming the link and what to check when the robot does not answer
+     */
+    public synchronized Versions open() throws SessionException {
+        Command b = new Command.ReadVersion();
+        try {
+            long end = System.nanoTime() + options.bannerMaxMillis() * 1_000_000L;
+            while (System.nanoTime() < end) {
+                String line = link.readLine(options.bannerQuietMillis());
+                if (line == null) {
+                    break;
+                }
+                skippedLines.increment();
+            }
+        } catch (IOException e) {
+            throw lost(b, e);
+        }
+        Reply r;
+        try {
+            r = exchange(b);
+        } catch (SessionException e) {
+            if (e.kind() == SessionException.Kind.NO_REPLY) {
+                throw new SessionException(e.kind(), b, "the robot on " + link.describe() + " does not answer the"
+                        + " version command 'B'. Check that it is switched on, that its mode jumper is on a protocol"
+                        + " mode (1-3, or 8-9 on a Khepera II) and that --baud matches that mode", e);
+            }
+            throw e;
+        }
+        return new Versions(r.values().get(0), r.values().get(1));
+    }
+
+    /**
+     * Send a command and wait for its reply, with retries.
+     *
+     * @param command the command
+     * @return its reply
+     * @throws SessionException naming the command: no reply, an error reply, or the link gone
+     */
+    public synchronized Reply exchange(Command command) throws SessionException {
+        String line = command.encode();
+        long waitNanos = options.replyTimeoutMillis() * 1_000_000L + timing.exchangeNanos(line.length() + 1, 64);
+        ProtocolException refusal = null;
+        int tries = options.retries() + 1;
+        for (int attempt = 0; attempt < tries; attempt++) {
+            if (attempt > 0) {
+                retries.increment();
+            }
+            long sent;
+            try {
+                discardedChars.add(link.discardInput());
+                lastSent = line;
+                link.writeLine(line);
+                sent = System.nanoTime();
+                long deadline = sent + waitNanos;
+                while (true) {
+                    long left = deadline - System.nanoTime();
+                    String got = left <= 0 ? null : link.readLine(Math.max(1, left / 1_000_000L));
+                    if (got == null) {
+                        break;
+                    }
+                    try {
+                        Reply reply = KheperaProtocol.parseReply(command, got);
+                        record(System.nanoTime() - sent);
+                        return reply;
+                    } catch (ProtocolException e) {
+                        skippedLines.increment();
+                        if (!looksLikeReply(got)) {
+                            foreignLines.increment();
+                        }
+                        if (e.kind() == ProtocolException.Kind.COMMAND_NOT_FOUND
+                                || e.kind() == ProtocolException.Kind.ROBOT_ERROR) {
+                            refusal = e;
+                        }
+                        // Noise before our command can draw an error reply too: read on until the time is up.
+                    }
+                }
+            } catch (IOException e) {
+                throw lost(command, e);
+            }
+            if (refusal != null) {
+                throw new SessionException(SessionException.Kind.REFUSED, command,
+                        refusal.getMessage() + " (on " + link.describe() + ")", refusal);
+            }
+        }
+        throw new SessionException(SessionException.Kind.NO_REPLY, command, "no reply to '" + line + "' from "
+                + link.describe() + " after " + tries + " tries of " + waitNanos / 1_000_000L + " ms each; check"
+                + " that the robot is on and the cable is in, or give a longer --timeout", null);
+    }
+
+    /**
+     * Send a command and expect no answer, ignoring failure: the last word to a robot that may no
+     * longer answer (the safety stop when the link is failing).
+     *
+     * @param command the command to send
+     * @return true when it was written to the link
+     */
+    public synchronized boolean sendBlind(Command command) {
+        try {
+            lastSent = command.encode();
+            link.writeLine(lastSent);
+            return true;
+        } catch (IOException e) {
+            return false;
+        }
+    }
+
+    /**
+     * Send a raw line and collect what comes back (the console): lines until {@code quietMillis}
+     * pass without one, for at most {@code maxMillis}.
+     *
+     * @param line any text
+     * @param quietMillis silence that ends the reply, ms
+     * @param maxMillis the longest wait, ms
+     * @return the lines received
+     * @throws IOException when the link has gone
+     */
+    public synchronized List<String> raw(String line, long quietMillis, long maxMillis) throws IOException {
+        discardedChars.add(link.discardInput());
+        lastSent = line;
+        link.writeLine(line);
+        List<String> got = new ArrayList<>();
+        long end = System.nanoTime() + maxMillis * 1_000_000L;
+        long wait = options.replyTimeoutMillis() + timing.wireNanos(line.length() + 80) / 1_000_000L;
+        while (System.nanoTime() < end) {
+            String l = link.readLine(wait);
+            if (l == null) {
+                break;
+            }
+            got.add(l);
+            wait = quietMillis;
+        }
+        return got;
+    }
+
+    /**
+     * Lines that were neither a reply nor an error reply: a boot banner (the robot was reset and has
+     * forgotten its speeds) or noise. A caller that keeps state on the robot sends it again when this grows.
+     *
+     * @return how many such lines were skipped while waiting for replies
+     */
+    public long foreignLines() {
+        return foreignLines.sum();
+    }
+
+    private static boolean looksLikeReply(String line) {
+        return line.equals(KheperaProtocol.COMMAND_NOT_FOUND)
+                || (!line.isEmpty() && line.charAt(0) >= 'a' && line.charAt(0) <= 'z'
+                        && (line.length() == 1 || line.charAt(1) == ','));
+    }
+
+    /** @return the last line written to the link, or null */
+    public String lastSent() {
+        return lastSent;
+    }
+
+    /** @return true once the link has gone */
+    public boolean isLost() {
+        return lost;
+    }
+
+    private SessionException lost(Command command, IOException e) {
+        if (e instanceof LinkClosedException) {
+            lost = true;
+        }
+        return new SessionException(SessionException.Kind.LINK_LOST, command, "lost the link while sending '"
+                + command.encode() + "': " + e.getMessage(), e);
+    }
+
+    private void record(long rtt) {
+        exchanges.increment();
+        rttSum += rtt;
+        rttMax = Math.max(rttMax, rtt);
+    }
+
+    /** @return counts and round-trip times so far */
+    public synchronized Stats stats() {
+        long n = exchanges.sum();
+        return new Stats(n, retries.sum(), skippedLines.sum(), discardedChars.sum(), n == 0 ? 0 : rttSum / n, rttMax);
+    }
+
+    @Override
+    public void close() {
+        link.close();
+    }
+}

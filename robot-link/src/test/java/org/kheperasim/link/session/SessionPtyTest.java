@@ -1,0 +1,137 @@
+package org.kheperasim.link.session;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.kheperasim.link.fake.FakeRobotOnPty;
+import org.kheperasim.link.io.SerialLink;
+import org.kheperasim.link.io.SerialSettings;
+import org.kheperasim.link.protocol.Command;
+import org.kheperasim.link.protocol.Reply;
+import org.kheperasim.link.timing.LinkTiming;
+
+/** The session over a real pty pair, opened through jSerialComm, against the fake robot. */
+@Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+class SessionPtyTest {
+    @TempDir
+    Path dir;
+
+    private static Session session(FakeRobotOnPty fake, Session.Options options) throws Exception {
+        SerialLink link = SerialLink.open(SerialSettings.khepera(fake.hostPath(), 38400));
+        return new Session(link, LinkTiming.atBaud(38400), options);
+    }
+
+    private static Session.Options fast() {
+        return new Session.Options(150, 3, 100, 2000);
+    }
+
+    @Test
+    void throwsAwayTheBootBannerAndReportsTheVersions() throws Exception {
+        try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null); Session s = session(fake, fast())) {
+            fake.robot().sendBanner();
+            Session.Versions v = s.open();
+            assertEquals(new Session.Versions("5.02", "5.01"), v);
+            assertTrue(s.stats().skippedLines() >= 2, "the banner's lines were skipped: " + s.stats());
+        }
+    }
+
+    @Test
+    void survivesNoiseBeforeAReply() throws Exception {
+        try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null); Session s = session(fake, fast())) {
+            s.open();
+            fake.robot().setProximity(1, 2, 3, 4, 5, 6, 7, 8);
+            fake.robot().noiseBeforeNextReply("\u0000\u00ff#%garbage\r\nn,1,2\r\nxx\n");
+            Reply r = s.exchange(new Command.ReadProximity());
+            assertEquals("n,1,2,3,4,5,6,7,8", r.encode());
+            assertEquals(0, s.stats().retries(), "whole noise lines are skipped while waiting");
+            assertTrue(s.stats().skippedLines() >= 3, s.stats().toString());
+            // Noise glued to the front of the reply spoils it: the command is sent again.
+            fake.robot().noiseBeforeNextReply("\u0007zz");
+            assertEquals("n,1,2,3,4,5,6,7,8", s.exchange(new Command.ReadProximity()).encode());
+            assertEquals(1, s.stats().retries());
+        }
+    }
+
+    @Test
+    void resendsACommandWhoseReplyWasDropped() throws Exception {
+        try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null); Session s = session(fake, fast())) {
+            s.open();
+            fake.robot().dropReplies(2);
+            s.exchange(new Command.SetSpeed(5, 5));
+            assertEquals(2, s.stats().retries());
+            assertEquals(3, fake.robot().received().stream().filter("D,5,5"::equals).count());
+        }
+    }
+
+    @Test
+    void aLateReplyDoesNotAnswerTheNextCommand() throws Exception {
+        try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null); Session s = session(fake, fast())) {
+            s.open();
+            fake.robot().setProximity(9, 9, 9, 9, 9, 9, 9, 9);
+            fake.robot().lateReply(250);
+            assertEquals("n,9,9,9,9,9,9,9,9", s.exchange(new Command.ReadProximity()).encode());
+            Thread.sleep(400); // the late reply to the first N is now waiting on the line
+            fake.robot().setProximity(1, 1, 1, 1, 1, 1, 1, 1);
+            assertEquals("n,1,1,1,1,1,1,1,1", s.exchange(new Command.ReadProximity()).encode(),
+                    "the stale reply was thrown away, not taken for the new one");
+        }
+    }
+
+    @Test
+    void aResetMidSessionIsSurvived() throws Exception {
+        try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null); Session s = session(fake, fast())) {
+            s.open();
+            fake.robot().resetAtNextCommand();
+            s.exchange(new Command.SetSpeed(4, 4));
+            assertEquals(1, s.stats().retries(), "the banner did not answer D; D was sent again");
+            assertEquals(4, fake.robot().speeds()[0], "and obeyed after the reset");
+        }
+    }
+
+    @Test
+    void aSilentRobotIsReportedNamingTheCommand() throws Exception {
+        try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null); Session s = session(fake, fast().withRetries(1))) {
+            s.open();
+            fake.robot().setSilent(true);
+            SessionException e = assertThrows(SessionException.class, () -> s.exchange(new Command.ReadLight()));
+            assertEquals(SessionException.Kind.NO_REPLY, e.kind());
+            assertTrue(e.getMessage().contains("'O'") && e.getMessage().contains(fake.hostPath()), e.getMessage());
+        }
+    }
+
+    @Test
+    void anUnknownCommandIsReportedNamingIt() throws Exception {
+        try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null); Session s = session(fake, fast())) {
+            s.open();
+            fake.robot().setGripperFitted(false);
+            Command g = Command.Turret.gripper(new org.kheperasim.link.protocol.TurretCommand.Barrier());
+            SessionException e = assertThrows(SessionException.class, () -> s.exchange(g));
+            assertEquals(SessionException.Kind.REFUSED, e.kind());
+            assertTrue(e.getMessage().contains("'T,1,G'"), e.getMessage());
+            assertEquals(1, fake.robot().received().stream().filter("T,1,G"::equals).count(), "not retried");
+        }
+    }
+
+    @Test
+    void theFarEndVanishingIsReportedAsALostLink() throws Exception {
+        try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null); Session s = session(fake, fast())) {
+            s.open();
+            fake.pty().kill();
+            long start = System.nanoTime();
+            SessionException e = assertThrows(SessionException.class, () -> {
+                for (int i = 0; i < 100; i++) {
+                    s.exchange(new Command.ReadProximity());
+                }
+            });
+            assertEquals(SessionException.Kind.LINK_LOST, e.kind(), e.getMessage());
+            assertTrue(e.getMessage().contains("'N'") && e.getMessage().contains("has gone"), e.getMessage());
+            assertTrue(System.nanoTime() - start < TimeUnit.SECONDS.toNanos(5), "reported promptly");
+        }
+    }
+}
