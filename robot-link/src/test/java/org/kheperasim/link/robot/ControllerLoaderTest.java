@@ -19,7 +19,7 @@ class ControllerLoaderTest {
 
     @Test
     void bundledNamesAreTheSimulators() {
-        assertEquals(List.of("WallFollower", "Braitenberg", "Template"), ControllerLoader.bundled());
+        assertEquals(List.of("WallFollower", "Braitenberg", "Template", "CapGatherer"), ControllerLoader.bundled());
         assertEquals("org.kheperasim.controllers.Braitenberg", new ControllerLoader(List.of()).load("Braitenberg").getName());
     }
 
