@@ -113,6 +113,15 @@ public final class ArenaRenderer {
      */
     public static void draw(Graphics2D g, ViewTransform view, int w, int h, Arena arena, Snapshot snapshot,
             Overlay overlay, Options options) {
+        drawStatic(g, view, w, h, arena, options);
+        drawDynamic(g, view, arena, snapshot, overlay, options);
+    }
+
+    /**
+     * What does not move during a run: floor, grid, regions, lamps and walls. The view caches
+     * this layer in an image and redraws it only when the arena or the zoom changes.
+     */
+    public static void drawStatic(Graphics2D g, ViewTransform view, int w, int h, Arena arena, Options options) {
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
         g.setColor(OUTSIDE);
@@ -142,6 +151,12 @@ public final class ArenaRenderer {
             g.setStroke(new BasicStroke((float) StrictMath.max(1, view.len(wall.thickness())), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
             g.draw(new Line2D.Double(view.sx(wall.x1()), view.sy(wall.y1()), view.sx(wall.x2()), view.sy(wall.y2())));
         }
+    }
+
+    /** What moves: caps, trails, robots, beams, and the editor's overlay. */
+    public static void drawDynamic(Graphics2D g, ViewTransform view, Arena arena, Snapshot snapshot, Overlay overlay, Options options) {
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
         if (snapshot == null || snapshot.caps().size() != arena.caps().size()) {
             for (Cap c : arena.caps()) {
                 drawCap(g, view, c.x(), c.y(), c.radius(), false);

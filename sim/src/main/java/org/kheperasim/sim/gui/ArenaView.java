@@ -5,6 +5,8 @@ import java.awt.Dimension;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
 import java.awt.event.MouseAdapter;
+import java.awt.image.BufferedImage;
+import org.kheperasim.sim.arena.Arena;
 import java.awt.event.MouseEvent;
 import java.awt.event.MouseWheelEvent;
 import java.util.ArrayList;
@@ -34,6 +36,8 @@ final class ArenaView extends JComponent {
     private int panY;
     private boolean panning;
     private long frames;
+    private BufferedImage background;
+    private String backgroundKey;
 
     ArenaView(EditorModel model, EditGestures gestures, Supplier<Snapshot> snapshot, Supplier<List<float[]>> trails) {
         this.model = model;
@@ -155,7 +159,18 @@ final class ArenaView extends JComponent {
         Graphics2D g2 = (Graphics2D) g.create();
         try {
             List<float[]> t = options.trail() ? trails.get() : new ArrayList<>();
-            ArenaRenderer.draw(g2, view, w, h, model.shown(), snapshot.get(),
+            Arena shown = model.shown();
+            String key = System.identityHashCode(shown) + " " + view.sx(0) + " " + view.sy(0) + " " + view.scale() + " " + w + "x" + h + " " + options.grid();
+            if (background == null || !key.equals(backgroundKey) || background.getWidth() != w || background.getHeight() != h) {
+                background = getGraphicsConfiguration() != null ? getGraphicsConfiguration().createCompatibleImage(w, h)
+                        : new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+                Graphics2D bg = background.createGraphics();
+                ArenaRenderer.drawStatic(bg, view, w, h, shown, options);
+                bg.dispose();
+                backgroundKey = key;
+            }
+            g2.drawImage(background, 0, 0, null);
+            ArenaRenderer.drawDynamic(g2, view, shown, snapshot.get(),
                     new ArenaRenderer.Overlay(model.selection(), gestures.band(), gestures.refusedAt(), t), options);
         } finally {
             g2.dispose();

@@ -29,7 +29,7 @@ public final class SensorRenderer {
     /** Light bars. */
     public static final Color LIGHT = new Color(0xE0A800);
     /** Height of the drawing for a given width, px. */
-    static final int ROBOT_AREA = 250;
+    static final int ROBOT_AREA = 260;
 
     private SensorRenderer() {
     }
@@ -52,7 +52,7 @@ public final class SensorRenderer {
         g.fill(new Rectangle2D.Double(0, 0, w, h));
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
         double cx = w / 2.0;
-        double cy = ROBOT_AREA / 2.0 + 4;
+        double cy = ROBOT_AREA / 2.0 + 12;
         double body = StrictMath.min(w, ROBOT_AREA) * 0.20;
         // The robot, seen from above, facing up the page.
         g.setColor(new Color(0x2E8B57));
@@ -77,7 +77,13 @@ public final class SensorRenderer {
             double lx = cx - (body + 50) * StrictMath.sin(ang);
             double ly = cy - (body + 50) * StrictMath.cos(ang);
             // Labels need room: the back sensors sit side by side, spread them apart.
-            if (s.index() == 6) {
+            if (s.index() == 2) {
+                lx -= 34;
+                ly -= 6;
+            } else if (s.index() == 3) {
+                lx += 34;
+                ly -= 6;
+            } else if (s.index() == 6) {
                 lx += 36;
                 ly = cy + body + 32;
             } else if (s.index() == 7) {
@@ -105,8 +111,8 @@ public final class SensorRenderer {
             g.drawString(String.format(Locale.ROOT, "speed   L %4d   R %4d  (units of 8 mm/s)", r.speedLeft(), r.speedRight()), 10, (float) y);
             g.drawString(String.format(Locale.ROOT, "encoder L %7d R %7d  pulses", r.encoderLeft(), r.encoderRight()), 10, (float) y + 16);
             g.drawString(String.format(Locale.ROOT, "pose (%.1f, %.1f) mm  %.1f deg", r.x(), r.y(), r.headingDeg()), 10, (float) y + 32);
-            g.drawString("contact " + r.contact().name().toLowerCase(Locale.ROOT) + "   collisions " + r.collisions()
-                    + "   controller " + r.controller(), 10, (float) y + 48);
+            g.drawString("contact " + r.contact().name().toLowerCase(Locale.ROOT) + "  collisions " + r.collisions()
+                    + "  " + r.controller(), 10, (float) y + 48);
         } else {
             g.drawString("no run yet: press Start", 10, (float) y);
         }
