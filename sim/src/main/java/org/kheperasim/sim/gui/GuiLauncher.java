@@ -7,7 +7,14 @@ import javax.swing.UIManager;
 
 /** Opens the simulator's window: the command line's entry point into the GUI. */
 public final class GuiLauncher {
+    private static volatile CompletableFuture<MainWindow> last = new CompletableFuture<>();
+
     private GuiLauncher() {
+    }
+
+    /** @return the window the latest {@link #launch} opens (for test drivers and benchmarks that start through the command line) */
+    public static CompletableFuture<MainWindow> lastLaunched() {
+        return last;
     }
 
     /** There is no screen to open a window on. */
@@ -33,7 +40,8 @@ public final class GuiLauncher {
                     + ". Run headless with 'khepera-sim run --arena maze --controller WallFollower', or set DISPLAY to a running X server"
                     + " (for example start 'Xvfb :5 &' and use DISPLAY=:5)");
         }
-        CompletableFuture<MainWindow> shown = new CompletableFuture<>();
+        CompletableFuture<MainWindow> shown = last.isDone() ? new CompletableFuture<>() : last;
+        last = shown;
         SwingUtilities.invokeLater(() -> {
             try {
                 try {

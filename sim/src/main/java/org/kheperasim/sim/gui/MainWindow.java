@@ -955,6 +955,11 @@ public final class MainWindow {
         settings = s;
     }
 
+    /** @return the controller the next run uses */
+    public String controllerName() {
+        return controllerName;
+    }
+
     /** @param s the seed for the next run */
     public void setSeed(long s) {
         seed = s;
