@@ -172,10 +172,20 @@ public final class ArenaRenderer {
             g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
             for (float[] t : overlay.trails()) {
                 if (t.length >= 4) {
+                    // Skip points less than a pixel from the last one drawn: a long trail at full speed
+                    // has tens of thousands of points, nearly all on top of each other on screen.
                     Path2D.Float p = new Path2D.Float();
-                    p.moveTo(view.sx(t[0]), view.sy(t[1]));
+                    double lx = view.sx(t[0]);
+                    double ly = view.sy(t[1]);
+                    p.moveTo(lx, ly);
                     for (int k = 2; k < t.length; k += 2) {
-                        p.lineTo(view.sx(t[k]), view.sy(t[k + 1]));
+                        double x = view.sx(t[k]);
+                        double y = view.sy(t[k + 1]);
+                        if (StrictMath.abs(x - lx) + StrictMath.abs(y - ly) >= 1.5 || k == t.length - 2) {
+                            p.lineTo(x, y);
+                            lx = x;
+                            ly = y;
+                        }
                     }
                     g.setColor(new Color(0x1E6FFF));
                     g.draw(p);

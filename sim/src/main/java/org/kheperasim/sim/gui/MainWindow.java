@@ -68,7 +68,13 @@ import org.kheperasim.sim.run.Simulation;
 public final class MainWindow {
     /** Speeds offered, simulated seconds per real second; the last is as fast as possible. */
     static final double[] SPEEDS = {0.25, 0.5, 1, 2, 4, PacedRunner.MAX_SPEED};
-    private static final int FRAME_MS = 15;
+    /** Frame period while paced, ms: a little faster than 60 frames/s, so the screen keeps up. */
+    private static final int FRAME_MS = 12;
+    /**
+     * Frame period at full speed, ms: the engine and the controller thread want both cores then,
+     * and 25 frames/s is plenty to watch a robot race.
+     */
+    private static final int FRAME_MS_MAX_SPEED = 40;
     private static final int RECENT = 8;
 
     private final JFrame frame = new JFrame();
@@ -545,6 +551,7 @@ public final class MainWindow {
 
     private void setSpeed(double s) {
         speed = s;
+        timer.setDelay(s == PacedRunner.MAX_SPEED ? FRAME_MS_MAX_SPEED : FRAME_MS);
         PacedRunner r = runner;
         if (r != null) {
             r.setSpeed(s);
@@ -953,6 +960,17 @@ public final class MainWindow {
     /** @param s the settings for the next run (for tests and drivers) */
     void setSettings(Settings s) {
         settings = s;
+    }
+
+    /** @param factor one of the offered speeds, as the speed box would choose it (event thread) */
+    public void chooseSpeed(double factor) {
+        for (int i = 0; i < SPEEDS.length; i++) {
+            if (SPEEDS[i] == factor) {
+                speedBox.setSelectedIndex(i);
+                return;
+            }
+        }
+        throw new IllegalArgumentException("speed " + factor + " is not offered");
     }
 
     /** @return the controller the next run uses */
