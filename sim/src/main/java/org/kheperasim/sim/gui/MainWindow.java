@@ -103,6 +103,7 @@ public final class MainWindow {
     private List<Path> classpath;
     private Path javaSource;
     private double speed = 1;
+    private Settings runSettings = Settings.defaults();
     private volatile PacedRunner runner;
     private Snapshot lastPainted;
     private long fpsFrames;
@@ -576,6 +577,7 @@ public final class MainWindow {
             showMessage("Cannot start: " + e.getMessage(), true);
             return false;
         }
+        runSettings = settings;
         trail.clear();
         plot.clear();
         session.addListener(trail, 20 * Engine.TICK_NANOS);
@@ -806,31 +808,37 @@ public final class MainWindow {
             return;
         }
         Path dir = c.getSelectedFile().toPath();
-        saveRecording(r, dir);
+        saveRecording(r, classpath, runSettings, dir);
         showMessage("Recording saved in " + dir + " (see replay.txt)", false);
     }
 
     /**
      * Save what replays a run exactly: the start arena, the stamped edits, the settings and the
      * command line that replays them.
+     *
+     * @param r the run
+     * @param classpath where its controller came from (empty for a bundled one)
+     * @param settings the run's settings
+     * @param dir the folder to write to
      */
-    static void saveRecording(PacedRunner r, Path dir) {
+    static void saveRecording(PacedRunner r, List<Path> classpath, Settings settings, Path dir) {
         try {
             Files.createDirectories(dir);
+            RunSession s = r.session();
+            ArenaFormat.save(s.arena(), dir.resolve("start.arena"));
+            s.edits().save(dir.resolve("run.edits"));
+            SettingsFile.save(settings, dir.resolve("run.settings"));
+            StringBuilder cmd = new StringBuilder("java -jar khepera-sim.jar run --arena start.arena --controller ")
+                    .append(s.controllerClass()).append(" --seed ").append(s.seed()).append(" --edits run.edits");
+            if (!classpath.isEmpty()) {
+                cmd.append(" --classpath ");
+                cmd.append(String.join(java.io.File.pathSeparator, classpath.stream().map(p -> p.toAbsolutePath().toString()).toList()));
+            }
+            settings.overrides().forEach((k, v) -> cmd.append(" --set ").append(k).append('=').append(v));
+            Files.writeString(dir.resolve("replay.txt"), "# Replays the run exactly; add --seconds T for how long (the window ran to "
+                    + String.format(Locale.ROOT, "%.3f", r.latest().timeSeconds()) + " s) and --trace FILE for the trace:\n" + cmd + "\n");
         } catch (IOException e) {
-            throw new java.io.UncheckedIOException("cannot create " + dir + ": " + e.getMessage(), e);
-        }
-        RunSession s = r.session();
-        ArenaFormat.save(s.arena(), dir.resolve("start.arena"));
-        s.edits().save(dir.resolve("run.edits"));
-        String cmd = "java -jar khepera-sim.jar run --arena start.arena --controller " + s.controllerClass()
-                + " --seed " + s.seed() + " --edits run.edits";
-        try {
-            Files.writeString(dir.resolve("replay.txt"), "# Replays the run exactly (add --classpath for your own controller,"
-                    + " --seconds to the time you want, --trace to write the trace):\n" + cmd + "\n"
-                    + "# settings: " + "see run.settings\n");
-        } catch (IOException e) {
-            throw new java.io.UncheckedIOException(e);
+            throw new java.io.UncheckedIOException("cannot write the recording in " + dir + ": " + e.getMessage(), e);
         }
     }
 

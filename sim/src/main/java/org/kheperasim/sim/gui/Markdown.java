@@ -22,6 +22,10 @@ final class Markdown {
                     out.append("</p>");
                     para = false;
                 }
+                if (list && !code && !raw.startsWith(" ")) {
+                    out.append("</ul>");
+                    list = false;
+                }
                 out.append(code ? "</pre>" : "<pre style='background:#f0f0f0'>");
                 code = !code;
                 continue;
