@@ -87,6 +87,12 @@ final class Markdown {
                 out.append("<li>").append(inline(t.replaceFirst("^(\\* |- |\\d+\\. )", ""))).append("</li>");
                 continue;
             }
+            if (list && raw.startsWith(" ") && out.toString().endsWith("</li>")) {
+                // A bullet's continuation line: part of the same item.
+                out.setLength(out.length() - "</li>".length());
+                out.append(' ').append(inline(t)).append("</li>");
+                continue;
+            }
             if (!para && !list) {
                 out.append("<p>");
                 para = true;
