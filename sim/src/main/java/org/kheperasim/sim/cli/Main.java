@@ -4,21 +4,22 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
 /**
- * The simulator's entry point: {@code java -jar khepera-sim.jar <command>}. The window comes with
- * its own issue; until then, with no command this prints the help.
+ * The simulator's entry point: {@code java -jar khepera-sim.jar <command>}. With no command it
+ * opens the window with {@code maze} loaded and {@code WallFollower} chosen.
  */
 @Command(name = "khepera-sim", mixinStandardHelpOptions = true, version = "khepera-sim 0.1.0",
         description = "A deterministic Khepera robot simulator. Runs a controller class in an arena.",
-        subcommands = {RunCommand.class, BenchCommand.class, SettingsCommand.class, ListCommand.class,
+        subcommands = {GuiCommand.class, GuiBenchCommand.class, RunCommand.class, BenchCommand.class, SettingsCommand.class, ListCommand.class,
             CommandLine.HelpCommand.class})
-public final class Main implements Runnable {
+public final class Main implements java.util.concurrent.Callable<Integer> {
 
     @CommandLine.Spec
     private CommandLine.Model.CommandSpec spec;
 
+    /** With no command: open the window with the defaults (maze, WallFollower). */
     @Override
-    public void run() {
-        spec.commandLine().usage(System.out);
+    public Integer call() {
+        return GuiCommand.open(org.kheperasim.sim.gui.GuiOptions.defaults());
     }
 
     /** @return a command line ready to execute, with the project's error handling */

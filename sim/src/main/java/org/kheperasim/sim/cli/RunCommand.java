@@ -43,6 +43,10 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--trace", paramLabel = "FILE", description = "write a trace of the run (text, one line per sample)")
     Path trace;
 
+    @Option(names = "--edits", paramLabel = "FILE",
+            description = "apply the arena edits recorded in the window (run.edits) at their simulated times, replaying that run")
+    Path edits;
+
     @Option(names = "--sample-ms", paramLabel = "MS", defaultValue = "50",
             description = "trace sample period, ms (default: ${DEFAULT-VALUE})")
     long sampleMillis;
@@ -99,6 +103,9 @@ final class RunCommand implements Callable<Integer> {
         }
         if (trace != null) {
             run.trace(trace);
+        }
+        if (edits != null) {
+            run.edits(org.kheperasim.sim.run.EditLog.load(edits));
         }
         info.println("seed " + run.seed());
         RunResult result = run.run();

@@ -8,23 +8,15 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.SecureRandom;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
-import java.util.Locale;
-import java.util.Map;
 import java.util.Objects;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.engine.Engine;
 import org.kheperasim.sim.engine.Settings;
-import org.kheperasim.sim.engine.SimRobot;
 import org.kheperasim.sim.engine.SnapshotListener;
-import org.kheperasim.sim.engine.World;
 import org.kheperasim.sim.host.ConsoleSink;
 import org.kheperasim.sim.host.ControllerHost;
-import org.kheperasim.sim.host.Lockstep;
-import org.kheperasim.sim.trace.TraceWriter;
 
 /**
  * One headless run: an arena, a controller on every robot start of the arena, a seed, settings and
@@ -62,6 +54,7 @@ public final class Simulation {
         private ConsoleSink console = line -> { };
         private ControllerHost.Options hostOptions = ControllerHost.Options.defaults();
         private final List<SnapshotListener> listeners = new ArrayList<>();
+        private EditLog edits = new EditLog();
 
         /** @param arena the arena @return this */
         public Builder arena(Arena arena) {
@@ -146,6 +139,16 @@ public final class Simulation {
             return this;
         }
 
+        /**
+         * @param edits arena edits to apply at their simulated times, as recorded by a run in the
+         *     window ({@link RunSession#edits()}); the run then replays that run exactly
+         * @return this
+         */
+        public Builder edits(EditLog edits) {
+            this.edits = Objects.requireNonNull(edits);
+            return this;
+        }
+
         /** @return the seed this run will use (drawn now if none was given) */
         public long seed() {
             if (seed == null) {
@@ -168,30 +171,11 @@ public final class Simulation {
 
     private RunResult execute() {
         long seed = b.seed();
-        Arena arena = b.arena;
-        World world = new World(arena);
-        Engine engine = new Engine(world, seed);
-        ControllerCatalog catalog = new ControllerCatalog(b.classpath);
-        List<ControllerHost> hosts = new ArrayList<>();
-        List<SimRobot> robots = new ArrayList<>();
-        String controllerClass = null;
-        for (int i = 0; i < arena.robots().size(); i++) {
-            Pose start = arena.robots().get(i);
-            // A class loader per robot: controllers on different robots share no static state.
-            Class<?> type = catalog.load(b.controllerName);
-            controllerClass = type.getName();
-            String name = arena.robots().size() == 1 ? type.getSimpleName() : type.getSimpleName() + "#" + i;
-            SimRobot robot = engine.addRobot(name, start, b.settings);
-            ControllerHost host = new ControllerHost(robot, type, b.console, b.hostOptions);
-            engine.attach(robot, host, r -> host.status().name().toLowerCase(Locale.ROOT));
-            hosts.add(host);
-            robots.add(robot);
-        }
+        RunSession session = new RunSession(b.arena, b.controllerName, new ControllerCatalog(b.classpath), seed,
+                b.settings, b.console, b.hostOptions);
         for (SnapshotListener l : b.listeners) {
-            engine.addListener(l, Engine.TICK_NANOS);
+            session.addListener(l, Engine.TICK_NANOS);
         }
-
-        TraceWriter trace = null;
         Path traceTemp = null;
         try {
             if (b.tracePath != null || b.traceWriter != null) {
@@ -202,50 +186,24 @@ public final class Simulation {
                     traceTemp = Files.createTempFile(parent, b.tracePath.getFileName().toString(), ".part");
                     w = Files.newBufferedWriter(traceTemp, StandardCharsets.UTF_8);
                 }
-                Map<String, String> header = new LinkedHashMap<>();
-                header.put("seed", Long.toString(seed));
-                header.put("arena", arena.name() + " sha256=" + ArenaFormat.sha256(arena));
-                header.put("controller", controllerClass);
-                header.put("settings", b.settings.describe());
-                header.put("sample-ms", Long.toString(b.sampleMillis));
-                trace = new TraceWriter(w, header);
-                engine.addListener(trace, b.sampleMillis * Engine.TICK_NANOS);
+                session.trace(w, b.sampleMillis);
             }
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write the trace " + b.tracePath + ": " + e.getMessage(), e);
         }
 
         long endNanos = (long) StrictMath.rint(b.seconds * 1e9);
-        Lockstep lockstep = new Lockstep(engine, hosts, b.hostOptions.hangTimeoutNanos());
         long wallStart = System.nanoTime();
-        String sha = null;
         try {
-            lockstep.run(endNanos);
-            if (trace != null && engine.timeNanos() % (b.sampleMillis * Engine.TICK_NANOS) == 0) {
-                trace.onSnapshot(engine.snapshot());
-            }
+            session.runTo(endNanos, b.edits);
         } finally {
-            lockstep.stopAll();
-            if (trace != null) {
-                trace.close();
-                sha = trace.sha256();
-                if (traceTemp != null) {
-                    moveIntoPlace(traceTemp, b.tracePath);
-                }
+            session.close();
+            if (traceTemp != null) {
+                moveIntoPlace(traceTemp, b.tracePath);
             }
         }
         double wall = (System.nanoTime() - wallStart) / 1e9;
-
-        List<RunResult.RobotResult> results = new ArrayList<>();
-        for (int i = 0; i < robots.size(); i++) {
-            SimRobot r = robots.get(i);
-            ControllerHost h = hosts.get(i);
-            results.add(new RunResult.RobotResult(r.name(), r.x(), r.y(), r.headingDeg(), r.distanceTravelledMm(),
-                    r.collisions(), r.visitedPercent(), h.status(),
-                    h.failure() == null ? null : h.failure().toString(), r.regionsEntered()));
-        }
-        return new RunResult(seed, arena.name(), controllerClass, engine.timeNanos() / 1e9, wall, sha, results,
-                world.capsInRegions(), world.capCount());
+        return session.result(wall);
     }
 
     private static void moveIntoPlace(Path temp, Path target) {

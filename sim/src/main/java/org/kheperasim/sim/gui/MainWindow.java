@@ -1,0 +1,993 @@
+package org.kheperasim.sim.gui;
+
+import java.awt.BorderLayout;
+import java.awt.Color;
+import java.awt.Dimension;
+import java.awt.FlowLayout;
+import java.awt.event.ActionEvent;
+import java.awt.event.KeyEvent;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.prefs.Preferences;
+import javax.swing.AbstractAction;
+import javax.swing.Action;
+import javax.swing.BorderFactory;
+import javax.swing.ButtonGroup;
+import javax.swing.JButton;
+import javax.swing.JCheckBoxMenuItem;
+import javax.swing.JComboBox;
+import javax.swing.JComponent;
+import javax.swing.JFileChooser;
+import javax.swing.JFrame;
+import javax.swing.JLabel;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
+import javax.swing.JOptionPane;
+import javax.swing.JPanel;
+import javax.swing.JRadioButtonMenuItem;
+import javax.swing.JSpinner;
+import javax.swing.JSplitPane;
+import javax.swing.JTextField;
+import javax.swing.JToggleButton;
+import javax.swing.JToolBar;
+import javax.swing.KeyStroke;
+import javax.swing.SpinnerNumberModel;
+import javax.swing.Timer;
+import javax.swing.filechooser.FileNameExtensionFilter;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.engine.Engine;
+import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.host.ControllerHost;
+import org.kheperasim.sim.run.ControllerCatalog;
+import org.kheperasim.sim.run.ControllerCompiler;
+import org.kheperasim.sim.run.PacedRunner;
+import org.kheperasim.sim.run.RunSession;
+import org.kheperasim.sim.run.SettingsFile;
+import org.kheperasim.sim.run.Simulation;
+
+/**
+ * The simulator's window (the paper's Figure 2): the arena view with its editing palette, the
+ * sensor panel, a rolling plot, the console, run controls and speed. One {@link Action} per
+ * command, shared by menu, toolbar and keys; their enabled state follows the run's state.
+ *
+ * <p>The run itself lives on a {@link PacedRunner}'s thread; the window only reads its latest
+ * snapshot on a Swing timer and sends it commands, so the engine never waits on the screen.
+ */
+public final class MainWindow {
+    /** Speeds offered, simulated seconds per real second; the last is as fast as possible. */
+    static final double[] SPEEDS = {0.25, 0.5, 1, 2, 4, PacedRunner.MAX_SPEED};
+    /** Frame period while paced, ms: a little faster than 60 frames/s, so the screen keeps up. */
+    private static final int FRAME_MS = 12;
+    /**
+     * Frame period at full speed, ms: the engine and the controller thread want both cores then,
+     * and 25 frames/s is plenty to watch a robot race.
+     */
+    private static final int FRAME_MS_MAX_SPEED = 40;
+    private static final int RECENT = 8;
+
+    private final JFrame frame = new JFrame();
+    private final EditorModel model;
+    private final EditGestures gestures;
+    private final TrailRecorder trail = new TrailRecorder();
+    private final ConsolePanel console = new ConsolePanel();
+    private final PlotPanel plot = new PlotPanel();
+    private final ArenaView arenaView;
+    private final SensorPanel sensorPanel;
+    private final JLabel message = new JLabel(" ");
+    private final JLabel position = new JLabel(" ");
+    private final JLabel clock = new JLabel(" ");
+    private final JComboBox<String> controllers = new JComboBox<>();
+    private final JComboBox<String> speedBox = new JComboBox<>();
+    private final Map<String, Action> actions = new LinkedHashMap<>();
+    private final Map<Tool, JToggleButton> toolButtons = new LinkedHashMap<>();
+    private final JMenu recentMenu = new JMenu("Open recent");
+    private final Preferences prefs = Preferences.userNodeForPackage(MainWindow.class);
+    private final Timer timer;
+
+    private Path arenaFile;
+    private Settings settings = Settings.defaults();
+    private Long seed;
+    private String controllerName;
+    private List<Path> classpath;
+    private Path javaSource;
+    private double speed = 1;
+    private Settings runSettings = Settings.defaults();
+    private volatile PacedRunner runner;
+    private Snapshot lastPainted;
+    private long fpsFrames;
+    private long fpsSince = System.nanoTime();
+    private double fps;
+    private long messageUntil;
+
+    MainWindow(GuiOptions options) {
+        Arena arena = ArenaFormat.resolve(options.arena());
+        Path maybeFile = Path.of(options.arena());
+        arenaFile = Files.isRegularFile(maybeFile) ? maybeFile : null;
+        if (arenaFile != null && Files.isRegularFile(SettingsFile.besideArena(arenaFile))) {
+            settings = SettingsFile.load(SettingsFile.besideArena(arenaFile));
+        }
+        model = new EditorModel(arena);
+        gestures = new EditGestures(model);
+        controllerName = options.controller();
+        classpath = new ArrayList<>(options.classpath());
+        seed = options.seed();
+        arenaView = new ArenaView(model, gestures, this::snapshot, this::trails);
+        sensorPanel = new SensorPanel(this::firstRobot);
+        model.onChange(arenaView::repaint);
+        model.onChange(this::updateActions);
+        model.onRefusal(m -> {
+            showMessage("Refused: " + m, true);
+            java.awt.Toolkit.getDefaultToolkit().beep();
+        });
+        model.onEdit(this::forwardEdit);
+        model.setRun(() -> active() ? runner.session().arena() : null,
+                () -> runner == null ? List.of() : runner.latest().robots());
+
+        buildActions();
+        frame.setJMenuBar(menus());
+        frame.setTitle(title());
+        frame.setDefaultCloseOperation(JFrame.DO_NOTHING_ON_CLOSE);
+        frame.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowClosing(WindowEvent e) {
+                close();
+            }
+        });
+        JPanel right = new JPanel(new BorderLayout());
+        right.add(sensorPanel, BorderLayout.NORTH);
+        right.add(plot, BorderLayout.CENTER);
+        JSplitPane top = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, arenaView, right);
+        top.setResizeWeight(1);
+        console.setPreferredSize(new Dimension(900, 150));
+        JSplitPane main = new JSplitPane(JSplitPane.VERTICAL_SPLIT, top, console);
+        main.setResizeWeight(1);
+        JPanel content = new JPanel(new BorderLayout());
+        content.add(toolbar(), BorderLayout.NORTH);
+        content.add(main, BorderLayout.CENTER);
+        content.add(statusBar(), BorderLayout.SOUTH);
+        frame.setContentPane(content);
+        keys();
+        frame.setSize(1180, 900);
+        frame.setLocationByPlatform(false);
+        frame.setLocation(20, 20);
+        setTool(Tool.SELECT);
+        updateActions();
+        console.note("Loaded arena " + arena.name() + "; controller " + controllerName
+                + ". Press Start (F5). Draw with the palette; Help > Quick start explains the first hour.");
+        timer = new Timer(FRAME_MS, e -> tick());
+        timer.start();
+    }
+
+    /** @return the frame */
+    public JFrame frame() {
+        return frame;
+    }
+
+    // ---- state read by the panels (event thread) ----
+
+    private Snapshot snapshot() {
+        PacedRunner r = runner;
+        return r == null ? null : r.latest();
+    }
+
+    private RobotView firstRobot() {
+        Snapshot s = snapshot();
+        return s == null || s.robots().isEmpty() ? null : s.robots().get(0);
+    }
+
+    private List<float[]> trails() {
+        Snapshot s = snapshot();
+        List<float[]> out = new ArrayList<>();
+        if (s != null) {
+            for (int i = 0; i < s.robots().size(); i++) {
+                out.add(trail.trail(i));
+            }
+        }
+        return out;
+    }
+
+    private boolean active() {
+        PacedRunner r = runner;
+        return r != null && (r.state() == PacedRunner.State.READY || r.state() == PacedRunner.State.RUNNING
+                || r.state() == PacedRunner.State.PAUSED);
+    }
+
+    // ---- the frame timer ----
+
+    private void tick() {
+        console.drain();
+        Snapshot s = snapshot();
+        if (s != lastPainted) {
+            plot.sample(s);
+            sensorPanel.repaint();
+            lastPainted = s;
+        }
+        arenaView.repaint();
+        long now = System.nanoTime();
+        if (now - fpsSince >= 1_000_000_000L) {
+            long frames = arenaView.frames();
+            fps = (frames - fpsFrames) * 1e9 / (now - fpsSince);
+            fpsFrames = frames;
+            fpsSince = now;
+        }
+        PacedRunner r = runner;
+        String state = r == null ? "no run" : r.state().name().toLowerCase(Locale.ROOT);
+        String rtf = r == null || r.state() != PacedRunner.State.RUNNING ? "-" : String.format(Locale.ROOT, "%.2fx", r.realTimeFactor());
+        clock.setText(String.format(Locale.ROOT, "  %s   t = %.2f s   real-time factor %s   %.0f fps  ", state,
+                s == null ? 0.0 : s.timeSeconds(), rtf, fps));
+        double[] m = arenaView.mouse();
+        position.setText(Double.isNaN(m[0]) ? "  " : String.format(Locale.ROOT, "  (%.1f, %.1f) mm  ", m[0], m[1]));
+        if (messageUntil != 0 && now > messageUntil) {
+            message.setText(" ");
+            messageUntil = 0;
+            gestures.clearRefusal();
+        }
+    }
+
+    /** @return frames per second the arena view painted over the last second */
+    public double fps() {
+        return fps;
+    }
+
+    // ---- actions ----
+
+    private Action action(String key, String name, String tip, KeyStroke accel, Runnable body) {
+        Action a = new AbstractAction(name) {
+            @Override
+            public void actionPerformed(ActionEvent e) {
+                try {
+                    body.run();
+                } catch (RuntimeException ex) {
+                    console.error(name + ": " + ex.getMessage());
+                    showMessage(name + ": " + ex.getMessage(), true);
+                }
+                updateActions();
+            }
+        };
+        a.putValue(Action.SHORT_DESCRIPTION, tip);
+        if (accel != null) {
+            a.putValue(Action.ACCELERATOR_KEY, accel);
+        }
+        actions.put(key, a);
+        return a;
+    }
+
+    /** @param key an action's key, e.g. {@code start} @return the action (for tests and drivers) */
+    public Action action(String key) {
+        return actions.get(key);
+    }
+
+    private static KeyStroke ks(int code, int mods) {
+        return KeyStroke.getKeyStroke(code, mods);
+    }
+
+    private void buildActions() {
+        int ctrl = java.awt.Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
+        int shift = java.awt.event.InputEvent.SHIFT_DOWN_MASK;
+        action("new", "New arena…", "a new empty arena of a chosen size", ks(KeyEvent.VK_N, ctrl), this::newArena);
+        action("open", "Open arena…", "open an .arena file", ks(KeyEvent.VK_O, ctrl), this::openArena);
+        action("save", "Save", "save the arena (atomically)", ks(KeyEvent.VK_S, ctrl), () -> save(false));
+        action("saveAs", "Save as…", "save the arena under a new name", ks(KeyEvent.VK_S, ctrl | shift), () -> save(true));
+        action("saveRecording", "Save run recording…", "save what replays this run exactly: start arena, edits, seed", null, this::saveRecording);
+        action("close", "Close window", "close the simulator", ks(KeyEvent.VK_Q, ctrl), this::close);
+        action("undo", "Undo", "undo the last edit", ks(KeyEvent.VK_Z, ctrl), model::undo);
+        action("redo", "Redo", "redo the edit undone", ks(KeyEvent.VK_Y, ctrl), model::redo);
+        action("delete", "Delete", "delete the selected walls, lamps and caps", null, model::deleteSelection);
+        action("selectAll", "Select all", "select everything", ks(KeyEvent.VK_A, ctrl),
+                () -> model.select(ArenaEdits.inside(model.arena(), -1e9, -1e9, 1e9, 1e9)));
+        action("rotateLeft", "Rotate left 15°", "rotate the selection counter-clockwise", null, () -> model.rotateSelection(15));
+        action("rotateRight", "Rotate right 15°", "rotate the selection clockwise", null, () -> model.rotateSelection(-15));
+        action("start", "Start", "start or resume the run", ks(KeyEvent.VK_F5, 0), this::start);
+        action("pause", "Pause", "pause the run", ks(KeyEvent.VK_F6, 0), () -> runner.pause());
+        action("step", "Step", "run " + PacedRunner.STEP_NANOS / 1_000_000 + " ms of simulated time, then pause", ks(KeyEvent.VK_F7, 0), this::step);
+        action("stop", "Stop", "stop the run (the robot stops where it is)", ks(KeyEvent.VK_F8, 0), this::stop);
+        action("reset", "Reset", "back to the start poses, reloading the controller class", ks(KeyEvent.VK_F9, 0), this::reset);
+        action("loadClasses", "Load compiled classes…", "add a folder or jar with your compiled controller", null, this::loadClasses);
+        action("openJava", "Open .java…", "compile a controller source file and use it", null, this::openJava);
+        action("reload", "Reload controller", "recompile the .java (if one was opened) and reset, picking up your changes", ks(KeyEvent.VK_F10, 0), this::reload);
+        action("settings", "Settings…", "sensors, motors, light, link, seed", null, this::showSettings);
+        action("seed", "Seed…", "the run's seed (a new random one by default)", null, this::askSeed);
+        action("zoomIn", "Zoom in", "zoom in", ks(KeyEvent.VK_EQUALS, ctrl), () -> arenaView.zoom(1.25));
+        action("zoomOut", "Zoom out", "zoom out", ks(KeyEvent.VK_MINUS, ctrl), () -> arenaView.zoom(0.8));
+        action("fit", "Fit arena", "show the whole arena", ks(KeyEvent.VK_0, ctrl), arenaView::fit);
+        action("manual", "Manual", "the manual", ks(KeyEvent.VK_F1, 0), () -> HelpDialog.show(frame, "gui.md"));
+        action("quickStart", "Quick start", "the first hour", null, () -> HelpDialog.show(frame, "quick-start.md"));
+        for (Tool t : Tool.values()) {
+            action("tool." + t.name(), t.label(), t.label() + " tool (" + t.key() + ")", null, () -> setTool(t));
+        }
+    }
+
+    private void updateActions() {
+        PacedRunner r = runner;
+        PacedRunner.State s = r == null ? null : r.state();
+        boolean running = s == PacedRunner.State.RUNNING;
+        boolean live = active();
+        actions.get("start").setEnabled(!running);
+        actions.get("pause").setEnabled(running);
+        actions.get("step").setEnabled(!running && s != PacedRunner.State.FINISHED && s != PacedRunner.State.STOPPED);
+        actions.get("stop").setEnabled(live);
+        actions.get("reset").setEnabled(r != null);
+        actions.get("saveRecording").setEnabled(r != null);
+        actions.get("undo").setEnabled(model.canUndo());
+        actions.get("redo").setEnabled(model.canRedo());
+        actions.get("delete").setEnabled(!model.selection().isEmpty());
+        actions.get("rotateLeft").setEnabled(!model.selection().isEmpty());
+        actions.get("rotateRight").setEnabled(!model.selection().isEmpty());
+        actions.get("new").setEnabled(!live);
+        actions.get("open").setEnabled(!live);
+        actions.get("reload").setEnabled(javaSource != null || !classpath.isEmpty() || r != null);
+        controllers.setEnabled(!live);
+        frame.setTitle(title());
+    }
+
+    private String title() {
+        return "Khepera simulator - " + model.arena().name() + (model.dirty() ? " *" : "")
+                + (arenaFile != null ? " (" + arenaFile + ")" : " (bundled)") + " - " + controllerName;
+    }
+
+    private JMenuBar menus() {
+        JMenuBar bar = new JMenuBar();
+        JMenu file = menu("File", KeyEvent.VK_F, "new", "open");
+        file.add(recentMenu);
+        rebuildRecent();
+        file.addSeparator();
+        addAll(file, "save", "saveAs", "saveRecording");
+        file.addSeparator();
+        addAll(file, "close");
+        bar.add(file);
+        JMenu edit = menu("Edit", KeyEvent.VK_E, "undo", "redo", "delete", "selectAll", "rotateLeft", "rotateRight");
+        edit.addSeparator();
+        for (Tool t : Tool.values()) {
+            edit.add(new JMenuItem(actions.get("tool." + t.name())));
+        }
+        JCheckBoxMenuItem snap = new JCheckBoxMenuItem("Snap to grid and wall ends", model.snap());
+        snap.addActionListener(e -> model.setSnap(snap.isSelected()));
+        edit.addSeparator();
+        edit.add(snap);
+        bar.add(edit);
+        JMenu view = menu("View", KeyEvent.VK_V, "zoomIn", "zoomOut", "fit");
+        view.addSeparator();
+        view.add(optionToggle("Sensor beams", 0));
+        view.add(optionToggle("Trail", 1));
+        view.add(optionToggle("Grid", 2));
+        view.add(optionToggle("Start poses during a run", 3));
+        bar.add(view);
+        JMenu run = menu("Run", KeyEvent.VK_R, "start", "pause", "step", "stop", "reset");
+        run.addSeparator();
+        JMenu speeds = new JMenu("Speed");
+        ButtonGroup group = new ButtonGroup();
+        for (int i = 0; i < SPEEDS.length; i++) {
+            int k = i;
+            JRadioButtonMenuItem item = new JRadioButtonMenuItem(speedLabel(SPEEDS[i]), SPEEDS[i] == 1);
+            item.addActionListener(e -> speedBox.setSelectedIndex(k));
+            group.add(item);
+            speeds.add(item);
+        }
+        run.add(speeds);
+        addAll(run, "seed");
+        bar.add(run);
+        bar.add(menu("Controller", KeyEvent.VK_C, "loadClasses", "openJava", "reload"));
+        bar.add(menu("Settings", KeyEvent.VK_S, "settings"));
+        bar.add(menu("Help", KeyEvent.VK_H, "quickStart", "manual"));
+        return bar;
+    }
+
+    private JCheckBoxMenuItem optionToggle(String label, int which) {
+        ArenaRenderer.Options o = arenaView.options();
+        boolean on = switch (which) {
+            case 0 -> o.beams();
+            case 1 -> o.trail();
+            case 2 -> o.grid();
+            default -> o.startPoses();
+        };
+        JCheckBoxMenuItem item = new JCheckBoxMenuItem(label, on);
+        item.addActionListener(e -> {
+            ArenaRenderer.Options c = arenaView.options();
+            boolean v = item.isSelected();
+            arenaView.setOptions(new ArenaRenderer.Options(which == 0 ? v : c.beams(), which == 1 ? v : c.trail(),
+                    which == 2 ? v : c.grid(), which == 3 ? v : c.startPoses()));
+        });
+        return item;
+    }
+
+    private JMenu menu(String name, int mnemonic, String... keys) {
+        JMenu m = new JMenu(name);
+        m.setMnemonic(mnemonic);
+        addAll(m, keys);
+        return m;
+    }
+
+    private void addAll(JMenu m, String... keys) {
+        for (String k : keys) {
+            m.add(new JMenuItem(actions.get(k)));
+        }
+    }
+
+    private static String speedLabel(double s) {
+        if (s == PacedRunner.MAX_SPEED) {
+            return "as fast as possible";
+        }
+        return s == StrictMath.rint(s) ? "x" + (int) s : "x" + s;
+    }
+
+    private JToolBar toolbar() {
+        JToolBar bar = new JToolBar();
+        bar.setFloatable(false);
+        ButtonGroup group = new ButtonGroup();
+        for (Tool t : Tool.values()) {
+            JToggleButton b = new JToggleButton(actions.get("tool." + t.name()));
+            b.setName("tool." + t.name());
+            b.setFocusable(false);
+            group.add(b);
+            toolButtons.put(t, b);
+            bar.add(b);
+        }
+        bar.addSeparator();
+        for (String k : new String[] {"undo", "redo", "delete"}) {
+            bar.add(button(k));
+        }
+        bar.addSeparator();
+        for (String k : new String[] {"start", "pause", "step", "stop", "reset"}) {
+            bar.add(button(k));
+        }
+        bar.addSeparator();
+        bar.add(new JLabel(" Speed "));
+        for (double s : SPEEDS) {
+            speedBox.addItem(speedLabel(s));
+        }
+        speedBox.setSelectedIndex(2);
+        speedBox.setName("speed");
+        speedBox.setMaximumSize(new Dimension(150, speedBox.getPreferredSize().height));
+        speedBox.setFocusable(false);
+        speedBox.addActionListener(e -> setSpeed(SPEEDS[speedBox.getSelectedIndex()]));
+        bar.add(speedBox);
+        bar.addSeparator();
+        bar.add(new JLabel(" Controller "));
+        for (String c : ControllerCatalog.bundled()) {
+            controllers.addItem(c);
+        }
+        if (((javax.swing.DefaultComboBoxModel<String>) controllers.getModel()).getIndexOf(controllerName) < 0) {
+            controllers.addItem(controllerName);
+        }
+        controllers.setSelectedItem(controllerName);
+        controllers.setName("controller");
+        controllers.setMaximumSize(new Dimension(160, controllers.getPreferredSize().height));
+        controllers.addActionListener(e -> {
+            Object sel = controllers.getSelectedItem();
+            if (sel != null && !sel.equals(controllerName)) {
+                controllerName = sel.toString();
+                discardRun();
+                console.note("Controller " + controllerName + " chosen; press Start.");
+                updateActions();
+            }
+        });
+        bar.add(controllers);
+        return bar;
+    }
+
+    private JButton button(String key) {
+        JButton b = new JButton(actions.get(key));
+        b.setName(key);
+        b.setFocusable(false);
+        return b;
+    }
+
+    private JComponent statusBar() {
+        JPanel bar = new JPanel(new BorderLayout());
+        bar.setBorder(BorderFactory.createEmptyBorder(2, 6, 2, 6));
+        message.setName("message");
+        clock.setName("clock");
+        bar.add(message, BorderLayout.CENTER);
+        JPanel east = new JPanel(new FlowLayout(FlowLayout.RIGHT, 0, 0));
+        east.add(position);
+        east.add(clock);
+        bar.add(east, BorderLayout.EAST);
+        return bar;
+    }
+
+    private void keys() {
+        JComponent root = frame.getRootPane();
+        bind(root, KeyStroke.getKeyStroke(KeyEvent.VK_DELETE, 0), "delete");
+        bind(root, KeyStroke.getKeyStroke(KeyEvent.VK_BACK_SPACE, 0), "delete");
+        bind(root, KeyStroke.getKeyStroke('['), "rotateLeft");
+        bind(root, KeyStroke.getKeyStroke(']'), "rotateRight");
+        bind(root, KeyStroke.getKeyStroke(KeyEvent.VK_SPACE, 0), "startPause");
+        root.getActionMap().put("startPause", new AbstractAction() {
+            @Override
+            public void actionPerformed(ActionEvent e) {
+                Action a = runner != null && runner.state() == PacedRunner.State.RUNNING ? actions.get("pause") : actions.get("start");
+                if (a.isEnabled()) {
+                    a.actionPerformed(e);
+                }
+            }
+        });
+        for (Tool t : Tool.values()) {
+            bind(root, KeyStroke.getKeyStroke(t.key().charAt(0)), "tool." + t.name());
+            bind(root, KeyStroke.getKeyStroke(Character.toLowerCase(t.key().charAt(0))), "tool." + t.name());
+        }
+    }
+
+    private void bind(JComponent c, KeyStroke k, String key) {
+        c.getInputMap(JComponent.WHEN_IN_FOCUSED_WINDOW).put(k, key);
+        if (actions.containsKey(key)) {
+            c.getActionMap().put(key, actions.get(key));
+        }
+    }
+
+    void setTool(Tool t) {
+        gestures.setTool(t);
+        JToggleButton b = toolButtons.get(t);
+        if (b != null) {
+            b.setSelected(true);
+        }
+        showMessage(switch (t) {
+            case SELECT -> "Select: click or drag a box; drag to move; drag a wall's end to resize; drag a robot's handle to turn; [ ] rotate; Delete.";
+            case WALL -> "Wall: press and drag to draw a wall (snaps to the 10 mm grid and to wall ends).";
+            case LIGHT -> "Light: click to place a lamp.";
+            case CAP -> "Cap: click to place a bottle cap.";
+            case ROBOT -> "Robot start: press where the robot starts, drag to aim it.";
+        }, false);
+    }
+
+    private void showMessage(String text, boolean error) {
+        message.setText(text);
+        message.setForeground(error ? new Color(0xC00000) : Color.DARK_GRAY);
+        messageUntil = error ? System.nanoTime() + 6_000_000_000L : 0;
+        arenaView.repaint();
+    }
+
+    // ---- running ----
+
+    private void setSpeed(double s) {
+        speed = s;
+        timer.setDelay(s == PacedRunner.MAX_SPEED ? FRAME_MS_MAX_SPEED : FRAME_MS);
+        PacedRunner r = runner;
+        if (r != null) {
+            r.setSpeed(s);
+        }
+    }
+
+    private boolean ensureRunner() {
+        PacedRunner r = runner;
+        if (r != null && active()) {
+            return true;
+        }
+        if (r != null) {
+            r.stop();
+        }
+        long runSeed = seed != null ? seed : Simulation.randomSeed();
+        RunSession session;
+        try {
+            session = new RunSession(model.arena(), controllerName, new ControllerCatalog(classpath), runSeed, settings,
+                    console, ControllerHost.Options.defaults());
+        } catch (RuntimeException e) {
+            console.error("cannot start " + controllerName + ": " + e.getMessage());
+            showMessage("Cannot start: " + e.getMessage(), true);
+            return false;
+        }
+        runSettings = settings;
+        trail.clear();
+        plot.clear();
+        session.addListener(trail, 20 * Engine.TICK_NANOS);
+        console.note("Run of " + controllerName + " in " + model.arena().name() + ", seed " + runSeed
+                + (settings.overrides().isEmpty() ? "" : ", settings " + settings.describe()));
+        PacedRunner next = new PacedRunner(session, st -> javax.swing.SwingUtilities.invokeLater(this::stateChanged));
+        next.setSpeed(speed);
+        runner = next;
+        return true;
+    }
+
+    private void stateChanged() {
+        PacedRunner r = runner;
+        if (r != null && r.state() == PacedRunner.State.FINISHED) {
+            console.note("The controller ended at t = " + String.format(Locale.ROOT, "%.3f s", r.latest().timeSeconds()) + ".");
+        }
+        if (r != null && r.failure() != null) {
+            console.error("the run failed: " + r.failure());
+        }
+        updateActions();
+    }
+
+    /** Start or resume. */
+    void start() {
+        if (ensureRunner()) {
+            runner.start();
+        }
+    }
+
+    private void step() {
+        if (ensureRunner()) {
+            runner.step();
+        }
+    }
+
+    private void stop() {
+        PacedRunner r = runner;
+        if (r != null) {
+            r.stop();
+            console.note("Stopped at t = " + String.format(Locale.ROOT, "%.3f s", r.latest().timeSeconds())
+                    + "; Reset to go back to the start, or Start for a new run.");
+        }
+    }
+
+    private void reset() {
+        discardRun();
+        console.note("Reset: the robot is back at its start; the controller is loaded afresh at Start.");
+    }
+
+    private void discardRun() {
+        PacedRunner r = runner;
+        runner = null;
+        if (r != null) {
+            r.stop();
+        }
+        trail.clear();
+        plot.clear();
+        lastPainted = null;
+        sensorPanel.repaint();
+        arenaView.repaint();
+    }
+
+    private void forwardEdit(Arena edited) {
+        PacedRunner r = runner;
+        if (r != null && active()) {
+            r.edit(edited);
+        }
+        frame.setTitle(title());
+    }
+
+    /** @return the runner, or null (for tests and drivers) */
+    public PacedRunner runner() {
+        return runner;
+    }
+
+    /** @return the editor model (for tests and drivers) */
+    public EditorModel model() {
+        return model;
+    }
+
+    /** @return the arena view's mapping from mm to pixels (for drivers) */
+    public ViewTransform view() {
+        return arenaView.view();
+    }
+
+    /** @return the arena view component (for drivers) */
+    public JComponent arenaComponent() {
+        return arenaView;
+    }
+
+    /** @return the console's text (for tests and drivers) */
+    public String consoleText() {
+        console.drain();
+        return console.contents();
+    }
+
+    // ---- files ----
+
+    private JFileChooser chooser(String ext, String what) {
+        JFileChooser c = new JFileChooser(arenaFile != null ? arenaFile.toAbsolutePath().getParent().toFile() : new java.io.File("."));
+        if (ext != null) {
+            c.setFileFilter(new FileNameExtensionFilter(what, ext));
+        }
+        return c;
+    }
+
+    private void newArena() {
+        JTextField name = new JTextField("arena", 12);
+        JSpinner w = new JSpinner(new SpinnerNumberModel(1219.2, 100.0, 20000.0, 10.0));
+        JSpinner h = new JSpinner(new SpinnerNumberModel(1219.2, 100.0, 20000.0, 10.0));
+        JPanel p = new JPanel(new java.awt.GridLayout(3, 2, 4, 4));
+        p.add(new JLabel("Name"));
+        p.add(name);
+        p.add(new JLabel("Width, mm"));
+        p.add(w);
+        p.add(new JLabel("Height, mm"));
+        p.add(h);
+        if (JOptionPane.showConfirmDialog(frame, p, "New arena", JOptionPane.OK_CANCEL_OPTION) != JOptionPane.OK_OPTION) {
+            return;
+        }
+        if (!confirmDiscard()) {
+            return;
+        }
+        Arena a = ArenaEdits.blank(name.getText().strip(), ((Number) w.getValue()).doubleValue(), ((Number) h.getValue()).doubleValue());
+        discardRun();
+        arenaFile = null;
+        model.load(a);
+        arenaView.fit();
+    }
+
+    private boolean confirmDiscard() {
+        return !model.dirty() || JOptionPane.showConfirmDialog(frame, "The arena has unsaved changes. Discard them?", "Unsaved changes",
+                JOptionPane.YES_NO_OPTION) == JOptionPane.YES_OPTION;
+    }
+
+    private void openArena() {
+        JFileChooser c = chooser("arena", "Arena files (.arena)");
+        if (c.showOpenDialog(frame) == JFileChooser.APPROVE_OPTION) {
+            openArena(c.getSelectedFile().toPath());
+        }
+    }
+
+    /** @param file an arena file to open (a bad one is refused; nothing loaded is lost) */
+    void openArena(Path file) {
+        if (!confirmDiscard()) {
+            return;
+        }
+        Arena a;
+        try {
+            a = ArenaFormat.load(file);
+        } catch (RuntimeException e) {
+            console.error(e.getMessage());
+            JOptionPane.showMessageDialog(frame, e.getMessage(), "Cannot open the arena", JOptionPane.ERROR_MESSAGE);
+            return;
+        }
+        discardRun();
+        arenaFile = file;
+        model.load(a);
+        Path s = SettingsFile.besideArena(file);
+        if (Files.isRegularFile(s)) {
+            settings = SettingsFile.load(s);
+            console.note("Settings loaded from " + s + ": " + settings.describe());
+        }
+        remember(file);
+        arenaView.fit();
+    }
+
+    private void save(boolean as) {
+        Path target = arenaFile;
+        if (as || target == null) {
+            JFileChooser c = chooser("arena", "Arena files (.arena)");
+            c.setSelectedFile(new java.io.File(model.arena().name() + ArenaFormat.EXTENSION));
+            if (c.showSaveDialog(frame) != JFileChooser.APPROVE_OPTION) {
+                return;
+            }
+            target = c.getSelectedFile().toPath();
+            if (!target.getFileName().toString().endsWith(ArenaFormat.EXTENSION)) {
+                target = target.resolveSibling(target.getFileName() + ArenaFormat.EXTENSION);
+            }
+        }
+        ArenaFormat.save(model.arena(), target);
+        arenaFile = target;
+        if (!settings.overrides().isEmpty()) {
+            SettingsFile.save(settings, SettingsFile.besideArena(target));
+        }
+        model.markSaved();
+        remember(target);
+        showMessage("Saved " + target, false);
+    }
+
+    private void remember(Path file) {
+        List<String> list = recent();
+        list.remove(file.toAbsolutePath().toString());
+        list.add(0, file.toAbsolutePath().toString());
+        while (list.size() > RECENT) {
+            list.remove(list.size() - 1);
+        }
+        prefs.put("recent", String.join("\n", list));
+        rebuildRecent();
+    }
+
+    private List<String> recent() {
+        List<String> out = new ArrayList<>();
+        for (String s : prefs.get("recent", "").split("\n")) {
+            if (!s.isBlank()) {
+                out.add(s);
+            }
+        }
+        return out;
+    }
+
+    private void rebuildRecent() {
+        recentMenu.removeAll();
+        for (String s : recent()) {
+            JMenuItem item = new JMenuItem(s);
+            item.addActionListener(e -> openArena(Path.of(s)));
+            recentMenu.add(item);
+        }
+        recentMenu.setEnabled(recentMenu.getItemCount() > 0);
+    }
+
+    private void saveRecording() {
+        PacedRunner r = runner;
+        JFileChooser c = chooser(null, null);
+        c.setFileSelectionMode(JFileChooser.DIRECTORIES_ONLY);
+        c.setDialogTitle("Folder for the run recording");
+        if (c.showSaveDialog(frame) != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        Path dir = c.getSelectedFile().toPath();
+        saveRecording(r, classpath, runSettings, dir);
+        showMessage("Recording saved in " + dir + " (see replay.txt)", false);
+    }
+
+    /**
+     * Save what replays a run exactly: the start arena, the stamped edits, the settings and the
+     * command line that replays them.
+     *
+     * @param r the run
+     * @param classpath where its controller came from (empty for a bundled one)
+     * @param settings the run's settings
+     * @param dir the folder to write to
+     */
+    static void saveRecording(PacedRunner r, List<Path> classpath, Settings settings, Path dir) {
+        try {
+            Files.createDirectories(dir);
+            RunSession s = r.session();
+            ArenaFormat.save(s.arena(), dir.resolve("start.arena"));
+            s.edits().save(dir.resolve("run.edits"));
+            SettingsFile.save(settings, dir.resolve("run.settings"));
+            StringBuilder cmd = new StringBuilder("java -jar khepera-sim.jar run --arena start.arena --controller ")
+                    .append(s.controllerClass()).append(" --seed ").append(s.seed()).append(" --edits run.edits");
+            if (!classpath.isEmpty()) {
+                cmd.append(" --classpath ");
+                cmd.append(String.join(java.io.File.pathSeparator, classpath.stream().map(p -> p.toAbsolutePath().toString()).toList()));
+            }
+            settings.overrides().forEach((k, v) -> cmd.append(" --set ").append(k).append('=').append(v));
+            Files.writeString(dir.resolve("replay.txt"), "# Replays the run exactly; add --seconds T for how long (the window ran to "
+                    + String.format(Locale.ROOT, "%.3f", r.latest().timeSeconds()) + " s) and --trace FILE for the trace:\n" + cmd + "\n");
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException("cannot write the recording in " + dir + ": " + e.getMessage(), e);
+        }
+    }
+
+    private void close() {
+        timer.stop();
+        PacedRunner r = runner;
+        runner = null;
+        if (r != null) {
+            r.stop();
+        }
+        frame.dispose();
+    }
+
+    // ---- controllers ----
+
+    private void loadClasses() {
+        JFileChooser c = chooser(null, null);
+        c.setFileSelectionMode(JFileChooser.FILES_AND_DIRECTORIES);
+        c.setDialogTitle("A folder with your .class files, or a jar");
+        if (c.showOpenDialog(frame) != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        Path p = c.getSelectedFile().toPath();
+        String guess = guessClass(p);
+        String name = JOptionPane.showInputDialog(frame, "The controller's class name (with its package, if any):", guess);
+        if (name == null || name.isBlank()) {
+            return;
+        }
+        useController(List.of(p), name.strip(), null);
+    }
+
+    private static String guessClass(Path p) {
+        if (Files.isDirectory(p)) {
+            try (var files = Files.walk(p, 4)) {
+                return files.filter(f -> f.toString().endsWith(".class") && !f.getFileName().toString().contains("$"))
+                        .map(f -> p.relativize(f).toString().replace(java.io.File.separatorChar, '.').replaceFirst("\\.class$", ""))
+                        .findFirst().orElse("Robot");
+            } catch (IOException e) {
+                return "Robot";
+            }
+        }
+        return "Robot";
+    }
+
+    private void useController(List<Path> cp, String name, Path source) {
+        try {
+            new ControllerCatalog(cp).load(name);
+        } catch (RuntimeException e) {
+            console.error(e.getMessage());
+            showMessage("Cannot use " + name + ": " + e.getMessage(), true);
+            return;
+        }
+        classpath = new ArrayList<>(cp);
+        javaSource = source;
+        controllerName = name;
+        discardRun();
+        if (((javax.swing.DefaultComboBoxModel<String>) controllers.getModel()).getIndexOf(name) < 0) {
+            controllers.addItem(name);
+        }
+        controllers.setSelectedItem(name);
+        console.note("Controller " + name + " loaded from " + cp + ". Press Start.");
+    }
+
+    private void openJava() {
+        JFileChooser c = chooser("java", "Java source (.java)");
+        if (c.showOpenDialog(frame) != JFileChooser.APPROVE_OPTION) {
+            return;
+        }
+        compileAndUse(c.getSelectedFile().toPath());
+    }
+
+    /** @param source compile it and make it the controller @return true if it compiled */
+    boolean compileAndUse(Path source) {
+        ControllerCompiler.Result result;
+        try {
+            Path out = Path.of(System.getProperty("user.home"), ".khepera-sim", "classes",
+                    source.getFileName().toString().replaceFirst("\\.java$", "") + "-" + Long.toHexString(System.nanoTime()));
+            result = ControllerCompiler.compile(source, out);
+        } catch (IOException | RuntimeException e) {
+            console.error("cannot compile " + source + ": " + e.getMessage());
+            showMessage("Cannot compile: " + e.getMessage(), true);
+            return false;
+        }
+        if (!result.success()) {
+            console.error("compiling " + source.getFileName() + " failed:\n" + result.report(source.toString()));
+            showMessage("Compile errors in " + source.getFileName() + ": see the console (line numbers given)", true);
+            javaSource = source;
+            updateActions();
+            return false;
+        }
+        if (!result.problems().isEmpty()) {
+            console.note(result.report(source.toString()));
+        }
+        console.note("Compiled " + source.getFileName() + " into " + result.classes());
+        useController(List.of(result.classes()), result.className(), source);
+        return true;
+    }
+
+    private void reload() {
+        if (javaSource != null) {
+            compileAndUse(javaSource);
+        } else {
+            discardRun();
+            console.note("Reloaded: the controller class is read afresh at Start.");
+        }
+    }
+
+    // ---- settings ----
+
+    private void showSettings() {
+        SettingsDialog.Result r = SettingsDialog.show(frame, settings, arenaFile);
+        if (r != null) {
+            settings = r.settings();
+            console.note("Settings: " + settings.describe() + (active() ? " (they apply from the next Reset or Start)" : ""));
+        }
+    }
+
+    private void askSeed() {
+        String s = JOptionPane.showInputDialog(frame, "Seed for the next run (empty = a new random seed each run):",
+                seed == null ? "" : seed.toString());
+        if (s == null) {
+            return;
+        }
+        seed = s.isBlank() ? null : Long.parseLong(s.strip());
+    }
+
+    /** @param s the settings for the next run (for tests and drivers) */
+    void setSettings(Settings s) {
+        settings = s;
+    }
+
+    /** @param factor one of the offered speeds, as the speed box would choose it (event thread) */
+    public void chooseSpeed(double factor) {
+        for (int i = 0; i < SPEEDS.length; i++) {
+            if (SPEEDS[i] == factor) {
+                speedBox.setSelectedIndex(i);
+                return;
+            }
+        }
+        throw new IllegalArgumentException("speed " + factor + " is not offered");
+    }
+
+    /** @return the controller the next run uses */
+    public String controllerName() {
+        return controllerName;
+    }
+
+    /** @param s the seed for the next run */
+    public void setSeed(long s) {
+        seed = s;
+    }
+}

@@ -1,0 +1,30 @@
+package org.kheperasim.sim.gui;
+
+import java.awt.Dimension;
+import java.awt.Graphics;
+import java.awt.Graphics2D;
+import java.util.function.Supplier;
+import javax.swing.JComponent;
+import org.kheperasim.sim.engine.RobotView;
+
+/** Hosts {@link SensorRenderer#draw} for the first robot of the latest snapshot. */
+final class SensorPanel extends JComponent {
+    private final Supplier<RobotView> robot;
+
+    SensorPanel(Supplier<RobotView> robot) {
+        this.robot = robot;
+        setName("sensorPanel");
+        setPreferredSize(new Dimension(330, SensorRenderer.preferredHeight()));
+        setMinimumSize(new Dimension(300, SensorRenderer.preferredHeight()));
+    }
+
+    @Override
+    protected void paintComponent(Graphics g) {
+        Graphics2D g2 = (Graphics2D) g.create();
+        try {
+            SensorRenderer.draw(g2, getWidth(), getHeight(), robot.get());
+        } finally {
+            g2.dispose();
+        }
+    }
+}

@@ -1,0 +1,134 @@
+package org.kheperasim.sim.run;
+
+import java.io.File;
+import java.io.IOException;
+import java.io.StringWriter;
+import java.net.URISyntaxException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Locale;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import javax.tools.Diagnostic;
+import javax.tools.DiagnosticCollector;
+import javax.tools.JavaCompiler;
+import javax.tools.JavaFileObject;
+import javax.tools.StandardJavaFileManager;
+import javax.tools.ToolProvider;
+import org.kheperasim.api.Controller;
+
+/**
+ * Compiles a student's controller source ({@code Robot.java}) with the JDK's compiler against the
+ * simulator's API, so the window can run a {@code .java} file directly. Errors come back with
+ * their line numbers; the class is then loaded through a {@link ControllerCatalog} on the output
+ * folder (a fresh class loader each time, so a recompiled class is picked up).
+ */
+public final class ControllerCompiler {
+    private static final Pattern PACKAGE = Pattern.compile("^\\s*package\\s+([\\w.]+)\\s*;", Pattern.MULTILINE);
+
+    /**
+     * One compiler message.
+     *
+     * @param error true for an error, false for a warning
+     * @param line the line in the source, 1-based (0 when it concerns no line)
+     * @param column the column, 1-based (0 when unknown)
+     * @param message what the compiler said
+     */
+    public record Problem(boolean error, long line, long column, String message) {
+        /** @param file the source's name @return {@code Robot.java:12:5: error: ...} */
+        public String format(String file) {
+            return file + ":" + line + (column > 0 ? ":" + column : "") + ": " + (error ? "error" : "warning") + ": " + message;
+        }
+    }
+
+    /**
+     * What a compilation produced.
+     *
+     * @param success true when it compiled
+     * @param className the controller's class name (with its package, if any)
+     * @param classes the folder the classes went to
+     * @param problems errors and warnings, in order
+     */
+    public record Result(boolean success, String className, Path classes, List<Problem> problems) {
+        /** Copies the list. */
+        public Result {
+            problems = List.copyOf(problems);
+        }
+
+        /** @param file how to name the source @return every problem, one per line */
+        public String report(String file) {
+            StringBuilder sb = new StringBuilder();
+            for (Problem p : problems) {
+                sb.append(p.format(file)).append('\n');
+            }
+            return sb.toString();
+        }
+    }
+
+    private ControllerCompiler() {
+    }
+
+    /**
+     * Compile one source file.
+     *
+     * @param source the {@code .java} file
+     * @param classes the folder the classes go to (created)
+     * @return the result, with the compiler's messages
+     * @throws IllegalStateException if this Java has no compiler (a JRE rather than a JDK)
+     * @throws IOException if the source cannot be read
+     */
+    public static Result compile(Path source, Path classes) throws IOException {
+        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
+        if (javac == null) {
+            throw new IllegalStateException("this Java runtime has no compiler (it is a JRE, not a JDK); run the"
+                    + " simulator with a JDK 17+, or compile yourself: javac -cp khepera-sim.jar -d out "
+                    + source.getFileName());
+        }
+        String text = Files.readString(source, StandardCharsets.UTF_8);
+        String simple = source.getFileName().toString().replaceFirst("\\.java$", "");
+        Matcher m = PACKAGE.matcher(text);
+        String className = m.find() ? m.group(1) + "." + simple : simple;
+        Files.createDirectories(classes);
+        DiagnosticCollector<JavaFileObject> diagnostics = new DiagnosticCollector<>();
+        List<String> options = List.of("--release", "17", "-proc:none", "-g", "-d", classes.toString(),
+                "-classpath", classpath());
+        boolean ok;
+        StringWriter out = new StringWriter();
+        try (StandardJavaFileManager files = javac.getStandardFileManager(diagnostics, Locale.ROOT, StandardCharsets.UTF_8)) {
+            ok = javac.getTask(out, files, diagnostics, options, null, files.getJavaFileObjects(source.toFile())).call();
+        }
+        List<Problem> problems = new ArrayList<>();
+        for (Diagnostic<? extends JavaFileObject> d : diagnostics.getDiagnostics()) {
+            if (d.getKind() == Diagnostic.Kind.NOTE) {
+                continue;
+            }
+            problems.add(new Problem(d.getKind() == Diagnostic.Kind.ERROR, StrictMath.max(0, d.getLineNumber()),
+                    StrictMath.max(0, d.getColumnNumber()), d.getMessage(Locale.ROOT)));
+        }
+        if (!ok && problems.isEmpty()) {
+            problems.add(new Problem(true, 0, 0, out.toString().strip()));
+        }
+        return new Result(ok, className, classes, problems);
+    }
+
+    /** The API classes, and whatever this application runs from (the jar, or target/classes). */
+    static String classpath() {
+        Set<String> entries = new LinkedHashSet<>();
+        try {
+            entries.add(Path.of(Controller.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString());
+        } catch (URISyntaxException | RuntimeException e) {
+            // fall back to java.class.path below
+        }
+        for (String e : System.getProperty("java.class.path", "").split(File.pathSeparator)) {
+            if (!e.isBlank()) {
+                entries.add(e);
+            }
+        }
+        return String.join(File.pathSeparator, entries);
+    }
+}

@@ -1,0 +1,250 @@
+package org.kheperasim.sim.run;
+
+import java.io.Writer;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Objects;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.arena.Pose;
+import org.kheperasim.sim.engine.Engine;
+import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.SimRobot;
+import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.SnapshotListener;
+import org.kheperasim.sim.engine.World;
+import org.kheperasim.sim.host.ConsoleSink;
+import org.kheperasim.sim.host.ControllerHost;
+import org.kheperasim.sim.host.ControllerStatus;
+import org.kheperasim.sim.host.Lockstep;
+import org.kheperasim.sim.trace.TraceWriter;
+
+/**
+ * One run that can be driven a piece at a time: the engine, a controller on every robot start of
+ * the arena, the lockstep that runs them, and optionally a trace. {@link Simulation} runs a
+ * session to its end in one call; the window runs one in chunks against the wall clock, applying
+ * an instructor's arena edits between chunks and recording each with its simulated time in an
+ * {@link EditLog}, so that the run replays exactly.
+ *
+ * <p>Every method that advances or edits must be called from one thread, the session's owner
+ * (the engine's thread). Chunk boundaries are tick boundaries, so how a run is cut into chunks
+ * never changes what it computes.
+ */
+public final class RunSession implements AutoCloseable {
+    private final Arena arena;
+    private final long seed;
+    private final Settings settings;
+    private final Engine engine;
+    private final List<ControllerHost> hosts = new ArrayList<>();
+    private final List<SimRobot> robots = new ArrayList<>();
+    private final Lockstep lockstep;
+    private final String controllerClass;
+    private final EditLog edits = new EditLog();
+    private TraceWriter trace;
+    private long sampleNanos;
+    private boolean closed;
+
+    /**
+     * Build a run: load the controller once per robot (a class loader each, so robots share no
+     * static state), add the robots in arena order and attach their hosts.
+     *
+     * @param arena the arena
+     * @param controllerName a bundled controller or a class on the classpath
+     * @param catalog where controller classes come from
+     * @param seed the run's seed
+     * @param settings sensor, motor and link settings
+     * @param console where controller messages and errors go
+     * @param hostOptions hang timeout and test jitter
+     */
+    public RunSession(Arena arena, String controllerName, ControllerCatalog catalog, long seed, Settings settings,
+            ConsoleSink console, ControllerHost.Options hostOptions) {
+        this.arena = Objects.requireNonNull(arena, "no arena given");
+        Objects.requireNonNull(controllerName, "no controller given");
+        this.seed = seed;
+        this.settings = settings;
+        this.engine = new Engine(new World(arena), seed);
+        String cls = null;
+        for (int i = 0; i < arena.robots().size(); i++) {
+            Pose start = arena.robots().get(i);
+            Class<?> type = catalog.load(controllerName);
+            cls = type.getName();
+            String name = arena.robots().size() == 1 ? type.getSimpleName() : type.getSimpleName() + "#" + i;
+            SimRobot robot = engine.addRobot(name, start, settings);
+            ControllerHost host = new ControllerHost(robot, type, console, hostOptions);
+            engine.attach(robot, host, r -> host.status().name().toLowerCase(Locale.ROOT));
+            hosts.add(host);
+            robots.add(robot);
+        }
+        this.controllerClass = cls;
+        this.lockstep = new Lockstep(engine, hosts, hostOptions.hangTimeoutNanos());
+    }
+
+    /**
+     * Write a trace of this run. Call before the first {@link #runTo}.
+     *
+     * @param out where the text goes (closed by {@link #close()})
+     * @param sampleMillis sample period, whole ms
+     */
+    public void trace(Writer out, long sampleMillis) {
+        Map<String, String> header = new LinkedHashMap<>();
+        header.put("seed", Long.toString(seed));
+        header.put("arena", arena.name() + " sha256=" + ArenaFormat.sha256(arena));
+        header.put("controller", controllerClass);
+        header.put("settings", settings.describe());
+        header.put("sample-ms", Long.toString(sampleMillis));
+        trace = new TraceWriter(out, header);
+        sampleNanos = sampleMillis * Engine.TICK_NANOS;
+        engine.addListener(trace, sampleNanos);
+    }
+
+    /**
+     * @param listener receives snapshots on the session's thread (keep it short, never block)
+     * @param periodNanos how often, a whole number of 1 ms ticks
+     */
+    public void addListener(SnapshotListener listener, long periodNanos) {
+        engine.addListener(listener, periodNanos);
+    }
+
+    /**
+     * Run until simulated time reaches {@code endNanos} or every controller has ended.
+     *
+     * @param endNanos simulated time, ns
+     * @return true while the run can go on (some controller still runs)
+     */
+    public boolean runTo(long endNanos) {
+        if (closed) {
+            throw new IllegalStateException("this run has been stopped; reset to start a new one");
+        }
+        lockstep.run(endNanos);
+        return !finished();
+    }
+
+    /**
+     * Run to {@code endNanos}, applying the stamped edits of {@code replay} at their times on the
+     * way (edits stamped after {@code endNanos} are left for a later call).
+     *
+     * @param endNanos simulated time, ns
+     * @param replay recorded edits, in time order
+     * @return true while the run can go on
+     */
+    public boolean runTo(long endNanos, EditLog replay) {
+        for (EditLog.Edit e : replay.edits()) {
+            if (e.timeNanos() < engine.timeNanos() || e.timeNanos() > endNanos) {
+                continue;
+            }
+            runTo(e.timeNanos());
+            if (engine.timeNanos() != e.timeNanos()) {
+                return false;
+            }
+            edit(e.arena());
+        }
+        return runTo(endNanos);
+    }
+
+    /**
+     * Apply an arena edit now, between ticks, and record it with the simulated time.
+     *
+     * @param edited the edited arena (same size)
+     */
+    public void edit(Arena edited) {
+        engine.edit(edited);
+        edits.add(engine.timeNanos(), edited);
+    }
+
+    /** @return the edits applied so far, stamped with their simulated times */
+    public EditLog edits() {
+        return edits;
+    }
+
+    /** @return true when every controller has ended */
+    public boolean finished() {
+        return !engine.anyDriverRunning();
+    }
+
+    /** @return simulated time, ns */
+    public long timeNanos() {
+        return engine.timeNanos();
+    }
+
+    /** @return the world now (call between chunks, on the session's thread) */
+    public Snapshot snapshot() {
+        return engine.snapshot();
+    }
+
+    /** @return the engine (for listeners and tests) */
+    public Engine engine() {
+        return engine;
+    }
+
+    /** @return the run's seed */
+    public long seed() {
+        return seed;
+    }
+
+    /** @return the arena the run started from */
+    public Arena arena() {
+        return arena;
+    }
+
+    /** @return the controller's class name */
+    public String controllerClass() {
+        return controllerClass;
+    }
+
+    /** @return the controller hosts, in robot order */
+    public List<ControllerHost> hosts() {
+        return List.copyOf(hosts);
+    }
+
+    /**
+     * Stop the controllers and finish the trace (the final sample is written when the end falls
+     * on a sample time). Idempotent.
+     */
+    @Override
+    public void close() {
+        if (closed) {
+            return;
+        }
+        closed = true;
+        try {
+            if (trace != null && engine.timeNanos() % sampleNanos == 0) {
+                trace.onSnapshot(engine.snapshot());
+            }
+        } finally {
+            lockstep.stopAll();
+            if (trace != null) {
+                trace.close();
+            }
+        }
+    }
+
+    /** @return the trace's SHA-256 after {@link #close()}, or null without a trace */
+    public String traceSha256() {
+        return trace == null ? null : trace.sha256();
+    }
+
+    /**
+     * @param wallSeconds real time the run took, s
+     * @return the run's result (after {@link #close()})
+     */
+    public RunResult result(double wallSeconds) {
+        List<RunResult.RobotResult> results = new ArrayList<>();
+        for (int i = 0; i < robots.size(); i++) {
+            SimRobot r = robots.get(i);
+            ControllerHost h = hosts.get(i);
+            results.add(new RunResult.RobotResult(r.name(), r.x(), r.y(), r.headingDeg(), r.distanceTravelledMm(),
+                    r.collisions(), r.visitedPercent(), h.status(),
+                    h.failure() == null ? null : h.failure().toString(), r.regionsEntered()));
+        }
+        return new RunResult(seed, arena.name(), controllerClass, engine.timeNanos() / 1e9, wallSeconds,
+                traceSha256(), results, engine.world().capsInRegions(), engine.world().capCount());
+    }
+
+    /** @return the first robot's controller status */
+    public ControllerStatus status() {
+        return hosts.isEmpty() ? ControllerStatus.NOT_STARTED : hosts.get(0).status();
+    }
+}

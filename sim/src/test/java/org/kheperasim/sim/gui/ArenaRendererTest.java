@@ -1,0 +1,138 @@
+package org.kheperasim.sim.gui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.Color;
+import java.awt.Graphics2D;
+import java.awt.image.BufferedImage;
+import java.util.List;
+import java.util.Set;
+import org.junit.jupiter.api.Test;
+import org.kheperasim.api.GripperState;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.arena.Cap;
+import org.kheperasim.sim.arena.Pose;
+import org.kheperasim.sim.arena.Wall;
+import org.kheperasim.sim.engine.CapView;
+import org.kheperasim.sim.engine.Contact;
+import org.kheperasim.sim.engine.GripperView;
+import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.engine.Snapshot;
+
+/** The renderer draws into an image headless: things appear where the model says, in their colours. */
+class ArenaRendererTest {
+    private static final int SIZE = 500;
+
+    /** A 1000 mm arena: one wall along y = 800 from x = 200 to 800, a cap at (200, 200), the robot start at (500, 300). */
+    private static Arena arena() {
+        return new Arena("t", 1000, 1000, List.of(new Pose(500, 300, 90)), List.of(new Wall(200, 800, 800, 800, 20)),
+                List.of(), List.of(new Cap(200, 200, 15)), List.of());
+    }
+
+    private static BufferedImage render(Arena a, Snapshot s, ArenaRenderer.Overlay o) {
+        BufferedImage img = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        ViewTransform v = view(a);
+        ArenaRenderer.draw(g, v, SIZE, SIZE, a, s, o, new ArenaRenderer.Options(false, false, false, false));
+        g.dispose();
+        return img;
+    }
+
+    private static ViewTransform view(Arena a) {
+        ViewTransform v = new ViewTransform();
+        v.fit(a.width(), a.height(), SIZE, SIZE, 0);
+        return v;
+    }
+
+    private static Color at(BufferedImage img, ViewTransform v, double x, double y) {
+        return new Color(img.getRGB((int) v.sx(x), (int) v.sy(y)));
+    }
+
+    @Test
+    void wallCapRobotAndFloorAreWhereTheModelSays() {
+        Arena a = arena();
+        BufferedImage img = render(a, null, ArenaRenderer.Overlay.NONE);
+        ViewTransform v = view(a);
+        assertEquals(0.5, v.scale(), 1e-9);
+        assertEquals(ArenaRenderer.WALL, at(img, v, 500, 800), "the wall's middle");
+        assertEquals(ArenaRenderer.FLOOR, at(img, v, 500, 850), "floor above the wall");
+        assertEquals(ArenaRenderer.FLOOR, at(img, v, 100, 800), "floor beyond the wall's end");
+        assertEquals(ArenaRenderer.CAP, at(img, v, 200, 200), "the cap's centre");
+        Color robot = at(img, v, 490, 290);
+        assertTrue(robot.getGreen() > robot.getRed() + 40, "the robot start is drawn green: " + robot);
+        assertEquals(ArenaRenderer.FLOOR, at(img, v, 500, 500), "nothing between robot and wall");
+    }
+
+    @Test
+    void aSnapshotDrawsTheRobotWhereItIsNowAndCapsWhereTheyAre() {
+        Arena a = arena();
+        RobotView r = new RobotView(0, "r", 700, 500, 0, 0, 0, 0, 0, Contact.NONE, new int[8], new int[8], 0, 0, "running",
+                new GripperView(180, false, GripperState.OPEN, false, 0, -1));
+        Snapshot s = new Snapshot(1_000_000_000L, List.of(r), List.of(new CapView(0, 300, 300, 15, -1)));
+        BufferedImage img = render(a, s, ArenaRenderer.Overlay.NONE);
+        ViewTransform v = view(a);
+        assertEquals(ArenaRenderer.ROBOT, at(img, v, 690, 490), "the robot where the snapshot puts it");
+        assertEquals(ArenaRenderer.FLOOR, at(img, v, 490, 290), "not at its start");
+        assertEquals(ArenaRenderer.CAP, at(img, v, 300, 300), "the cap where the snapshot puts it");
+        assertEquals(ArenaRenderer.FLOOR, at(img, v, 200, 200), "not where the arena file had it");
+    }
+
+    @Test
+    void selectionAndRefusalAreVisible() {
+        Arena a = arena();
+        ViewTransform v = view(a);
+        BufferedImage plain = render(a, null, ArenaRenderer.Overlay.NONE);
+        BufferedImage selected = render(a, null, new ArenaRenderer.Overlay(Set.of(new Item(Item.Kind.WALL, 0)), null, null, null));
+        // The wall's end handle: a white square with a blue edge.
+        assertEquals(Color.WHITE, at(selected, v, 200, 800));
+        assertFalse(at(plain, v, 200, 800).equals(Color.WHITE));
+        BufferedImage refused = render(a, null, new ArenaRenderer.Overlay(Set.of(), null, new double[] {500, 500, 40}, null));
+        assertEquals(ArenaRenderer.REFUSED, at(refused, v, 540, 500), "a red ring where the placement was refused");
+    }
+
+    @Test
+    void hitTestingFindsWhatIsDrawn() {
+        Arena a = arena();
+        assertEquals(new Item(Item.Kind.WALL, 0), ArenaRenderer.hit(a, 500, 805, 2));
+        assertEquals(new Item(Item.Kind.CAP, 0), ArenaRenderer.hit(a, 205, 195, 2));
+        assertEquals(new Item(Item.Kind.ROBOT, 0), ArenaRenderer.hit(a, 510, 310, 2));
+        assertNull(ArenaRenderer.hit(a, 500, 600, 2));
+        assertEquals(new ArenaRenderer.Handle(new Item(Item.Kind.WALL, 0), 1),
+                ArenaRenderer.handleAt(a, Set.of(new Item(Item.Kind.WALL, 0)), 799, 801, 5));
+    }
+
+    @Test
+    void sensorPanelDrawsBarsAndTheGripperState() {
+        int[] prox = new int[8];
+        prox[2] = 1023;
+        RobotView r = new RobotView(0, "r", 1, 1, 0, 3, -3, 10, 20, Contact.NONE, prox, new int[8], 0, 0, "running",
+                new GripperView(250, false, GripperState.CLOSED, true, 120, 0));
+        BufferedImage img = new BufferedImage(330, SensorRenderer.preferredHeight(), BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        SensorRenderer.draw(g, 330, img.getHeight(), r);
+        g.dispose();
+        int red = count(img, SensorRenderer.PROX);
+        assertTrue(red > 200, "a full proximity bar for sensor 2: " + red + " px");
+        assertTrue(count(img, new Color(0xFF3030)) > 100, "the object sensor's LED is lit");
+        BufferedImage none = new BufferedImage(330, SensorRenderer.preferredHeight(), BufferedImage.TYPE_INT_RGB);
+        g = none.createGraphics();
+        SensorRenderer.draw(g, 330, none.getHeight(), null);
+        g.dispose();
+        assertEquals(0, count(none, new Color(0xFF3030)), "no LED before a run");
+    }
+
+    private static int count(BufferedImage img, Color c) {
+        int n = 0;
+        for (int y = 0; y < img.getHeight(); y++) {
+            for (int x = 0; x < img.getWidth(); x++) {
+                if (img.getRGB(x, y) == c.getRGB()) {
+                    n++;
+                }
+            }
+        }
+        return n;
+    }
+}

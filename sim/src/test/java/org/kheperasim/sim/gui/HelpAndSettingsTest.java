@@ -1,0 +1,55 @@
+package org.kheperasim.sim.gui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.run.SettingsFile;
+
+/** The manual is inside the application; settings profiles round-trip; the settings table covers the catalogue. */
+class HelpAndSettingsTest {
+
+    @Test
+    void everyManualPageIsInsideTheApplicationAndRendersAsHtml() {
+        for (String page : HelpDialog.PAGES) {
+            String text = HelpDialog.text(page);
+            assertNotNull(text, page + " must be copied from docs/ into the jar");
+            String html = Markdown.toHtml(text);
+            assertTrue(html.contains("<h1>"), page);
+        }
+        assertEquals("<html><body style='font-family:sans-serif; margin:10px'><h2>A &lt;b&gt;</h2><ul><li><code>x</code></li></ul>"
+                + "<pre style='background:#f0f0f0'>a &amp; b\n</pre></body></html>", Markdown.toHtml("## A <b>\n* `x`\n```\na & b\n```"));
+    }
+
+    @Test
+    void aProfileRoundTripsAndABadLineIsNamed(@TempDir Path dir) {
+        Settings s = Settings.defaults().with("prox.3.dead", "true").with("motor.left.calibration", "0.8").with("link.baud", "9600");
+        Path file = dir.resolve("worn.settings");
+        SettingsFile.save(s, file);
+        assertEquals(s, SettingsFile.load(file));
+        assertEquals(dir.resolve("maze.settings"), SettingsFile.besideArena(dir.resolve("maze.arena")));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> SettingsFile.parse("# c\nprox.3.gain=11\n", "p"));
+        assertTrue(e.getMessage().startsWith("p:2: "), e.getMessage());
+    }
+
+    @Test
+    void theSettingsTableShowsEveryKeyAndEditsThroughSettingsChecks() {
+        SettingsDialog.Model m = new SettingsDialog.Model(Settings.defaults());
+        assertEquals(Settings.catalogue().size(), m.getRowCount());
+        int row = -1;
+        for (int i = 0; i < m.getRowCount(); i++) {
+            if (m.getValueAt(i, 0).equals("prox.5.gain")) {
+                row = i;
+            }
+        }
+        m.setValueAt("0.5", row, 1);
+        assertEquals(Settings.defaults().with("prox.5.gain", "0.5"), m.settings());
+        m.setValueAt("abc", row, 1);
+        assertThrows(IllegalArgumentException.class, m::settings);
+    }
+}
