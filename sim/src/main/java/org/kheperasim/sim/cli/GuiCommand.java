@@ -16,7 +16,7 @@ import picocli.CommandLine.Option;
 final class GuiCommand implements Callable<Integer> {
 
     @Option(names = "--arena", paramLabel = "FILE", defaultValue = "maze",
-            description = "an arena file, or a bundled arena: lab, maze (default: ${DEFAULT-VALUE})")
+            description = "an arena file, or a bundled arena (lab, maze, two-rooms; see list) (default: ${DEFAULT-VALUE})")
     String arena;
 
     @Option(names = "--controller", paramLabel = "NAME", defaultValue = "WallFollower",

@@ -22,7 +22,7 @@ import picocli.CommandLine.Option;
 final class RunCommand implements Callable<Integer> {
 
     @Option(names = "--arena", required = true, paramLabel = "FILE",
-            description = "an arena file, or a bundled arena: lab, maze")
+            description = "an arena file, or a bundled arena (lab, maze, two-rooms; see list)")
     String arena;
 
     @Option(names = "--controller", required = true, paramLabel = "NAME",
