@@ -46,8 +46,17 @@ public final class PacedRunner implements AutoCloseable {
     public static final long STEP_NANOS = 10 * Engine.TICK_NANOS;
     /** Real time a paced chunk aims to cover, ns: short enough for smooth motion, long enough to be cheap. */
     private static final long CHUNK_WALL_NANOS = 4_000_000L;
-    /** Simulated time of a chunk at full speed: edits and pauses still take effect within a blink. */
-    private static final long MAX_CHUNK_NANOS = 100 * Engine.TICK_NANOS;
+    /**
+     * At full speed a chunk is sized to last about this long in real time, from the speed of the
+     * last chunk: edits and pauses still take effect within a blink, and the hand-off between the
+     * controller's thread and this one (expensive on a small machine) is rare.
+     */
+    private static final long FULL_SPEED_CHUNK_WALL_NANOS = 20_000_000L;
+    /** Bounds of a full-speed chunk, simulated ns. */
+    private static final long MIN_FULL_CHUNK_NANOS = 100 * Engine.TICK_NANOS;
+    private static final long MAX_FULL_CHUNK_NANOS = 10_000 * Engine.TICK_NANOS;
+    /** Simulated ns per wall ns of the last full-speed chunk. */
+    private double chunkRate;
     /** A run that falls this far behind its schedule stops trying to catch up. */
     private static final long MAX_LAG_NANOS = 250_000_000L;
 
@@ -228,7 +237,7 @@ public final class PacedRunner implements AutoCloseable {
                 if (state != State.RUNNING) {
                     continue;
                 }
-                long chunk = speed == MAX_SPEED ? MAX_CHUNK_NANOS
+                long chunk = speed == MAX_SPEED ? fullSpeedChunk()
                         : StrictMath.max(Engine.TICK_NANOS, (long) (CHUNK_WALL_NANOS * speed) / Engine.TICK_NANOS * Engine.TICK_NANOS);
                 long target = StrictMath.min(session.timeNanos() + chunk, StrictMath.max(endNanos, session.timeNanos()));
                 if (target <= session.timeNanos()) {
@@ -258,8 +267,19 @@ public final class PacedRunner implements AutoCloseable {
         }
     }
 
+    private long fullSpeedChunk() {
+        long ticks = (long) (chunkRate * FULL_SPEED_CHUNK_WALL_NANOS) / Engine.TICK_NANOS;
+        return StrictMath.max(MIN_FULL_CHUNK_NANOS, StrictMath.min(MAX_FULL_CHUNK_NANOS, ticks * Engine.TICK_NANOS));
+    }
+
     private void chunk(long target) {
+        long wall = System.nanoTime();
+        long sim = session.timeNanos();
         boolean more = session.runTo(target);
+        long took = System.nanoTime() - wall;
+        if (took > 0) {
+            chunkRate = (session.timeNanos() - sim) / (double) took;
+        }
         latest.set(session.snapshot());
         if (!more) {
             setState(State.FINISHED);
