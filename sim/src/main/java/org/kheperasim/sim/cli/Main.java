@@ -10,6 +10,7 @@ import picocli.CommandLine.Command;
 @Command(name = "khepera-sim", mixinStandardHelpOptions = true, version = "khepera-sim 0.1.0",
         description = "A deterministic Khepera robot simulator. Runs a controller class in an arena.",
         subcommands = {RunCommand.class, BenchCommand.class, SettingsCommand.class, ListCommand.class,
+            ServeCommand.class,
             CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
 
