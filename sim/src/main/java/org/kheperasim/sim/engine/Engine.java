@@ -242,7 +242,7 @@ public final class Engine {
             r.copyVisible(prox, light);
             views.add(new RobotView(r.id(), r.name(), r.x(), r.y(), r.headingDeg(), r.speedLeft(), r.speedRight(),
                     r.encoderLeft(), r.encoderRight(), r.contact(), prox, light, r.collisions(),
-                    r.distanceTravelledMm(), driverStatus.get(r.id()).apply(r), r.gripperView()));
+                    r.distanceTravelledMm(), driverStatus.get(r.id()).apply(r), r.gripperView(), r.leds()));
         }
         return new Snapshot(timeNanos(), views, world.caps());
     }

@@ -21,15 +21,22 @@ import java.util.Arrays;
  * @param distanceMm path length so far, mm
  * @param controller the controller's state, as text (running, finished, failed, hung, none)
  * @param gripper the gripper turret's state
+ * @param leds the robot's two LEDs as set by the protocol's {@code L} command: bit 0 the lateral LED,
+ *     bit 1 the front LED, 1 = on (always 0 in a run with a controller: the api has no LEDs)
  */
 public record RobotView(int id, String name, double x, double y, double headingDeg, int speedLeft, int speedRight,
         int encoderLeft, int encoderRight, Contact contact, int[] proximity, int[] light, int collisions,
-        double distanceMm, String controller, GripperView gripper) {
+        double distanceMm, String controller, GripperView gripper, int leds) {
 
     /** Copies the arrays, so the view cannot change. */
     public RobotView {
         proximity = proximity.clone();
         light = light.clone();
+    }
+
+    /** @param led 0 lateral, 1 front @return true when that LED is on */
+    public boolean led(int led) {
+        return (leds & (1 << led)) != 0;
     }
 
     /** @return a copy of the proximity values */
@@ -61,7 +68,7 @@ public record RobotView(int id, String name, double x, double y, double headingD
                 && v.encoderLeft == encoderLeft && v.encoderRight == encoderRight && v.contact == contact
                 && Arrays.equals(v.proximity, proximity) && Arrays.equals(v.light, light)
                 && v.collisions == collisions && v.distanceMm == distanceMm && v.controller.equals(controller)
-                && v.gripper.equals(gripper);
+                && v.gripper.equals(gripper) && v.leds == leds;
     }
 
     @Override

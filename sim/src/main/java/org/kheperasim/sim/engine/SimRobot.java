@@ -172,6 +172,15 @@ public final class SimRobot {
     private final double mmPerPulse;
     private List<Light> lights;
 
+    // The robot's own motor modes, used only when something talks to it like a robot (a protocol
+    // server): position mode (C and J) and the LEDs. A run with a controller never enters them.
+    private final PositionControl positionLeft = new PositionControl();
+    private final PositionControl positionRight = new PositionControl();
+    private boolean positionMode;
+    private long nextPositionUpdate;
+    private MotorMode motorMode = MotorMode.SPEED;
+    private int leds;
+
     private final Noise[] proxNoise = new Noise[IrSensor.COUNT];
     private final Noise[] lightNoise = new Noise[IrSensor.COUNT];
     private final Noise motorNoiseL;
@@ -337,6 +346,10 @@ public final class SimRobot {
 
     /** Stop the wheels at once: the controller has ended, failed or been stopped (robot-link sends D,0,0). */
     public void emergencyStop() {
+        positionMode = false;
+        positionLeft.cancel();
+        positionRight.cancel();
+        motorMode = MotorMode.SPEED;
         askedLeft = 0;
         askedRight = 0;
         commands.clear();
@@ -484,6 +497,212 @@ public final class SimRobot {
         return askedRight;
     }
 
+    // ---------------------------------------------------------------- on the robot (a protocol server)
+
+    /**
+     * The robot's three motor modes, as its {@code K} status reports them.
+     */
+    public enum MotorMode {
+        /** {@code D}: the wheels hold a speed. */
+        SPEED(0),
+        /** {@code C}: the wheels move to position targets along a trapezoid profile. */
+        POSITION(1),
+        /** {@code P}: raw PWM. */
+        PWM(2);
+
+        private final int code;
+
+        MotorMode(int code) {
+            this.code = code;
+        }
+
+        /** @return the number {@code K} reports for this mode */
+        public int code() {
+            return code;
+        }
+    }
+
+    /**
+     * Set the wheel speeds at once, as the robot does when a {@code D} command has arrived (the
+     * serial line is the client's: a protocol server calls this when the command's characters are
+     * in). Leaves position and PWM mode.
+     *
+     * @param left left speed, units (≈ 8 mm/s), -127..127
+     * @param right right speed, units
+     */
+    public void driveSpeeds(int left, int right) {
+        leavePositionMode(MotorMode.SPEED);
+        askedLeft = left;
+        askedRight = right;
+        setSpeedsNow(left, right);
+    }
+
+    /**
+     * Raw PWM ({@code P}), approximated: the simulator has no motor model, so a duty of d/255
+     * gives about d/2 speed units (full duty ≈ 127 units ≈ 1 m/s, the robot's top speed).
+     *
+     * @param left left PWM, -255..255
+     * @param right right PWM, -255..255
+     */
+    public void drivePwm(int left, int right) {
+        leavePositionMode(MotorMode.PWM);
+        askedLeft = pwmToSpeed(left);
+        askedRight = pwmToSpeed(right);
+        setSpeedsNow(askedLeft, askedRight);
+    }
+
+    /** @param pwm -255..255 @return the speed it gives, units */
+    public static int pwmToSpeed(int pwm) {
+        return (int) StrictMath.rint(StrictMath.max(-255, StrictMath.min(255, pwm)) * 127.0 / 255.0);
+    }
+
+    private void leavePositionMode(MotorMode mode) {
+        positionMode = false;
+        positionLeft.cancel();
+        positionRight.cancel();
+        motorMode = mode;
+    }
+
+    /**
+     * Move the wheels to absolute position-counter targets ({@code C,l,r}) along the profile set by
+     * {@link #positionProfile}; the move starts at the next tick and is updated every 10 ms.
+     *
+     * @param left left target, pulses (0.08 mm)
+     * @param right right target, pulses
+     */
+    public void moveToPositions(int left, int right) {
+        positionLeft.moveTo(left, speedLeft);
+        positionRight.moveTo(right, speedRight);
+        positionMode = true;
+        motorMode = MotorMode.POSITION;
+        nextPositionUpdate = 0;
+    }
+
+    /**
+     * The profile of position moves ({@code J,max_l,acc_l,max_r,acc_r}); see {@link PositionControl}.
+     *
+     * @param maxLeft left maximum speed, units
+     * @param accLeft left acceleration, 1/256 unit per 10 ms
+     * @param maxRight right maximum speed, units
+     * @param accRight right acceleration, 1/256 unit per 10 ms
+     */
+    public void positionProfile(int maxLeft, int accLeft, int maxRight, int accRight) {
+        positionLeft.profile(maxLeft, accLeft);
+        positionRight.profile(maxRight, accRight);
+    }
+
+    /**
+     * The motion status as {@code K} reports it: per wheel (left, then right) whether it is on
+     * target (1/0), its mode ({@link MotorMode#code()}), and its error: in position mode the
+     * distance to the target in pulses, in speed and PWM mode 0 (the simulated wheel holds the
+     * asked speed exactly).
+     *
+     * @return {Tl, Ml, El, Tr, Mr, Er}
+     */
+    public int[] motionStatus() {
+        int[] k = new int[6];
+        status(k, 0, positionLeft, encoderLeft);
+        status(k, 3, positionRight, encoderRight);
+        return k;
+    }
+
+    private void status(int[] k, int at, PositionControl control, double position) {
+        k[at + 1] = motorMode.code();
+        if (motorMode == MotorMode.POSITION) {
+            k[at] = control.onTarget(position) ? 1 : 0;
+            k[at + 2] = (int) StrictMath.rint(control.target() - position);
+        } else {
+            k[at] = 1;
+            k[at + 2] = 0;
+        }
+    }
+
+    /** @return the motor mode now */
+    public MotorMode motorMode() {
+        return motorMode;
+    }
+
+    /**
+     * Set the position counters at once ({@code G,l,r} arrived).
+     *
+     * @param left left counter, pulses
+     * @param right right counter, pulses
+     */
+    public void setCounters(int left, int right) {
+        encoderLeft = left;
+        encoderRight = right;
+    }
+
+    /** @return the left position counter now, pulses (the robot's 32-bit counter) */
+    public int counterLeft() {
+        return pulses(encoderLeft);
+    }
+
+    /** @return the right position counter now, pulses */
+    public int counterRight() {
+        return pulses(encoderRight);
+    }
+
+    /**
+     * Read the eight proximity sensors now, with their noise ({@code N} arrived).
+     *
+     * @param out receives the values, 0..1023, higher = nearer
+     */
+    public void readProximity(int[] out) {
+        sampleProximity();
+        System.arraycopy(sampledProximity, 0, out, 0, IrSensor.COUNT);
+    }
+
+    /**
+     * Read the eight ambient-light sensors now ({@code O} arrived).
+     *
+     * @param out receives the values, 0..1023, lower = brighter
+     */
+    public void readLight(int[] out) {
+        sampleLight();
+        System.arraycopy(sampledLight, 0, out, 0, IrSensor.COUNT);
+    }
+
+    /**
+     * Send the arm toward a position at once ({@code T,1,E,pos} arrived).
+     *
+     * @param position 0..255, larger = lower (see {@link GripperTurret})
+     */
+    public void moveArm(int position) {
+        armTarget = StrictMath.max(0, StrictMath.min(255, position));
+    }
+
+    /**
+     * Start the fingers moving at once ({@code T,1,D,0|1} arrived).
+     *
+     * @param now simulated time, ns
+     * @param state where they go
+     */
+    public void moveFingers(long now, GripperState state) {
+        startFingers(now, state);
+    }
+
+    /**
+     * An LED command ({@code L,n,action}).
+     *
+     * @param led 0 lateral, 1 front
+     * @param action 0 off, 1 on, 2 toggle
+     */
+    public void setLed(int led, int action) {
+        int bit = 1 << led;
+        leds = switch (action) {
+            case 0 -> leds & ~bit;
+            case 1 -> leds | bit;
+            case 2 -> leds ^ bit;
+            default -> throw new IllegalArgumentException("LED action " + action + " must be 0 (off), 1 (on) or 2 (toggle)");
+        };
+    }
+
+    /** @return the LEDs as a bit mask: bit 0 the lateral LED, bit 1 the front LED; 1 = on */
+    public int leds() {
+        return leds;
+    }
+
     // ---------------------------------------------------------------- the engine's side
 
     /** Apply what falls due at the start of the tick at {@code now}: commands and poll events. */
@@ -506,6 +725,10 @@ public final class SimRobot {
                 case CommandQueue.FINGERS -> startFingers(now, a == 1 ? GripperState.CLOSED : GripperState.OPEN);
                 default -> throw new IllegalStateException("command type " + type);
             }
+        }
+        if (positionMode && now >= nextPositionUpdate) {
+            nextPositionUpdate = now + Khepera.MOTOR_PERIOD_NANOS;
+            setSpeedsNow(positionLeft.update(encoderLeft), positionRight.update(encoderRight));
         }
         if (now >= nextMotorNoise) {
             nextMotorNoise = now + Khepera.MOTOR_PERIOD_NANOS;

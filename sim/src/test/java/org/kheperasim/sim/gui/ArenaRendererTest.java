@@ -70,7 +70,7 @@ class ArenaRendererTest {
     void aSnapshotDrawsTheRobotWhereItIsNowAndCapsWhereTheyAre() {
         Arena a = arena();
         RobotView r = new RobotView(0, "r", 700, 500, 0, 0, 0, 0, 0, Contact.NONE, new int[8], new int[8], 0, 0, "running",
-                new GripperView(180, false, GripperState.OPEN, false, 0, -1));
+                new GripperView(180, false, GripperState.OPEN, false, 0, -1), 0);
         Snapshot s = new Snapshot(1_000_000_000L, List.of(r), List.of(new CapView(0, 300, 300, 15, -1)));
         BufferedImage img = render(a, s, ArenaRenderer.Overlay.NONE);
         ViewTransform v = view(a);
@@ -109,7 +109,7 @@ class ArenaRendererTest {
         int[] prox = new int[8];
         prox[2] = 1023;
         RobotView r = new RobotView(0, "r", 1, 1, 0, 3, -3, 10, 20, Contact.NONE, prox, new int[8], 0, 0, "running",
-                new GripperView(250, false, GripperState.CLOSED, true, 120, 0));
+                new GripperView(250, false, GripperState.CLOSED, true, 120, 0), 0);
         BufferedImage img = new BufferedImage(330, SensorRenderer.preferredHeight(), BufferedImage.TYPE_INT_RGB);
         Graphics2D g = img.createGraphics();
         SensorRenderer.draw(g, 330, img.getHeight(), r);

@@ -123,7 +123,7 @@ class EditToolsTest {
     void duringARunAWallOnTheRunningRobotAndNewCapsAreRefused() {
         Arena running = model.arena();
         RobotView robot = new RobotView(0, "r", 300, 300, 0, 0, 0, 0, 0, Contact.NONE, new int[8], new int[8], 0, 0, "running",
-                new GripperView(180, false, GripperState.OPEN, false, 0, -1));
+                new GripperView(180, false, GripperState.OPEN, false, 0, -1), 0);
         model.setRun(() -> running, () -> List.of(robot));
         gestures.setTool(Tool.WALL);
         drag(250, 310, 350, 310);

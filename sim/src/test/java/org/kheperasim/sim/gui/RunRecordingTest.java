@@ -38,15 +38,17 @@ class RunRecordingTest {
         session.trace(trace, 50);
         PacedRunner runner = new PacedRunner(session, null);
         runner.setSpeed(PacedRunner.MAX_SPEED);
-        runner.pauseAt(3_000_000_000L);
+        // Pause at 1 s exactly (at full speed a chunk lasts ~20 ms of real time, which can be seconds
+        // of simulated time, so a pause from outside would land anywhere), edit, then go on to 3 s.
+        runner.pauseAt(1_000_000_000L);
         runner.start();
-        while (runner.latest().timeNanos() < 1_000_000_000L) {
+        while (runner.state() == PacedRunner.State.RUNNING || runner.latest().timeNanos() < 1_000_000_000L) {
             Thread.sleep(1);
         }
-        runner.pause();
         EditorModel model = new EditorModel(lab);
         assertTrue(model.apply(ArenaEdits.addWall(lab, 450, 800, 750, 800)));
         runner.edit(model.arena());
+        runner.pauseAt(3_000_000_000L);
         runner.start();
         while (runner.state() == PacedRunner.State.RUNNING || runner.latest().timeNanos() < 3_000_000_000L) {
             Thread.sleep(5);

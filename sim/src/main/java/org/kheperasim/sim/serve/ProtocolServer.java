@@ -1,0 +1,403 @@
+package org.kheperasim.sim.serve;
+
+import java.io.BufferedInputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.net.SocketException;
+import java.nio.charset.StandardCharsets;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.LockSupport;
+import java.util.function.Consumer;
+import org.kheperasim.link.protocol.Command;
+import org.kheperasim.link.protocol.KheperaProtocol;
+import org.kheperasim.link.protocol.ProtocolException;
+import org.kheperasim.link.timing.LinkTiming;
+
+/**
+ * Serves a {@link ServedRobot} over TCP in the Khepera's own serial protocol, so that any Khepera
+ * client (robot-link with {@code --port tcp://HOST:PORT}, a C program, a MATLAB toolbox through a
+ * socat pseudo-terminal) drives the simulated robot.
+ *
+ * <ul>
+ *   <li>Binds to the loopback address unless another is given: exposing a robot on a network is a
+ *       choice the caller makes (the CLI's {@code --bind}) and is told about.
+ *   <li>One client at a time. A second connection gets one line,
+ *       {@code z,Busy: robot already has a client from HOST:PORT}, and is closed.
+ *   <li>When the client goes away (end of stream, error, server closed) the wheels stop at once.
+ *   <li>Each command takes effect when its characters and the robot's turnaround would have passed
+ *       on the serial line at the set baud, and its reply is sent when the reply's characters would
+ *       have arrived ({@link LinkTiming}), both divided by the robot's speed factor. A client so sees
+ *       the real robot's timing, though the bytes travel over TCP in microseconds.
+ *   <li>A line longer than {@link #MAX_LINE_CHARS} is answered with {@code z,Protocol error} and
+ *       discarded up to the next CR or LF without being stored; any byte sequence gets an answer,
+ *       never a crash. Empty lines (the LF of a client that ends commands with CR LF) are ignored.
+ * </ul>
+ *
+ * <p>Threads: one accepting, one per served client (at most one at a time); refusals are written
+ * by the accepting thread and closed at once.
+ */
+public final class ProtocolServer implements AutoCloseable {
+    /** The default TCP port of {@code serve}. */
+    public static final int DEFAULT_PORT = 4000;
+    /** The longest command line accepted, characters without the terminator. */
+    public static final int MAX_LINE_CHARS = 256;
+
+    /** What happened on the server, for a window or a log. */
+    public enum EventKind {
+        /** A client was accepted and is now the robot's controller. */
+        CONNECTED,
+        /** A client left; the robot has stopped. */
+        DISCONNECTED,
+        /** A second client was turned away. */
+        REFUSED,
+        /** Something the operator should know (an overlong line, an I/O error). */
+        NOTE
+    }
+
+    /**
+     * @param kind what happened
+     * @param client the client's address, {@code host:port}
+     * @param text a sentence for a log
+     */
+    public record Event(EventKind kind, String client, String text) {
+    }
+
+    private final ServedRobot robot;
+    private final ServerSocket socket;
+    private final Thread acceptor;
+    private final List<Consumer<Event>> listeners = new CopyOnWriteArrayList<>();
+    private final AtomicLong commands = new AtomicLong();
+    private final Object clientLock = new Object();
+    private Socket client;
+    private String clientName;
+    private Thread clientThread;
+    private volatile boolean closed;
+
+    private ProtocolServer(ServedRobot robot, ServerSocket socket) {
+        this.robot = robot;
+        this.socket = socket;
+        this.acceptor = new Thread(this::acceptLoop, "protocol-server-accept-" + socket.getLocalPort());
+        this.acceptor.setDaemon(true);
+    }
+
+    /**
+     * Start serving on the loopback address.
+     *
+     * @param robot the robot to serve; started here if it is not running yet
+     * @param port TCP port, 0 for any free one (see {@link #port()})
+     * @return the running server
+     * @throws IOException when the port cannot be bound
+     */
+    public static ProtocolServer start(ServedRobot robot, int port) throws IOException {
+        return start(robot, InetAddress.getLoopbackAddress(), port);
+    }
+
+    /**
+     * Start serving.
+     *
+     * @param robot the robot to serve; started here if it is not running yet
+     * @param bind the address to listen on: loopback keeps the robot on this computer; any other
+     *     address lets other computers drive it ({@link #isExposed()})
+     * @param port TCP port, 0 for any free one
+     * @return the running server
+     * @throws IOException when the address or port cannot be bound (the message names them)
+     */
+    public static ProtocolServer start(ServedRobot robot, InetAddress bind, int port) throws IOException {
+        if (port < 0 || port > 65535) {
+            throw new IllegalArgumentException("port " + port + " must lie in 0..65535 (0 = any free port)");
+        }
+        ServerSocket s = new ServerSocket();
+        try {
+            s.setReuseAddress(true);
+            s.bind(new InetSocketAddress(bind, port), 128);
+        } catch (IOException e) {
+            s.close();
+            throw new IOException("cannot listen on " + bind.getHostAddress() + ":" + port + ": " + e.getMessage()
+                    + (port != 0 ? " (is another server using the port? try --port 0 for a free one)" : ""), e);
+        }
+        try {
+            robot.start();
+        } catch (IllegalStateException alreadyRunning) {
+            // Started by the caller: fine.
+        }
+        ProtocolServer server = new ProtocolServer(robot, s);
+        server.acceptor.start();
+        return server;
+    }
+
+    /** @param listener told of connections, refusals and departures, on the server's threads */
+    public void addListener(Consumer<Event> listener) {
+        listeners.add(listener);
+    }
+
+    /** @param listener stop telling it */
+    public void removeListener(Consumer<Event> listener) {
+        listeners.remove(listener);
+    }
+
+    /** @return the TCP port listened on */
+    public int port() {
+        return socket.getLocalPort();
+    }
+
+    /** @return the address listened on */
+    public InetAddress bindAddress() {
+        return socket.getInetAddress();
+    }
+
+    /** @return true when other computers can connect (bound to something other than loopback) */
+    public boolean isExposed() {
+        return !socket.getInetAddress().isLoopbackAddress();
+    }
+
+    /**
+     * @return the address a client on this computer uses, e.g. {@code tcp://127.0.0.1:4000}
+     *     (robot-link's {@code --port} form)
+     */
+    public String url() {
+        InetAddress a = socket.getInetAddress();
+        String host = a.isAnyLocalAddress() ? "127.0.0.1" : a.getHostAddress();
+        return "tcp://" + (host.contains(":") ? "[" + host + "]" : host) + ":" + port();
+    }
+
+    /** @return the current client as {@code host:port}, or null when none is connected */
+    public String client() {
+        synchronized (clientLock) {
+            return clientName;
+        }
+    }
+
+    /** @return commands answered since the server started */
+    public long commandsAnswered() {
+        return commands.get();
+    }
+
+    /** @return the robot served */
+    public ServedRobot robot() {
+        return robot;
+    }
+
+    private void emit(EventKind kind, String who, String text) {
+        Event e = new Event(kind, who, text);
+        for (Consumer<Event> l : listeners) {
+            try {
+                l.accept(e);
+            } catch (RuntimeException ignored) {
+                // A listener's failure must not take the server down.
+            }
+        }
+    }
+
+    private static String name(Socket s) {
+        return s.getInetAddress().getHostAddress() + ":" + s.getPort();
+    }
+
+    private void acceptLoop() {
+        while (!closed) {
+            Socket s;
+            try {
+                s = socket.accept();
+            } catch (IOException e) {
+                if (!closed) {
+                    emit(EventKind.NOTE, "", "accept failed: " + e.getMessage());
+                    LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(50));
+                }
+                continue;
+            }
+            String who = name(s);
+            String busyWith;
+            synchronized (clientLock) {
+                busyWith = clientName;
+                if (busyWith == null && !closed) {
+                    client = s;
+                    clientName = who;
+                    clientThread = new Thread(() -> serve(s, who), "protocol-server-client");
+                    clientThread.setDaemon(true);
+                    clientThread.start();
+                    continue;
+                }
+            }
+            refuse(s, who, busyWith == null ? "server closing" : busyWith);
+        }
+    }
+
+    private void refuse(Socket s, String who, String busyWith) {
+        String line = "z,Busy: robot already has a client from " + busyWith;
+        try (s) {
+            s.setSoTimeout(1);
+            OutputStream out = s.getOutputStream();
+            out.write((line + KheperaProtocol.REPLY_END).getBytes(StandardCharsets.ISO_8859_1));
+            out.flush();
+            s.shutdownOutput();
+            // Unread input at close makes TCP reset the connection, which can lose the line: drop it.
+            InputStream in = s.getInputStream();
+            int n = in.available();
+            if (n > 0) {
+                in.skip(n);
+            }
+        } catch (IOException ignored) {
+            // The refused client has gone already.
+        }
+        emit(EventKind.REFUSED, who, "refused " + who + ": the robot already has a client from " + busyWith);
+    }
+
+    private void serve(Socket s, String who) {
+        emit(EventKind.CONNECTED, who, "client " + who + " connected");
+        String why = "closed the connection";
+        try {
+            s.setTcpNoDelay(true);
+            handle(s.getInputStream(), s.getOutputStream());
+        } catch (SocketException e) {
+            why = closed ? "server closed" : "connection lost (" + e.getMessage() + ")";
+        } catch (IOException e) {
+            why = "connection lost (" + e.getMessage() + ")";
+        } catch (RuntimeException e) {
+            why = "server error: " + e;
+        } finally {
+            robot.stopWheels();
+            try {
+                s.close();
+            } catch (IOException ignored) {
+                // Closing anyway.
+            }
+            synchronized (clientLock) {
+                if (client == s) {
+                    client = null;
+                    clientName = null;
+                    clientThread = null;
+                }
+            }
+            emit(EventKind.DISCONNECTED, who, "client " + who + " " + why + "; the robot stopped");
+        }
+    }
+
+    /** Read lines, answer each at its wire time; returns at end of stream. */
+    private void handle(InputStream rawIn, OutputStream out) throws IOException {
+        InputStream in = new BufferedInputStream(rawIn, 1024);
+        LinkTiming timing = robot.timing();
+        double speed = robot.speed();
+        StringBuilder line = new StringBuilder(MAX_LINE_CHARS);
+        boolean overflow = false;
+        long lineFree = System.nanoTime();
+        while (true) {
+            int b = in.read();
+            if (b < 0) {
+                return;
+            }
+            if (b != '\r' && b != '\n') {
+                if (overflow) {
+                    continue;
+                }
+                if (line.length() >= MAX_LINE_CHARS) {
+                    // Answer once and throw the rest away up to the next terminator, unstored.
+                    overflow = true;
+                    line.setLength(0);
+                    emit(EventKind.NOTE, "", "a line longer than " + MAX_LINE_CHARS
+                            + " characters was refused with " + KheperaProtocol.PROTOCOL_ERROR);
+                    lineFree = reply(out, timing, speed, lineFree, MAX_LINE_CHARS + 1, null);
+                    continue;
+                }
+                line.append((char) b);
+                continue;
+            }
+            if (overflow) {
+                overflow = false;
+                continue;
+            }
+            if (line.length() == 0) {
+                continue;
+            }
+            String text = line.toString();
+            line.setLength(0);
+            Command command;
+            try {
+                command = KheperaProtocol.parseCommand(text);
+            } catch (ProtocolException e) {
+                lineFree = reply(out, timing, speed, lineFree, text.length() + 1, KheperaProtocol.errorReply(e));
+                continue;
+            }
+            lineFree = reply(out, timing, speed, lineFree, text.length() + 1, command);
+        }
+    }
+
+    /**
+     * Wait for the command's wire time and the turnaround, act, wait for the reply's wire time,
+     * send it.
+     *
+     * @param answer a {@link Command} to execute, a fixed error line, or null for {@code z,Protocol error}
+     * @return when the line is free for the next command, System.nanoTime()
+     */
+    private long reply(OutputStream out, LinkTiming timing, double speed, long lineFree, int commandChars,
+            Object answer) throws IOException {
+        long start = StrictMath.max(System.nanoTime(), lineFree);
+        long actAt = start + (long) ((timing.wireNanos(commandChars) + timing.turnaroundNanos()) / speed);
+        sleepUntil(actAt);
+        String text;
+        if (answer instanceof Command c) {
+            text = robot.execute(c);
+        } else if (answer instanceof String s) {
+            text = s;
+        } else {
+            text = KheperaProtocol.PROTOCOL_ERROR;
+        }
+        String wire = text + KheperaProtocol.REPLY_END;
+        long sendAt = actAt + (long) (timing.wireNanos(wire.length()) / speed);
+        sleepUntil(sendAt);
+        out.write(wire.getBytes(StandardCharsets.ISO_8859_1));
+        out.flush();
+        commands.incrementAndGet();
+        return sendAt;
+    }
+
+    private static void sleepUntil(long deadline) {
+        long left;
+        while ((left = deadline - System.nanoTime()) > 0) {
+            LockSupport.parkNanos(left);
+        }
+    }
+
+    /** Stop accepting, drop the client (its robot stops), and wait for the server's threads. */
+    @Override
+    public void close() {
+        closed = true;
+        try {
+            socket.close();
+        } catch (IOException ignored) {
+            // Closing anyway.
+        }
+        Socket c;
+        Thread t;
+        synchronized (clientLock) {
+            c = client;
+            t = clientThread;
+        }
+        if (c != null) {
+            try {
+                c.close();
+            } catch (IOException ignored) {
+                // Closing anyway.
+            }
+        }
+        join(acceptor);
+        join(t);
+    }
+
+    private static void join(Thread t) {
+        if (t == null || t == Thread.currentThread()) {
+            return;
+        }
+        try {
+            t.join(TimeUnit.SECONDS.toMillis(5));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}
