@@ -56,6 +56,8 @@ public final class ArenaRenderer {
 
     /** Handle size, px. */
     static final double HANDLE_PX = 8;
+    static final Color LED_ON = new Color(0xFFE030);
+    private static final Color LED_OFF = new Color(0x1E5A38);
     /** Distance of the heading handle ahead of a robot's centre, mm. */
     static final double HEADING_HANDLE_MM = 45;
 
@@ -196,14 +198,15 @@ public final class ArenaRenderer {
         for (int i = 0; i < arena.robots().size(); i++) {
             Pose p = arena.robots().get(i);
             if (!live) {
-                drawRobot(g, view, p.x(), p.y(), p.headingDeg(), null, null, false);
+                drawRobot(g, view, p.x(), p.y(), p.headingDeg(), null, null, false, 0);
             } else if (options.startPoses()) {
                 drawStartGhost(g, view, p);
             }
         }
         if (live) {
             for (RobotView r : snapshot.robots()) {
-                drawRobot(g, view, r.x(), r.y(), r.headingDeg(), r.gripper(), options.beams() ? r.proximity() : null, true);
+                drawRobot(g, view, r.x(), r.y(), r.headingDeg(), r.gripper(), options.beams() ? r.proximity() : null, true,
+                        r.leds());
             }
         }
         drawOverlay(g, view, arena, overlay);
@@ -265,9 +268,9 @@ public final class ArenaRenderer {
         g.draw(circle(view, p.x(), p.y(), Arena.ROBOT_RADIUS_MM));
     }
 
-    /** Draws a robot: body, wheels, heading, gripper turret, optional beams. */
+    /** Draws a robot: body, wheels, heading, gripper turret, its two LEDs (bit 0, bit 1 of {@code leds}), optional beams. */
     static void drawRobot(Graphics2D g, ViewTransform view, double x, double y, double headingDeg, GripperView gripper,
-            int[] beams, boolean live) {
+            int[] beams, boolean live, int leds) {
         double r = Arena.ROBOT_RADIUS_MM;
         double h = StrictMath.toRadians(headingDeg);
         double cos = StrictMath.cos(h);
@@ -300,6 +303,15 @@ public final class ArenaRenderer {
         g.draw(body);
         if (gripper != null) {
             drawGripperOnRobot(g, view, x, y, cos, sin, gripper);
+        }
+        if (live) {
+            // The two LEDs on the top of the robot, behind the centre: lit yellow, off dark.
+            for (int i = 0; i < 2; i++) {
+                double lx = -16;
+                double ly = i == 0 ? 6 : -6;
+                g.setColor((leds >> i & 1) != 0 ? LED_ON : LED_OFF);
+                g.fill(circle(view, x + lx * cos - ly * sin, y + lx * sin + ly * cos, 3));
+            }
         }
         // Heading: a line from the centre to the front, and a notch.
         g.setColor(Color.WHITE);

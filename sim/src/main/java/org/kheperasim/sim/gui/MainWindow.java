@@ -53,6 +53,8 @@ import org.kheperasim.sim.host.ControllerHost;
 import org.kheperasim.sim.run.ControllerCatalog;
 import org.kheperasim.sim.run.ControllerCompiler;
 import org.kheperasim.sim.run.PacedRunner;
+import org.kheperasim.sim.serve.ProtocolServer;
+import org.kheperasim.sim.serve.ServedRobot;
 import org.kheperasim.sim.run.RunSession;
 import org.kheperasim.sim.run.SettingsFile;
 import org.kheperasim.sim.run.Simulation;
@@ -105,6 +107,11 @@ public final class MainWindow {
     private double speed = 1;
     private Settings runSettings = Settings.defaults();
     private volatile PacedRunner runner;
+    // "Serve this robot": a simulated robot answering the Khepera protocol over TCP, in real time.
+    private volatile ServedRobot served;
+    private ProtocolServer server;
+    private final java.util.concurrent.atomic.AtomicReference<Snapshot> servedLatest =
+            new java.util.concurrent.atomic.AtomicReference<>();
     private Snapshot lastPainted;
     private long fpsFrames;
     private long fpsSince = System.nanoTime();
@@ -178,6 +185,9 @@ public final class MainWindow {
     // ---- state read by the panels (event thread) ----
 
     private Snapshot snapshot() {
+        if (served != null) {
+            return servedLatest.get();
+        }
         PacedRunner r = runner;
         return r == null ? null : r.latest();
     }
@@ -294,6 +304,8 @@ public final class MainWindow {
         action("step", "Step", "run " + PacedRunner.STEP_NANOS / 1_000_000 + " ms of simulated time, then pause", ks(KeyEvent.VK_F7, 0), this::step);
         action("stop", "Stop", "stop the run (the robot stops where it is)", ks(KeyEvent.VK_F8, 0), this::stop);
         action("reset", "Reset", "back to the start poses, reloading the controller class", ks(KeyEvent.VK_F9, 0), this::reset);
+        action("serve", "Serve this robot", "let a Khepera client (robot-link, a C program, MATLAB) drive a simulated"
+                + " robot in this arena over TCP with the robot's own protocol", null, this::toggleServe);
         action("loadClasses", "Load compiled classes…", "add a folder or jar with your compiled controller", null, this::loadClasses);
         action("openJava", "Open .java…", "compile a controller source file and use it", null, this::openJava);
         action("reload", "Reload controller", "recompile the .java (if one was opened) and reset, picking up your changes", ks(KeyEvent.VK_F10, 0), this::reload);
@@ -314,9 +326,13 @@ public final class MainWindow {
         PacedRunner.State s = r == null ? null : r.state();
         boolean running = s == PacedRunner.State.RUNNING;
         boolean live = active();
-        actions.get("start").setEnabled(!running);
+        boolean serving = served != null;
+        actions.get("serve").putValue(Action.NAME, serving ? "Stop serving" : "Serve this robot");
+        actions.get("serve").setEnabled(!live || serving);
+        actions.get("start").setEnabled(!running && !serving);
         actions.get("pause").setEnabled(running);
-        actions.get("step").setEnabled(!running && s != PacedRunner.State.FINISHED && s != PacedRunner.State.STOPPED);
+        actions.get("step").setEnabled(!running && !serving && s != PacedRunner.State.FINISHED
+                && s != PacedRunner.State.STOPPED);
         actions.get("stop").setEnabled(live);
         actions.get("reset").setEnabled(r != null);
         actions.get("saveRecording").setEnabled(r != null);
@@ -377,6 +393,8 @@ public final class MainWindow {
         }
         run.add(speeds);
         addAll(run, "seed");
+        run.addSeparator();
+        addAll(run, "serve");
         bar.add(run);
         bar.add(menu("Controller", KeyEvent.VK_C, "loadClasses", "openJava", "reload"));
         bar.add(menu("Settings", KeyEvent.VK_S, "settings"));
@@ -648,6 +666,57 @@ public final class MainWindow {
         frame.setTitle(title());
     }
 
+    /**
+     * Serve a simulated robot in the arena as drawn over the Khepera protocol on a free loopback
+     * port, or stop serving. The robot runs in real time with its own engine; the window draws it.
+     */
+    private void toggleServe() {
+        if (served != null) {
+            stopServing();
+            return;
+        }
+        if (active()) {
+            stop();
+        }
+        long serveSeed = seed != null ? seed : Simulation.randomSeed();
+        ServedRobot robot = new ServedRobot(model.arena(), settings, serveSeed, 1.0);
+        robot.addListener(servedLatest::set, 20 * Engine.TICK_NANOS);
+        try {
+            server = ProtocolServer.start(robot, 0);
+        } catch (java.io.IOException e) {
+            robot.close();
+            console.error("Cannot serve the robot: " + e.getMessage() + ". Free a loopback port or use 'khepera-sim serve --port N'.");
+            return;
+        }
+        served = robot;
+        server.addListener(ev -> console.note("server: " + ev.text()));
+        console.note("Serving this robot at " + server.url() + " (seed " + serveSeed + "). Drive it with any Khepera client,"
+                + " e.g. java -jar robot-link/target/khepera-link.jar run --port " + server.url()
+                + " --controller WallFollower. Run > Stop serving ends it.");
+        showMessage("Serving at " + server.url(), false);
+        updateActions();
+    }
+
+    private void stopServing() {
+        ProtocolServer s = server;
+        ServedRobot r = served;
+        served = null;
+        server = null;
+        if (s != null) {
+            s.close();
+        }
+        if (r != null) {
+            r.close();
+        }
+        console.note("Stopped serving; the robot's wheels were stopped.");
+        updateActions();
+    }
+
+    /** @return the protocol server while the window serves its robot, else null (for tests and drivers) */
+    public ProtocolServer server() {
+        return server;
+    }
+
     /** @return the runner, or null (for tests and drivers) */
     public PacedRunner runner() {
         return runner;
@@ -844,6 +913,9 @@ public final class MainWindow {
 
     private void close() {
         timer.stop();
+        if (served != null) {
+            stopServing();
+        }
         PacedRunner r = runner;
         runner = null;
         if (r != null) {

@@ -81,6 +81,20 @@ class ArenaRendererTest {
     }
 
     @Test
+    void theRobotsLedsAreDrawnLitOrDark() {
+        Arena a = arena();
+        ViewTransform v = view(a);
+        // Heading 0: LED 0 sits 16 mm behind the centre and 6 mm to the left, LED 1 6 mm to the right.
+        for (int leds = 0; leds < 4; leds++) {
+            RobotView r = new RobotView(0, "r", 700, 500, 0, 0, 0, 0, 0, Contact.NONE, new int[8], new int[8], 0, 0,
+                    "running", new GripperView(180, false, GripperState.OPEN, false, 0, -1), leds);
+            BufferedImage img = render(a, new Snapshot(0, List.of(r), List.of()), ArenaRenderer.Overlay.NONE);
+            assertEquals((leds & 1) != 0, at(img, v, 684, 506).equals(ArenaRenderer.LED_ON), "LED 0 with bits " + leds);
+            assertEquals((leds & 2) != 0, at(img, v, 684, 494).equals(ArenaRenderer.LED_ON), "LED 1 with bits " + leds);
+        }
+    }
+
+    @Test
     void selectionAndRefusalAreVisible() {
         Arena a = arena();
         ViewTransform v = view(a);
