@@ -1118,7 +1118,10 @@ public final class SimRobot {
             double dx = placedDx[i];
             double dy = placedDy[i];
             double raw = 0;
-            double free = StrictMath.min(field.clearance(px, py), capFree);
+            double free = field.clearance(px, py);
+            if (capFree < free) {
+                free = StrictMath.min(free, capsAhead(px, py, dx, dy));
+            }
             if (free < proxRange) {
                 // Nothing lies nearer than the clearance (less the estimate's error): start the
                 // beams there instead of walking the empty cells.
@@ -1145,6 +1148,30 @@ public final class SimRobot {
             }
             sampledProximity[i] = proxDead[i] ? 0 : clampReading(value);
         }
+    }
+
+    /**
+     * Distance from a sensor to the nearest cap on the floor that its beams could reach: caps
+     * wholly behind the sensor (all the beams point forward) do not count.
+     */
+    private double capsAhead(double px, double py, double dx, double dy) {
+        double best = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < caps.count(); k++) {
+            if (caps.heldBy(k) >= 0) {
+                continue;
+            }
+            double ex = caps.x(k) - px;
+            double ey = caps.y(k) - py;
+            double r = caps.radius(k);
+            if (ex * dx + ey * dy < -r) {
+                continue;
+            }
+            double d = StrictMath.sqrt(ex * ex + ey * ey) - r;
+            if (d < best) {
+                best = d;
+            }
+        }
+        return best;
     }
 
     private double reflectanceOf(int cellId) {
