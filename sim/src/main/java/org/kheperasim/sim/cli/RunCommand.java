@@ -13,6 +13,7 @@ import org.kheperasim.sim.host.ControllerStatus;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /** {@code run}: one headless run, with a one-line result or a JSON object. */
@@ -51,14 +52,10 @@ final class RunCommand implements Callable<Integer> {
             description = "trace sample period, ms (default: ${DEFAULT-VALUE})")
     long sampleMillis;
 
-    @Option(names = "--baud", paramLabel = "N", description = "serial link speed the timing follows (default 38400)")
-    Integer baud;
 
-    @Option(names = "--noise", paramLabel = "X", description = "scale all noise, per reading and per robot (0 = none, 1 = default)")
-    Double noise;
 
-    @Option(names = "--set", paramLabel = "KEY=VALUE", description = "change a setting, e.g. prox.3.gain=0.5 (see the 'settings' command)")
-    List<String> set = new ArrayList<>();
+    @Mixin
+    SettingsOptions settingsOptions = new SettingsOptions();
 
     @Option(names = "--hang-timeout", paramLabel = "SECONDS", defaultValue = "5",
             description = "real seconds without an API call after which a controller counts as hung (default: ${DEFAULT-VALUE})")
@@ -72,16 +69,7 @@ final class RunCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        Settings settings = Settings.defaults();
-        if (noise != null) {
-            settings = settings.withNoise(noise);
-        }
-        if (baud != null) {
-            settings = settings.with("link.baud", Integer.toString(baud));
-        }
-        for (String s : set) {
-            settings = settings.with(s);
-        }
+        Settings settings = settingsOptions.settings();
         PrintStream info = json ? System.err : System.out;
         Simulation.Builder run = Simulation.builder()
                 .arena(arena)

@@ -3,8 +3,6 @@ package org.kheperasim.sim.cli;
 import java.io.PrintStream;
 import java.net.InetAddress;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
@@ -17,6 +15,7 @@ import org.kheperasim.sim.serve.ProtocolServer;
 import org.kheperasim.sim.serve.PtyBridge;
 import org.kheperasim.sim.serve.ServedRobot;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 /** {@code serve}: a simulated robot that answers the Khepera protocol over TCP (and a pty). */
@@ -38,8 +37,6 @@ final class ServeCommand implements Callable<Integer> {
             description = "listen on this address instead of loopback (127.0.0.1), e.g. 0.0.0.0: lets OTHER computers drive the robot")
     String bind;
 
-    @Option(names = "--baud", paramLabel = "N", description = "the serial speed whose timing the replies follow (default 38400)")
-    Integer baud;
 
     @Option(names = "--speed", paramLabel = "X", defaultValue = "1",
             description = "simulated seconds per real second (default ${DEFAULT-VALUE}: the real robot's pace; reply timing scales too)")
@@ -48,11 +45,9 @@ final class ServeCommand implements Callable<Integer> {
     @Option(names = "--seed", paramLabel = "N", description = "the seed of the robot's noise (default: a new one, printed)")
     Long seed;
 
-    @Option(names = "--noise", paramLabel = "X", description = "scale all noise (0 = none, 1 = default)")
-    Double noise;
 
-    @Option(names = "--set", paramLabel = "KEY=VALUE", description = "change a setting (see the 'settings' command)")
-    List<String> set = new ArrayList<>();
+    @Mixin
+    SettingsOptions settingsOptions = new SettingsOptions();
 
     @Option(names = "--pty", paramLabel = "PATH",
             description = "also make a pseudo-terminal at PATH for serial-only clients (starts socat; prints the command if it is missing)")
@@ -63,16 +58,7 @@ final class ServeCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        Settings settings = Settings.defaults();
-        if (noise != null) {
-            settings = settings.withNoise(noise);
-        }
-        if (baud != null) {
-            settings = settings.with("link.baud", Integer.toString(baud));
-        }
-        for (String s : set) {
-            settings = settings.with(s);
-        }
+        Settings settings = settingsOptions.settings();
         long runSeed = seed != null ? seed : Simulation.randomSeed();
         Arena a = ArenaFormat.resolve(arena);
         InetAddress address = bind == null ? InetAddress.getLoopbackAddress() : InetAddress.getByName(bind);
