@@ -160,18 +160,17 @@ public abstract class Controller extends Thread {
 
     private void awaitArm(ArmPosition target) {
         Gripper g = gripper();
-        for (long waited = 0; active && waited < TURRET_PATIENCE_MS; waited += TURRET_POLL_MS) {
-            if (g.getArmPosition() == target && !g.isArmMoving()) {
-                return;
-            }
-            sleepMillis(TURRET_POLL_MS);
-        }
+        awaitTurret(() -> g.getArmPosition() == target && !g.isArmMoving());
     }
 
     private void awaitFingers(GripperState target) {
         Gripper g = gripper();
+        awaitTurret(() -> g.getGripperState() == target);
+    }
+
+    private void awaitTurret(java.util.function.BooleanSupplier done) {
         for (long waited = 0; active && waited < TURRET_PATIENCE_MS; waited += TURRET_POLL_MS) {
-            if (g.getGripperState() == target) {
+            if (done.getAsBoolean()) {
                 return;
             }
             sleepMillis(TURRET_POLL_MS);

@@ -79,6 +79,33 @@ public final class ControllerNames {
     }
 
     /**
+     * Find a controller class by name: the first of {@link #candidates} that {@code loader} can
+     * load, checked against the controller contract.
+     *
+     * @param name what the user typed
+     * @param loader the class loader to look through (the backend's own kind)
+     * @param bundled the bundled controllers' names, for the error
+     * @param classpath the user's classpath, for the error
+     * @param jar the program's jar, for the error's compile hint
+     * @return the checked controller class
+     * @throws ControllerException naming what was looked for and the fix
+     */
+    public static Class<?> resolve(String name, ClassLoader loader, List<String> bundled, List<Path> classpath,
+            String jar) {
+        for (String candidate : candidates(name)) {
+            Class<?> type;
+            try {
+                type = Class.forName(candidate, false, loader);
+            } catch (ClassNotFoundException | NoClassDefFoundError e) {
+                continue;
+            }
+            Controllers.check(type);
+            return type;
+        }
+        throw notFound(name, bundled, classpath, jar);
+    }
+
+    /**
      * The error for a name that matches no class.
      *
      * @param name what the user typed

@@ -8,7 +8,6 @@ import java.util.ArrayList;
 import java.util.List;
 import org.kheperasim.api.spi.ControllerException;
 import org.kheperasim.api.spi.ControllerNames;
-import org.kheperasim.api.spi.Controllers;
 
 /**
  * Finds a controller class by the names the simulator uses ({@link ControllerNames}). On the robot
@@ -44,16 +43,6 @@ public final class ControllerLoader {
         }
         // Left open: the controller's classes may load more classes while it runs.
         URLClassLoader loader = new URLClassLoader(urls.toArray(new URL[0]), ControllerLoader.class.getClassLoader());
-        for (String candidate : ControllerNames.candidates(name)) {
-            Class<?> type;
-            try {
-                type = Class.forName(candidate, false, loader);
-            } catch (ClassNotFoundException | NoClassDefFoundError e) {
-                continue;
-            }
-            Controllers.check(type);
-            return type;
-        }
-        throw ControllerNames.notFound(name, bundled(), classpath, "khepera-link.jar");
+        return ControllerNames.resolve(name, loader, bundled(), classpath, "khepera-link.jar");
     }
 }

@@ -4,7 +4,6 @@ import java.nio.file.Path;
 import java.util.List;
 import org.kheperasim.api.spi.ControllerException;
 import org.kheperasim.api.spi.ControllerNames;
-import org.kheperasim.api.spi.Controllers;
 import org.kheperasim.sim.host.loading.ControllerClassLoader;
 
 /**
@@ -40,16 +39,6 @@ public final class ControllerCatalog {
      */
     public Class<?> load(String name) {
         ControllerClassLoader loader = new ControllerClassLoader(classpath, ControllerCatalog.class.getClassLoader());
-        for (String candidate : ControllerNames.candidates(name)) {
-            Class<?> type;
-            try {
-                type = Class.forName(candidate, false, loader);
-            } catch (ClassNotFoundException | NoClassDefFoundError e) {
-                continue;
-            }
-            Controllers.check(type);
-            return type;
-        }
-        throw ControllerNames.notFound(name, bundled(), classpath, "khepera-sim.jar");
+        return ControllerNames.resolve(name, loader, bundled(), classpath, "khepera-sim.jar");
     }
 }
