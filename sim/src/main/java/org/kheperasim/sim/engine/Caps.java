@@ -28,6 +28,7 @@ final class Caps {
     /** Nearest free spot for a dropped cap: searched on rings this far apart, out to {@link #SETTLE_MAX_MM}. */
     private static final double SETTLE_STEP_MM = 0.5;
     private static final double SETTLE_MAX_MM = 150;
+    private static final double TOUCH_TOLERANCE_MM = 1e-6;
 
     private final OccupancyGrid grid;
     private final DistanceField field;
@@ -310,16 +311,18 @@ final class Caps {
     }
 
     private boolean free(int i, double cx, double cy, double bx, double by, double bodyRadius) {
-        if (clearance(cx, cy) < r[i]) {
+        // Touching counts as free, within a nanometre: the grip point is exactly a cap's radius
+        // from the body, and rounding must not decide whether a cap may drop there.
+        if (clearance(cx, cy) < r[i] - TOUCH_TOLERANCE_MM) {
             return false;
         }
-        double rb = r[i] + bodyRadius;
+        double rb = r[i] + bodyRadius - TOUCH_TOLERANCE_MM;
         if ((cx - bx) * (cx - bx) + (cy - by) * (cy - by) < rb * rb) {
             return false;
         }
         for (int j = 0; j < x.length; j++) {
             if (j != i && heldBy[j] < 0) {
-                double touch = r[i] + r[j];
+                double touch = r[i] + r[j] - TOUCH_TOLERANCE_MM;
                 if ((cx - x[j]) * (cx - x[j]) + (cy - y[j]) * (cy - y[j]) < touch * touch) {
                     return false;
                 }

@@ -21,6 +21,7 @@ public final class Engine {
     /** The tick: 1 ms of simulated time. */
     public static final long TICK_NANOS = 1_000_000L;
 
+
     private final World world;
     private final long seed;
     private final SplittableRandom seeds;
@@ -170,12 +171,51 @@ public final class Engine {
                 }
             }
             publish();
+            long n = quietTicks();
+
             for (int i = 0; i < robots.size(); i++) {
-                robots.get(i).integrate(end);
+                SimRobot r = robots.get(i);
+                r.move(n, (tick + n) * TICK_NANOS, n > 1);
             }
-            tick++;
+            tick += n;
             inTick = false;
         }
+    }
+
+    /**
+     * How many ticks the world can move through at once: up to the next tick at which anything is
+     * due (a command, a poll sample, a noise redraw, a controller's wake-up, a snapshot, the end)
+     * and no farther than every robot can glide; at least one. A single tick is stepped with contact
+     * handling; a longer stretch is glided (see {@link SimRobot#glideTicks}).
+     */
+    private long quietTicks() {
+        long limit = ceilTicks(endNanos) - tick;
+        for (int i = 0; i < drivers.size(); i++) {
+            RobotDriver d = drivers.get(i);
+            if (d != null) {
+                long w = d.wakeNanos();
+                if (w != Long.MAX_VALUE) {
+                    limit = StrictMath.min(limit, w / TICK_NANOS - tick);
+                }
+            }
+        }
+        for (int k = 0; k < listeners.size(); k++) {
+            long p = listeners.get(k).periodTicks;
+            limit = StrictMath.min(limit, (tick / p + 1) * p - tick);
+        }
+        for (int i = 0; i < robots.size() && limit > 1; i++) {
+            SimRobot r = robots.get(i);
+            long due = r.nextDueNanos();
+            if (due != Long.MAX_VALUE) {
+                limit = StrictMath.min(limit, ceilTicks(due) - tick);
+            }
+            limit = StrictMath.min(limit, r.glideTicks());
+        }
+        return StrictMath.max(1, limit);
+    }
+
+    private static long ceilTicks(long nanos) {
+        return nanos == Long.MAX_VALUE ? Long.MAX_VALUE / 2 : -Math.floorDiv(-nanos, TICK_NANOS);
     }
 
     /**
@@ -239,10 +279,10 @@ public final class Engine {
         int[] prox = new int[IrSensor.COUNT];
         int[] light = new int[IrSensor.COUNT];
         for (SimRobot r : robots) {
-            r.copyVisible(prox, light);
+            r.copyVisible(timeNanos(), prox, light);
             views.add(new RobotView(r.id(), r.name(), r.x(), r.y(), r.headingDeg(), r.speedLeft(), r.speedRight(),
                     r.encoderLeft(), r.encoderRight(), r.contact(), prox, light, r.collisions(),
-                    r.distanceTravelledMm(), driverStatus.get(r.id()).apply(r), r.gripperView(), r.leds()));
+                    r.distanceTravelledMm(), driverStatus.get(r.id()).apply(r), r.gripper().view(), r.leds()));
         }
         return new Snapshot(timeNanos(), views, world.caps());
     }

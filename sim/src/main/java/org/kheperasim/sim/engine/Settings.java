@@ -16,7 +16,7 @@ import java.util.TreeMap;
  */
 public final class Settings {
 
-    private enum Kind { NUMBER, FLAG, PROFILE }
+    private enum Kind { NUMBER, FLAG, PROFILE, STEPPING }
 
     private record Def(String defaultValue, Kind kind, double min, double max, String meaning) {
     }
@@ -24,6 +24,8 @@ public final class Settings {
     private static final Map<String, Def> DEFS = new LinkedHashMap<>();
 
     static {
+        DEFS.put("engine.stepping", new Def("events", Kind.STEPPING, 0, 0, "how the engine advances time: events"
+                + " (from event to event along exact arcs, the default) or tick (every millisecond, the reference)"));
         num("link.baud", "38400", 300, 1_000_000, "serial line speed, bits/s: sets how often sensor values refresh and how late commands take effect");
         num("link.turnaroundUs", "500", 0, 100_000, "robot's time from the end of a command to the start of its reply, microseconds");
         num("api.callCostUs", "20", 0.001, 1_000_000, "simulated cost of each API call a controller makes, microseconds");
@@ -54,7 +56,7 @@ public final class Settings {
         }
         for (String w : new String[] {"left", "right"}) {
             num("motor." + w + ".calibration", "1", 0, 10, "actual over commanded speed of the " + w + " wheel (worn motor < 1)");
-            num("motor." + w + ".noise", "0.02", 0, 10, "speed noise of the " + w + " wheel, standard deviation (relative), redrawn every 10 ms");
+            num("motor." + w + ".noise", "0.009", 0, 10, "speed noise of the " + w + " wheel, standard deviation (relative), redrawn every 50 ms");
         }
         num("motor.spread", "0.02", 0, 1, "per-robot spread of each wheel's calibration, standard deviation (relative)");
         num("gripper.armTravelMs", "1000", 1, 60_000, "time the gripper arm takes between up and down, ms (an estimate: the turret's manual was not found)");
@@ -115,6 +117,7 @@ public final class Settings {
                 }
             }
             case PROFILE -> ProximityProfile.named(v);
+            case STEPPING -> RobotModel.Stepping.named(v);
         }
         TreeMap<String, String> next = new TreeMap<>(overrides);
         if (v.equals(def.defaultValue)) {

@@ -414,7 +414,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     @Override
     public int proximity(int index) {
         enter();
-        int v = robot.visibleProximity(index);
+        int v = robot.visibleProximity(now, index);
         leave();
         return v;
     }
@@ -422,7 +422,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     @Override
     public int ambientLight(int index) {
         enter();
-        int v = robot.visibleLight(index);
+        int v = robot.visibleLight(now, index);
         leave();
         return v;
     }
@@ -453,7 +453,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     @Override
     public int leftPosition() {
         enter();
-        int v = robot.visibleEncoderLeft();
+        int v = robot.visibleEncoderLeft(now);
         leave();
         return v;
     }
@@ -461,7 +461,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     @Override
     public int rightPosition() {
         enter();
-        int v = robot.visibleEncoderRight();
+        int v = robot.visibleEncoderRight(now);
         leave();
         return v;
     }
@@ -483,7 +483,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     @Override
     public ArmPosition armPosition() {
         enter();
-        ArmPosition v = robot.armRest();
+        ArmPosition v = robot.gripper().armRest();
         leave();
         return v;
     }
@@ -491,7 +491,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     @Override
     public boolean armMoving() {
         enter();
-        boolean v = robot.armMoving();
+        boolean v = robot.gripper().armMoving();
         leave();
         return v;
     }
@@ -506,7 +506,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     @Override
     public GripperState fingers() {
         enter();
-        GripperState v = robot.fingers();
+        GripperState v = robot.gripper().fingers();
         leave();
         return v;
     }
@@ -514,7 +514,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     @Override
     public boolean objectPresent() {
         enter();
-        boolean v = robot.objectPresent();
+        boolean v = robot.gripper().objectPresent();
         leave();
         return v;
     }
@@ -522,7 +522,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
     @Override
     public int resistivity() {
         enter();
-        int v = robot.resistivity();
+        int v = robot.gripper().resistivity();
         leave();
         return v;
     }

@@ -53,7 +53,7 @@ public final class Simulation {
         private long sampleMillis = 50;
         private ConsoleSink console = line -> { };
         private ControllerHost.Options hostOptions = ControllerHost.Options.defaults();
-        private final List<SnapshotListener> listeners = new ArrayList<>();
+        private final List<Subscription> listeners = new ArrayList<>();
         private EditLog edits = new EditLog();
 
         /** @param arena the arena @return this */
@@ -135,7 +135,19 @@ public final class Simulation {
 
         /** @param listener also receives snapshots, every tick @return this */
         public Builder listener(SnapshotListener listener) {
-            this.listeners.add(listener);
+            return listener(listener, 1);
+        }
+
+        /**
+         * @param listener also receives snapshots
+         * @param periodMillis how often, whole ms (a listener makes the engine stop that often)
+         * @return this
+         */
+        public Builder listener(SnapshotListener listener, long periodMillis) {
+            if (periodMillis < 1) {
+                throw new IllegalArgumentException("a listener's period of " + periodMillis + " ms must be at least 1 ms");
+            }
+            this.listeners.add(new Subscription(listener, periodMillis * Engine.TICK_NANOS));
             return this;
         }
 
@@ -169,12 +181,15 @@ public final class Simulation {
         }
     }
 
+    private record Subscription(SnapshotListener listener, long periodNanos) {
+    }
+
     private RunResult execute() {
         long seed = b.seed();
         RunSession session = new RunSession(b.arena, b.controllerName, new ControllerCatalog(b.classpath), seed,
                 b.settings, b.console, b.hostOptions);
-        for (SnapshotListener l : b.listeners) {
-            session.addListener(l, Engine.TICK_NANOS);
+        for (Subscription l : b.listeners) {
+            session.addListener(l.listener(), l.periodNanos());
         }
         Path traceTemp = null;
         try {

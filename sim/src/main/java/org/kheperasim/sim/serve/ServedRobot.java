@@ -77,6 +77,7 @@ public final class ServedRobot implements AutoCloseable {
         this.speed = speed;
         this.engine = new Engine(new World(arena), seed);
         this.robot = engine.addRobot("served", arena.robots().get(0), settings);
+        robot.servedDirectly();
         this.timing = robot.link();
     }
 
@@ -157,18 +158,18 @@ public final class ServedRobot implements AutoCloseable {
         } else if (command instanceof Command.ReadSpeed c) {
             return c.reply(robot.speedLeft(), robot.speedRight()).encode();
         } else if (command instanceof Command.MoveToPosition c) {
-            robot.moveToPositions(c.left(), c.right());
+            robot.moveToPositions(engine.timeNanos(), c.left(), c.right());
             return c.reply().encode();
         } else if (command instanceof Command.SetPositionProfile c) {
-            robot.positionProfile(c.maxSpeedLeft(), c.accelerationLeft(), c.maxSpeedRight(), c.accelerationRight());
+            robot.onBoard().positionProfile(c.maxSpeedLeft(), c.accelerationLeft(), c.maxSpeedRight(), c.accelerationRight());
             return c.reply().encode();
         } else if (command instanceof Command.ReadMotionStatus c) {
-            return c.reply(robot.motionStatus()).encode();
+            return c.reply(robot.onBoard().motionStatus()).encode();
         } else if (command instanceof Command.SetPwm c) {
-            robot.drivePwm(c.left(), c.right());
+            robot.onBoard().drivePwm(c.left(), c.right());
             return c.reply().encode();
         } else if (command instanceof Command.SetLed c) {
-            robot.setLed(c.led(), c.action());
+            robot.onBoard().setLed(c.led(), c.action());
             return c.reply().encode();
         } else if (command instanceof Command.ReadVersion c) {
             return c.reply(BIOS_VERSION, PROTOCOL_VERSION).encode();
@@ -205,15 +206,15 @@ public final class ServedRobot implements AutoCloseable {
             robot.moveFingers(engine.timeNanos(), f.close() ? GripperState.CLOSED : GripperState.OPEN);
             return c.reply().encode();
         } else if (body instanceof TurretCommand.Arm a) {
-            robot.moveArm(a.position());
+            robot.moveArm(engine.timeNanos(), a.position());
             return c.reply().encode();
         } else if (body instanceof TurretCommand.Resistivity) {
-            return c.reply(robot.resistivity()).encode();
+            return c.reply(robot.gripper().resistivity()).encode();
         } else if (body instanceof TurretCommand.Barrier) {
-            return c.reply(robot.objectPresent() ? BARRIER_BROKEN : 0).encode();
+            return c.reply(robot.gripper().objectPresent() ? BARRIER_BROKEN : 0).encode();
         } else if (body instanceof TurretCommand.MotorPosition m) {
-            return c.reply(m.motor() == 1 ? robot.armPosition()
-                    : robot.fingers() == GripperState.CLOSED ? FINGERS_CLOSED_POSITION : 0).encode();
+            return c.reply(m.motor() == 1 ? robot.gripper().armPosition()
+                    : robot.gripper().fingers() == GripperState.CLOSED ? FINGERS_CLOSED_POSITION : 0).encode();
         } else if (body instanceof TurretCommand.Version) {
             return c.reply(GRIPPER_VERSION).encode();
         }

@@ -24,23 +24,23 @@ class GripperTest {
         SimRobot robot = r[0];
         robot.commandArm(0, ArmPosition.DOWN);
         run(e, 0.010);
-        assertTrue(robot.armMoving(), "the command has arrived (its wire time is ~3 ms at 38400 baud)");
+        assertTrue(robot.gripper().armMoving(), "the command has arrived (its wire time is ~3 ms at 38400 baud)");
         run(e, 0.490);
-        assertTrue(robot.armMoving());
-        assertSame(ArmPosition.UP, robot.armRest(), "an arm still moving is not yet down");
-        int halfway = robot.armPosition();
+        assertTrue(robot.gripper().armMoving());
+        assertSame(ArmPosition.UP, robot.gripper().armRest(), "an arm still moving is not yet down");
+        int halfway = robot.gripper().armPosition();
         assertTrue(halfway > 210 && halfway < 220, "about half of 180..250 after half of the 1 s travel: " + halfway);
         run(e, 0.520);
-        assertFalse(robot.armMoving());
-        assertSame(ArmPosition.DOWN, robot.armRest());
-        assertEquals(GripperTurret.ARM_DOWN, robot.armPosition());
+        assertFalse(robot.gripper().armMoving());
+        assertSame(ArmPosition.DOWN, robot.gripper().armRest());
+        assertEquals(GripperTurret.ARM_DOWN, robot.gripper().armPosition());
 
         Settings slow = Settings.defaults().withNoise(0).with("gripper.armTravelMs", "3000");
         Engine e2 = new Engine(new World(e.world().arena()), 1);
         SimRobot r2 = e2.addRobot("slow", new org.kheperasim.sim.arena.Pose(300, 600, 0), slow);
         r2.commandArm(0, ArmPosition.DOWN);
         run(e2, 2.0);
-        assertTrue(r2.armMoving(), "a 3 s arm is still travelling after 2 s");
+        assertTrue(r2.gripper().armMoving(), "a 3 s arm is still travelling after 2 s");
     }
 
     @Test
@@ -49,33 +49,33 @@ class GripperTest {
         Engine e = engine("", r);
         r[0].commandFingers(0, GripperState.CLOSED);
         run(e, 0.3);
-        assertSame(GripperState.OPEN, r[0].fingers(), "still closing after 0.3 s of 0.4 s");
+        assertSame(GripperState.OPEN, r[0].gripper().fingers(), "still closing after 0.3 s of 0.4 s");
         run(e, 0.2);
-        assertSame(GripperState.CLOSED, r[0].fingers());
-        assertEquals(0, r[0].resistivity(), "empty fingers read nothing");
-        assertFalse(r[0].objectPresent());
+        assertSame(GripperState.CLOSED, r[0].gripper().fingers());
+        assertEquals(0, r[0].gripper().resistivity(), "empty fingers read nothing");
+        assertFalse(r[0].gripper().objectPresent());
     }
 
     @Test
     void theOpticalBarrierSeesWhatCrossesTheLineBetweenTheFingers() {
         SimRobot[] r = new SimRobot[1];
         Engine e = engine("cap " + GRIP_X + " 610\n", r);
-        assertFalse(r[0].objectPresent(), "with the arm up the barrier is above the cap");
+        assertFalse(r[0].gripper().objectPresent(), "with the arm up the barrier is above the cap");
         r[0].commandArm(0, ArmPosition.DOWN);
         run(e, 1.1);
-        assertTrue(r[0].objectPresent(), "a cap 10 mm off the axis still crosses the line");
+        assertTrue(r[0].gripper().objectPresent(), "a cap 10 mm off the axis still crosses the line");
 
         SimRobot[] empty = new SimRobot[1];
         Engine e2 = engine("cap " + GRIP_X + " 630\n", empty);
         empty[0].commandArm(0, ArmPosition.DOWN);
         run(e2, 1.1);
-        assertFalse(empty[0].objectPresent(), "a cap beside the fingers does not");
+        assertFalse(empty[0].gripper().objectPresent(), "a cap beside the fingers does not");
 
         SimRobot[] wall = new SimRobot[1];
         Engine e3 = engine("wall " + GRIP_X + " 500 " + GRIP_X + " 700 4\n", wall);
         wall[0].commandArm(0, ArmPosition.DOWN);
         run(e3, 1.1);
-        assertTrue(wall[0].objectPresent(), "anything breaking the line is detected, a wall too");
+        assertTrue(wall[0].gripper().objectPresent(), "anything breaking the line is detected, a wall too");
     }
 
     @Test
@@ -90,10 +90,10 @@ class GripperTest {
         run(e, 1.1);
         robot.commandFingers(e.timeNanos(), GripperState.CLOSED);
         run(e, 0.5);
-        assertSame(GripperState.CLOSED, robot.fingers());
-        assertEquals(0, robot.heldCap(), "the cap between the fingers is held");
-        assertTrue(robot.objectPresent());
-        assertEquals(120, robot.resistivity(), "a held cap reads the cap's resistivity");
+        assertSame(GripperState.CLOSED, robot.gripper().fingers());
+        assertEquals(0, robot.gripper().heldCap(), "the cap between the fingers is held");
+        assertTrue(robot.gripper().objectPresent());
+        assertEquals(120, robot.gripper().resistivity(), "a held cap reads the cap's resistivity");
         assertEquals(OccupancyGridIds.FLOOR, e.world().grid().idAt(GRIP_X, 600), "a held cap leaves the grid");
 
         robot.commandArm(e.timeNanos(), ArmPosition.UP);
@@ -114,8 +114,8 @@ class GripperTest {
         run(e, 0.5);
         CapView dropped = cap(e, 0);
         assertFalse(dropped.held());
-        assertEquals(-1, robot.heldCap());
-        assertEquals(0, robot.resistivity());
+        assertEquals(-1, robot.gripper().heldCap());
+        assertEquals(0, robot.gripper().resistivity());
         assertEquals(robot.x() + GripperTurret.GRIP_MM, dropped.x(), 0.6, "dropped where the gripper is");
         assertEquals(600, dropped.y(), 0.6);
         assertTrue(OccupancyGridIds.isCap(e.world().grid().idAt(dropped.x(), dropped.y())), "back in the grid");
@@ -132,7 +132,7 @@ class GripperTest {
         run(e, 1.1);
         robot.commandFingers(e.timeNanos(), GripperState.CLOSED);
         run(e, 0.5);
-        assertEquals(0, robot.heldCap());
+        assertEquals(0, robot.gripper().heldCap());
         robot.commandArm(e.timeNanos(), ArmPosition.UP);
         run(e, 1.1);
         robot.commandSpeeds(e.timeNanos(), 2, 2);   // 16 mm/s: about 30 mm, short of touching cap 1 (40 mm)

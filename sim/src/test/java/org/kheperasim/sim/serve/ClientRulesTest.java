@@ -71,7 +71,7 @@ class ClientRulesTest {
             assertTrue(speedLeft(s) < 0, "the position move runs: " + speedLeft(s));
             rude.close();
             waitUntil("the robot stops after a reset", () -> speedLeft(s) == 0);
-            assertEquals(0, (int) s.robot.inspect(r -> r.motionStatus()[1]), "and leaves position mode");
+            assertEquals(0, (int) s.robot.inspect(r -> r.onBoard().motionStatus()[1]), "and leaves position mode");
             waitUntil("the slot frees", () -> s.server.client() == null);
             try (LineClient next = s.client()) {
                 assertEquals("b,5.02,5.01", next.ask("B"));

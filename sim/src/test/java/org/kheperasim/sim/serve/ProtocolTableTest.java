@@ -139,10 +139,10 @@ class ProtocolTableTest {
             assertEquals("t,1,d", c.ask("T,1,D,1"));
             waitFor(c, "T,1,H,0", "t,1,h,255");
             assertEquals("t,1,f,120", c.ask("T,1,F"), "a held cap reads the cap's resistivity");
-            assertEquals(0, (int) s.robot.inspect(SimRobot::heldCap));
+            assertEquals(0, (int) s.robot.inspect(r -> r.gripper().heldCap()));
             assertEquals("t,1,d", c.ask("T,1,D,0"));
             waitFor(c, "T,1,H,0", "t,1,h,0");
-            assertEquals(-1, (int) s.robot.inspect(SimRobot::heldCap), "opening drops it");
+            assertEquals(-1, (int) s.robot.inspect(r -> r.gripper().heldCap()), "opening drops it");
         }
     }
 

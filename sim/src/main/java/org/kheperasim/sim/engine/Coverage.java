@@ -1,0 +1,217 @@
+package org.kheperasim.sim.engine;
+
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.kheperasim.sim.arena.OccupancyGrid;
+import org.kheperasim.sim.arena.Region;
+
+/**
+ * What a robot has visited: the floor cells its body has covered, and the named regions its centre
+ * has entered (with the time of the first entry).
+ *
+ * <p>Cells are marked along the centre's path as a chain of neighbouring cells, from one marking
+ * point to the next (the poll samples), each step adding the body's leading edge; the bitmap is
+ * kept in tiles allocated on first visit, so a robot that stays in one room costs a few kilobytes.
+ * Regions are checked at the end of every move; the engine steps tick by tick near a region not
+ * yet entered, so the entry time is the same however it steps.
+ */
+final class Coverage {
+    private static final int TILE_SHIFT = 5;
+    private static final int TILE = 1 << TILE_SHIFT;
+    /** The body's footprint in cells, as (dc, dr) pairs, and its leading edge for each of the 8 steps. */
+    private static final int[] FOOTPRINT = footprint(OccupancyGrid.CELL_MM);
+    private static final int[][] EDGES = edges(FOOTPRINT);
+
+    private final World world;
+    private final OccupancyGrid grid;
+    private final int tilesAcross;
+    private long[][] tiles;
+    private int lastCol = Integer.MIN_VALUE;
+    private int lastRow;
+    private List<Region> regions;
+    private long[] entered;
+
+    /**
+     * @param world the world
+     * @param startX where the robot starts, mm: the regions it starts in are entered at time 0
+     * @param startY where the robot starts, mm
+     */
+    Coverage(World world, double startX, double startY) {
+        this.world = world;
+        this.grid = world.grid();
+        this.tilesAcross = (grid.cols() + TILE - 1) >> TILE_SHIFT;
+        this.tiles = new long[tilesAcross * ((grid.rows() + TILE - 1) >> TILE_SHIFT)][];
+        this.regions = world.arena().regions();
+        this.entered = new long[regions.size()];
+        Arrays.fill(entered, -1);
+        regionsAt(startX, startY, 0);
+    }
+
+    /** Mark the cells covered on the way from the last marked position to (x, y). */
+    void mark(double x, double y) {
+        int col = grid.col(x);
+        int row = grid.row(y);
+        if (lastCol == Integer.MIN_VALUE) {
+            lastCol = col;
+            lastRow = row;
+            stamp(col, row, FOOTPRINT);
+            return;
+        }
+        // Walk the chain of neighbouring cells from the last centre cell to this one.
+        while (col != lastCol || row != lastRow) {
+            int dc = Integer.signum(col - lastCol);
+            int dr = Integer.signum(row - lastRow);
+            int ac = StrictMath.abs(col - lastCol);
+            int ar = StrictMath.abs(row - lastRow);
+            if (ac > 2 * ar) {
+                dr = 0;
+            } else if (ar > 2 * ac) {
+                dc = 0;
+            }
+            lastCol += dc;
+            lastRow += dr;
+            stamp(lastCol, lastRow, EDGES[(dr + 1) * 3 + (dc + 1)]);
+        }
+    }
+
+    private void stamp(int col, int row, int[] offsets) {
+        for (int k = 0; k < offsets.length; k += 2) {
+            int c = col + offsets[k];
+            int r = row + offsets[k + 1];
+            if (c >= 0 && r >= 0 && c < grid.cols() && r < grid.rows()) {
+                int t = (r >> TILE_SHIFT) * tilesAcross + (c >> TILE_SHIFT);
+                long[] tile = tiles[t];
+                if (tile == null) {
+                    tile = new long[TILE * TILE / 64];
+                    tiles[t] = tile;
+                }
+                int bit = ((r & (TILE - 1)) << TILE_SHIFT) | (c & (TILE - 1));
+                tile[bit >> 6] |= 1L << (bit & 63);
+            }
+        }
+    }
+
+    /** The centre is at (x, y) at the end of a move at {@code timeNanos}: note the regions it is in. */
+    void regionsAt(double x, double y, long timeNanos) {
+        for (int k = 0; k < entered.length; k++) {
+            if (entered[k] < 0 && regions.get(k).contains(x, y)) {
+                entered[k] = timeNanos;
+            }
+        }
+    }
+
+    /** @return how far the centre can travel from (x, y) without entering a region not yet entered, mm */
+    double freeTravelMm(double x, double y) {
+        double best = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < entered.length; k++) {
+            if (entered[k] < 0) {
+                Region g = regions.get(k);
+                double dx = StrictMath.max(0, StrictMath.max(g.x1() - x, x - g.x2()));
+                double dy = StrictMath.max(0, StrictMath.max(g.y1() - y, y - g.y2()));
+                best = StrictMath.min(best, StrictMath.sqrt(dx * dx + dy * dy));
+            }
+        }
+        return best;
+    }
+
+    /** The arena was edited: take its regions, keeping the entry times of those that kept their names. */
+    void arenaEdited() {
+        List<Region> edited = world.arena().regions();
+        long[] next = new long[edited.size()];
+        Arrays.fill(next, -1);
+        for (int k = 0; k < edited.size(); k++) {
+            for (int j = 0; j < regions.size(); j++) {
+                if (regions.get(j).name().equals(edited.get(k).name())) {
+                    next[k] = entered[j];
+                }
+            }
+        }
+        regions = edited;
+        entered = next;
+    }
+
+    /** @return percentage of the arena's floor cells (as the arena is now) the body has covered */
+    double visitedPercent() {
+        if (world.freeCells() == 0) {
+            return 0;
+        }
+        int visitedFree = 0;
+        for (int t = 0; t < tiles.length; t++) {
+            long[] tile = tiles[t];
+            if (tile == null) {
+                continue;
+            }
+            int col0 = (t % tilesAcross) << TILE_SHIFT;
+            int row0 = (t / tilesAcross) << TILE_SHIFT;
+            for (int w = 0; w < tile.length; w++) {
+                long bits = tile[w];
+                while (bits != 0) {
+                    int bit = (w << 6) + Long.numberOfTrailingZeros(bits);
+                    bits &= bits - 1;
+                    if (grid.id(col0 + (bit & (TILE - 1)), row0 + (bit >> TILE_SHIFT)) == OccupancyGrid.FLOOR) {
+                        visitedFree++;
+                    }
+                }
+            }
+        }
+        return 100.0 * visitedFree / world.freeCells();
+    }
+
+    /** @return the regions entered, with the first entry's simulated time in seconds, in arena order */
+    Map<String, Double> regionsEntered() {
+        Map<String, Double> out = new LinkedHashMap<>();
+        for (int k = 0; k < entered.length; k++) {
+            if (entered[k] >= 0) {
+                out.put(regions.get(k).name(), entered[k] / 1e9);
+            }
+        }
+        return out;
+    }
+
+    private static int[] footprint(double cell) {
+        int reach = (int) StrictMath.ceil(Khepera.BODY_RADIUS_MM / cell);
+        int[] tmp = new int[(2 * reach + 1) * (2 * reach + 1) * 2];
+        int n = 0;
+        for (int dr = -reach; dr <= reach; dr++) {
+            for (int dc = -reach; dc <= reach; dc++) {
+                if (StrictMath.hypot(dc * cell, dr * cell) <= Khepera.BODY_RADIUS_MM) {
+                    tmp[n++] = dc;
+                    tmp[n++] = dr;
+                }
+            }
+        }
+        return Arrays.copyOf(tmp, n);
+    }
+
+    /** For each step (dc, dr) to a neighbouring cell: the footprint's cells not covered before the step. */
+    private static int[][] edges(int[] disc) {
+        int reach = 0;
+        for (int v : disc) {
+            reach = StrictMath.max(reach, StrictMath.abs(v));
+        }
+        int side = 2 * reach + 3;
+        boolean[] inDisc = new boolean[side * side];
+        for (int k = 0; k < disc.length; k += 2) {
+            inDisc[(disc[k + 1] + reach + 1) * side + disc[k] + reach + 1] = true;
+        }
+        int[][] out = new int[9][];
+        for (int dr = -1; dr <= 1; dr++) {
+            for (int dc = -1; dc <= 1; dc++) {
+                int[] edge = new int[disc.length];
+                int n = 0;
+                for (int k = 0; k < disc.length; k += 2) {
+                    int bc = disc[k] + dc + reach + 1;
+                    int br = disc[k + 1] + dr + reach + 1;
+                    if (!inDisc[br * side + bc]) {
+                        edge[n++] = disc[k];
+                        edge[n++] = disc[k + 1];
+                    }
+                }
+                out[(dr + 1) * 3 + (dc + 1)] = Arrays.copyOf(edge, n);
+            }
+        }
+        return out;
+    }
+}

@@ -1,0 +1,374 @@
+package org.kheperasim.sim.engine;
+
+import org.kheperasim.sim.arena.DistanceField;
+import org.kheperasim.sim.arena.OccupancyGrid;
+import org.kheperasim.sim.engine.noise.CounterNoise;
+
+/**
+ * The robot's body on its two wheels: pose, wheel speeds with their calibration and noise, the exact
+ * arc it drives, its clearance from walls and lamps, contact, and the wheel encoders.
+ *
+ * <p>Two ways to move: {@link #glide} drives an exact arc over any number of ticks when nothing can
+ * be touched on the way (the caller has checked {@link #freeTravelMm}); {@link #step} drives one
+ * tick with contact handling. Both use the same arithmetic, so a glide over n ticks lands where n
+ * steps without contact would, to rounding.
+ */
+final class DriveBody {
+    /** Closer than this to an obstacle (beyond the body radius) counts as touching. */
+    static final double CONTACT_EPSILON_MM = 0.5;
+    /** The fast clearance estimate can exceed the true one by up to 2.2 cells; below this margin, refine. */
+    static final double NEAR_MM = 3 * OccupancyGrid.CELL_MM;
+    private static final double TICK_S = Engine.TICK_NANOS / 1e9;
+
+    private final DistanceField field;
+    private final double mmPerPulse;
+    private final double calibrationLeft;
+    private final double calibrationRight;
+    private final double noiseSigmaLeft;
+    private final double noiseSigmaRight;
+    private final CounterNoise noiseLeft;
+    private final CounterNoise noiseRight;
+
+    private double x;
+    private double y;
+    private double cos;
+    private double sin;
+    private double clearance;
+    private int speedLeft;
+    private int speedRight;
+    private double noiseFactorLeft = 1;
+    private double noiseFactorRight = 1;
+    private long nextNoiseNanos;
+    private double wheelLeft;
+    private double wheelRight;
+    private double encoderLeft;
+    private double encoderRight;
+    private Contact contact = Contact.NONE;
+    private boolean blocked;
+    private int collisions;
+    private double distance;
+
+    // The last arc's turn and its trigonometry, reused while the turn per move does not change.
+    private double lastTurn = Double.NaN;
+    private double halfCos = 1;
+    private double halfSin;
+    private double fullCos = 1;
+    private double fullSin;
+    private double chord = 1;
+
+    DriveBody(World world, double x, double y, double headingDeg, RobotModel.Motors motors, double readingNoise,
+            double calibrationLeft, double calibrationRight, CounterNoise noiseLeft, CounterNoise noiseRight) {
+        this.field = world.field();
+        this.mmPerPulse = motors.mmPerPulse();
+        this.calibrationLeft = calibrationLeft;
+        this.calibrationRight = calibrationRight;
+        this.noiseSigmaLeft = motors.noiseLeft() * readingNoise;
+        this.noiseSigmaRight = motors.noiseRight() * readingNoise;
+        this.noiseLeft = noiseLeft;
+        this.noiseRight = noiseRight;
+        this.x = x;
+        this.y = y;
+        double h = StrictMath.toRadians(headingDeg);
+        this.cos = StrictMath.cos(h);
+        this.sin = StrictMath.sin(h);
+        this.clearance = clearanceAt(x, y);
+    }
+
+    // ------------------------------------------------------------------ wheels and noise
+
+    /** The wheels take new speeds, units. */
+    void setSpeeds(int left, int right) {
+        speedLeft = left;
+        speedRight = right;
+        refreshWheels();
+    }
+
+    /** Redraw the wheels' speed noise when its period has come round; returns when it is next due, ns. */
+    long noiseDue(long now) {
+        if (now >= nextNoiseNanos) {
+            long period = now / Khepera.MOTOR_NOISE_PERIOD_NANOS;
+            nextNoiseNanos = (period + 1) * Khepera.MOTOR_NOISE_PERIOD_NANOS;
+            if (noiseSigmaLeft > 0 || noiseSigmaRight > 0) {
+                noiseFactorLeft = 1 + noiseSigmaLeft * noiseLeft.gaussian(period);
+                noiseFactorRight = 1 + noiseSigmaRight * noiseRight.gaussian(period);
+                refreshWheels();
+            }
+        }
+        return nextNoiseNanos;
+    }
+
+    private void refreshWheels() {
+        wheelLeft = speedLeft * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationLeft * noiseFactorLeft;
+        wheelRight = speedRight * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationRight * noiseFactorRight;
+    }
+
+    /** @return true when both wheels stand still */
+    boolean still() {
+        return speedLeft == 0 && speedRight == 0;
+    }
+
+    /** @return how far the centre travels in one tick at most, mm (the arc is no shorter than the chord) */
+    double travelPerTickMm() {
+        return StrictMath.abs(wheelLeft + wheelRight) * 0.5 * TICK_S;
+    }
+
+    /**
+     * @return a lower bound of the distance from the centre to the nearest wall or lamp, less the
+     *     body radius and the touching margin: the centre can travel that far without a contact, mm
+     */
+    double freeTravelMm() {
+        // Both clearance estimates are upper bounds of the true clearance, within 2.2 cells of it.
+        return clearance - NEAR_MM - Khepera.BODY_RADIUS_MM - CONTACT_EPSILON_MM;
+    }
+
+    // ------------------------------------------------------------------ moving
+
+    /**
+     * Drive the exact arc of {@code ticks} ticks at the present wheel speeds, with nothing to touch
+     * on the way.
+     */
+    void glide(long ticks) {
+        if (still()) {
+            return;
+        }
+        double common = arc(ticks);
+        double nx = x + common * chord * (cos * halfCos - sin * halfSin);
+        double ny = y + common * chord * (sin * halfCos + cos * halfSin);
+        turnAndMove(nx, ny, cos * fullCos - sin * fullSin, sin * fullCos + cos * fullSin);
+        clearance = clearanceAt(x, y);
+        count(common, diff(ticks), 1);
+        blocked = false;
+        contact = Contact.NONE;
+    }
+
+    /**
+     * Where a glide of {@code ticks} ticks from here would end, without moving: {x, y, cos, sin,
+     * left encoder, right encoder} into {@code out}. The engine samples sensors inside a glide this way.
+     */
+    void preview(long ticks, double[] out) {
+        if (ticks == 0 || still()) {
+            out[0] = x;
+            out[1] = y;
+            out[2] = cos;
+            out[3] = sin;
+            out[4] = encoderLeft;
+            out[5] = encoderRight;
+            return;
+        }
+        double common = arc(ticks);
+        double diff = diff(ticks);
+        double c = cos * fullCos - sin * fullSin;
+        double s = sin * fullCos + cos * fullSin;
+        double n = 1.0 / StrictMath.sqrt(c * c + s * s);
+        out[0] = x + common * chord * (cos * halfCos - sin * halfSin);
+        out[1] = y + common * chord * (sin * halfCos + cos * halfSin);
+        out[2] = c * n;
+        out[3] = s * n;
+        out[4] = encoderLeft + (common - diff) / mmPerPulse;
+        out[5] = encoderRight + (common + diff) / mmPerPulse;
+    }
+
+    /**
+     * Drive one tick with contact handling: a move into a wall or lamp goes only as far as the
+     * contact and stops translating (the turn still happens, and the wheels' common motion stalls);
+     * caps give way when they can, and one that cannot blocks the robot like a wall.
+     *
+     * @param caps the caps and the parts of the robot that push them
+     */
+    void step(CapContacts caps) {
+        if (still()) {
+            return;
+        }
+        double common = arc(1);
+        double diff = diff(1);
+        double stepLen = common * chord;
+        double midCos = cos * halfCos - sin * halfSin;
+        double midSin = sin * halfCos + cos * halfSin;
+        double nx = x + stepLen * midCos;
+        double ny = y + stepLen * midSin;
+        double newClearance = clearanceAt(nx, ny);
+        double fraction = 1;
+        boolean nowBlocked = false;
+        if (newClearance < Khepera.BODY_RADIUS_MM && newClearance < clearance) {
+            fraction = clearance > Khepera.BODY_RADIUS_MM
+                    ? (clearance - Khepera.BODY_RADIUS_MM) / (clearance - newClearance) : 0;
+            nx = x + fraction * stepLen * midCos;
+            ny = y + fraction * stepLen * midSin;
+            newClearance = clearanceAt(nx, ny);
+            nowBlocked = true;
+            if (!blocked) {
+                collisions++;
+            }
+        }
+        double c = cos * fullCos - sin * fullSin;
+        double s = sin * fullCos + cos * fullSin;
+        caps.clearBlocking();
+        if (caps.near(nx, ny)) {
+            double tx = nx - x;
+            double ty = ny - y;
+            if (!caps.allow(nx, ny, c, s)) {
+                if (!caps.allow(x, y, c, s)) {
+                    c = cos;
+                    s = sin;
+                    diff = 0;
+                }
+                double f = caps.allow(x, y, c, s) ? caps.freeFraction(x, y, tx, ty, c, s) : 0;
+                nx = x + f * tx;
+                ny = y + f * ty;
+                fraction *= f;
+                newClearance = clearanceAt(nx, ny);
+                if (!nowBlocked && !blocked) {
+                    collisions++;
+                }
+                nowBlocked = true;
+            }
+            caps.push(nx, ny, c, s);
+        }
+        blocked = nowBlocked;
+        turnAndMove(nx, ny, c, s);
+        clearance = newClearance;
+        count(common, diff, fraction);
+        if (clearance <= Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) {
+            contact = sideOf(field.nearestObstacleX(x, y), field.nearestObstacleY(x, y));
+        } else if (caps.blocking() >= 0) {
+            contact = sideOf(caps.blockingX(), caps.blockingY());
+        } else {
+            contact = Contact.NONE;
+        }
+    }
+
+    /** Set up the arc of {@code ticks} ticks; returns the centre's path length (signed), mm. */
+    private double arc(long ticks) {
+        double dt = ticks * TICK_S;
+        double dl = wheelLeft * dt;
+        double dr = wheelRight * dt;
+        double turn = (dr - dl) / Khepera.WHEEL_BASE_MM;
+        if (turn != lastTurn) {
+            lastTurn = turn;
+            halfCos = cosOf(turn * 0.5);
+            halfSin = sinOf(turn * 0.5);
+            fullCos = cosOf(turn);
+            fullSin = sinOf(turn);
+            chord = turn == 0 ? 1 : halfSin / (turn * 0.5);
+        }
+        return (dl + dr) * 0.5;
+    }
+
+    private double diff(long ticks) {
+        return (wheelRight - wheelLeft) * ticks * TICK_S * 0.5;
+    }
+
+    private void turnAndMove(double nx, double ny, double c, double s) {
+        double n = 1.0 / StrictMath.sqrt(c * c + s * s);
+        x = nx;
+        y = ny;
+        cos = c * n;
+        sin = s * n;
+    }
+
+    private void count(double common, double diff, double fraction) {
+        double moved = common * fraction;
+        encoderLeft += (moved - diff) / mmPerPulse;
+        encoderRight += (moved + diff) / mmPerPulse;
+        distance += StrictMath.abs(moved);
+    }
+
+    /** Clearance of the body's centre: the fast estimate, refined where contact is possible. */
+    private double clearanceAt(double px, double py) {
+        double c = field.clearance(px, py);
+        return c < Khepera.BODY_RADIUS_MM + NEAR_MM ? field.preciseClearance(px, py) : c;
+    }
+
+    /** The arena was edited: check the clearance again. */
+    void arenaEdited() {
+        clearance = clearanceAt(x, y);
+    }
+
+    private Contact sideOf(double obstacleX, double obstacleY) {
+        double rel = StrictMath.atan2(obstacleY - y, obstacleX - x) - StrictMath.atan2(sin, cos);
+        return Contact.ofAngle(rel);
+    }
+
+    /** sin of a turn: a Taylor series exact to double precision for |a| ≤ 0.1, else {@link StrictMath}. */
+    private static double sinOf(double a) {
+        if (StrictMath.abs(a) > 0.1) {
+            return StrictMath.sin(a);
+        }
+        double a2 = a * a;
+        return a * (1 - a2 / 6 * (1 - a2 / 20 * (1 - a2 / 42 * (1 - a2 / 72))));
+    }
+
+    /** cos of a turn; see {@link #sinOf}. */
+    private static double cosOf(double a) {
+        if (StrictMath.abs(a) > 0.1) {
+            return StrictMath.cos(a);
+        }
+        double a2 = a * a;
+        return 1 - a2 / 2 * (1 - a2 / 12 * (1 - a2 / 30 * (1 - a2 / 56 * (1 - a2 / 90))));
+    }
+
+    // ------------------------------------------------------------------ the robot's own counters
+
+    /** Set the position counters ({@code G} arrived), pulses. */
+    void setCounters(int left, int right) {
+        encoderLeft = left;
+        encoderRight = right;
+    }
+
+    /** @return the left counter's exact travel, pulses */
+    double encoderLeftExact() {
+        return encoderLeft;
+    }
+
+    /** @return the right counter's exact travel, pulses */
+    double encoderRightExact() {
+        return encoderRight;
+    }
+
+    /** @return the 32-bit counter's value for a wheel travel of {@code count} pulses (it wraps like the robot's) */
+    static int pulses(double count) {
+        return (int) (long) StrictMath.floor(count);
+    }
+
+    // ------------------------------------------------------------------ views
+
+    double x() {
+        return x;
+    }
+
+    double y() {
+        return y;
+    }
+
+    double cos() {
+        return cos;
+    }
+
+    double sin() {
+        return sin;
+    }
+
+    int speedLeft() {
+        return speedLeft;
+    }
+
+    int speedRight() {
+        return speedRight;
+    }
+
+    Contact contact() {
+        return contact;
+    }
+
+    boolean blocked() {
+        return blocked;
+    }
+
+    int collisions() {
+        return collisions;
+    }
+
+    double distanceMm() {
+        return distance;
+    }
+}

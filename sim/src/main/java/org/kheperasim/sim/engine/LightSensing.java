@@ -1,0 +1,114 @@
+package org.kheperasim.sim.engine;
+
+import java.util.List;
+import org.kheperasim.api.IrSensor;
+import org.kheperasim.sim.arena.Light;
+import org.kheperasim.sim.arena.OccupancyGrid;
+import org.kheperasim.sim.engine.noise.CounterNoise;
+
+/**
+ * The eight ambient-light sensors: each adds up the lamps it faces and that reach it unshadowed
+ * (falling off with distance), maps the exposure between darkness and brightness, and applies the
+ * paper's flicker in darkness and a relative noise in light. Walls and lamp bodies cast shadows;
+ * caps do not.
+ */
+final class LightSensing {
+    /** Draws per sample in each sensor's stream: the flicker test, the flicker value, the Gaussian. */
+    private static final int DRAWS = 4;
+
+    private final World world;
+    private final OccupancyGrid grid;
+    private final SensorPlacement placement;
+    private final double[] dark;
+    private final double[] gain;
+    private final boolean[] dead;
+    private final double bright;
+    private final double flickerRate;
+    private final double flickerDepth;
+    private final double noiseRel;
+    private final CounterNoise[] noise;
+
+    LightSensing(World world, SensorPlacement placement, RobotModel model, Miscalibration calibration,
+            CounterNoise[] noise) {
+        this.world = world;
+        this.grid = world.grid();
+        this.placement = placement;
+        RobotModel.Light l = model.light();
+        double reading = model.noise().reading();
+        this.dark = calibration.lightDark;
+        this.gain = l.gain();
+        this.dead = l.dead();
+        this.bright = l.bright();
+        this.flickerRate = l.flickerRate() * reading;
+        this.flickerDepth = l.flickerDepth();
+        this.noiseRel = l.noiseRel() * reading;
+        this.noise = noise;
+    }
+
+    /**
+     * Read the sensors of a robot at a pose.
+     *
+     * @param x the robot's centre, mm
+     * @param y the robot's centre, mm
+     * @param c cosine of its heading
+     * @param s sine of its heading
+     * @param sample the sample's index (keys its noise)
+     * @param out receives the eight readings, 0..1023, lower = brighter
+     */
+    void sample(double x, double y, double c, double s, long sample, int[] out) {
+        List<Light> lights = world.arena().lights();
+        if (!lights.isEmpty()) {
+            placement.place(x, y, c, s);
+        }
+        for (int i = 0; i < IrSensor.COUNT; i++) {
+            double exposure = 0;
+            if (!dead[i]) {
+                for (int k = 0; k < lights.size(); k++) {
+                    exposure += exposure(lights.get(k), placement.x[i], placement.y[i], placement.dx[i], placement.dy[i]);
+                }
+            }
+            CounterNoise n = noise[i];
+            long k = sample * DRAWS;
+            double value;
+            if (exposure <= 0) {
+                value = dark[i];
+                if (flickerRate > 0 && n.uniform(k) < flickerRate) {
+                    value *= 1 + flickerDepth * (n.uniform(k + 1) * 2 - 1);
+                }
+            } else {
+                double e = StrictMath.min(1, exposure * gain[i]);
+                value = dark[i] - (dark[i] - bright) * e;
+                if (noiseRel > 0) {
+                    value += n.gaussian(k + 2) * noiseRel * (dark[i] - value);
+                }
+            }
+            out[i] = SensorPlacement.reading(value);
+        }
+    }
+
+    /** How much of a light reaches a sensor at (px, py) looking along (dx, dy); 0..intensity. */
+    private double exposure(Light light, double px, double py, double dx, double dy) {
+        double lx = light.x() - px;
+        double ly = light.y() - py;
+        double r = StrictMath.sqrt(lx * lx + ly * ly);
+        if (r >= light.range()) {
+            return 0;
+        }
+        double facing = r == 0 ? 1 : (lx * dx + ly * dy) / r;
+        if (facing <= 0) {
+            return 0;
+        }
+        if (light.isDirectional()) {
+            double dir = StrictMath.toRadians(light.directionDeg());
+            double towards = r == 0 ? 1 : -(lx * StrictMath.cos(dir) + ly * StrictMath.sin(dir)) / r;
+            if (towards < StrictMath.cos(StrictMath.toRadians(light.spreadDeg() / 2))) {
+                return 0;
+            }
+        }
+        if (!grid.lightReaches(px, py, light.x(), light.y())) {
+            return 0;
+        }
+        double falloff = 1 - r / light.range();
+        return light.intensity() * facing * falloff * falloff;
+    }
+}

@@ -1,0 +1,282 @@
+package org.kheperasim.sim.engine;
+
+import org.kheperasim.api.IrSensor;
+import org.kheperasim.link.timing.LinkTiming;
+import org.kheperasim.link.timing.PollStep;
+
+/**
+ * The serial link between a controller and its simulated robot, as robot-link drives a real one.
+ *
+ * <p>Commands: like robot-link, a speed command goes out only when the asked speeds differ from
+ * those last sent, one command on the line at a time; speeds asked for while the line is busy
+ * replace each other and the latest goes out next. A command acts when its characters and the
+ * robot's turnaround have passed.
+ *
+ * <p>Polling: the cycle N, O, H runs back to back. Each step's values are sampled on the robot when
+ * it has read the command and turned around, and become visible to the controller when the reply's
+ * last character has arrived (see {@link LinkTiming}).
+ */
+final class RobotLink {
+    /** A command's acknowledgement, e.g. {@code d} CR LF. */
+    private static final int ACK_CHARS = 3;
+    private static final PollStep[] CYCLE = LinkTiming.POLL_CYCLE.toArray(new PollStep[0]);
+    private static final int PROXIMITY = LinkTiming.POLL_CYCLE.indexOf(PollStep.PROXIMITY);
+    private static final int LIGHT = LinkTiming.POLL_CYCLE.indexOf(PollStep.LIGHT);
+    private static final int ENCODERS = LinkTiming.POLL_CYCLE.indexOf(PollStep.ENCODERS);
+
+    /** What the link acts on: the robot at its end. */
+    interface Robot {
+        void applySpeeds(long now, int left, int right);
+
+        void applyCounters(int left, int right);
+
+        void applyArm(long now, int position);
+
+        void applyFingers(long now, boolean closed);
+
+        /** Sample the proximity sensors now into {@code out}. */
+        void sampleProximity(int[] out);
+
+        /** Sample the light sensors now into {@code out}. */
+        void sampleLight(int[] out);
+
+        /** @return the robot's left counter for the sample being taken, pulses */
+        int sampleCounterLeft();
+
+        /** @return the robot's right counter for the sample being taken, pulses */
+        int sampleCounterRight();
+    }
+
+    private final LinkTiming timing;
+    private final Robot robot;
+    private final CommandQueue commands = new CommandQueue();
+    private long lineFreeAt;
+    private int askedLeft;
+    private int askedRight;
+    private int sentLeft;
+    private int sentRight;
+    private boolean speedPending;
+
+    // The poll cycle: the step whose sample comes next, and when. Each step's last sample waits in
+    // `sampled` until its reply has arrived (`deliverAt`); it is delivered lazily, when someone looks
+    // at or after that time, or when the step's next sample is taken.
+    private boolean polling = true;
+    private int step;
+    private long sampleAt;
+    private final int[][] sampled = new int[CYCLE.length][];
+    private final int[][] visible = new int[CYCLE.length][];
+    private final long[] deliverAt = new long[CYCLE.length];
+    private final boolean[] pending = new boolean[CYCLE.length];
+
+    RobotLink(LinkTiming timing, Robot robot) {
+        this.timing = timing;
+        this.robot = robot;
+        for (int k = 0; k < CYCLE.length; k++) {
+            int n = CYCLE[k] == PollStep.ENCODERS ? 2 : IrSensor.COUNT;
+            sampled[k] = new int[n];
+            visible[k] = new int[n];
+        }
+    }
+
+    /** robot-link primes every value before it starts the controller; so does the simulator. */
+    void prime() {
+        for (int k = 0; k < CYCLE.length; k++) {
+            take(CYCLE[k], visible[k]);
+        }
+        step = 0;
+        sampleAt = commandNanos(CYCLE[0]);
+    }
+
+    /** Stop polling (a protocol client polls the robot itself). */
+    void stopPolling() {
+        polling = false;
+    }
+
+    // ------------------------------------------------------------------ commands
+
+    /** The controller asks for wheel speeds at {@code now}. */
+    void commandSpeeds(long now, int left, int right) {
+        askedLeft = left;
+        askedRight = right;
+        speedPending = left != sentLeft || right != sentRight;
+        if (speedPending && now >= lineFreeAt) {
+            sendSpeeds(now);
+        }
+    }
+
+    private void sendSpeeds(long start) {
+        long delay = timing.speedCommandDelayNanos(askedLeft, askedRight);
+        commands.add(start + delay, CommandQueue.SPEED, askedLeft, askedRight);
+        lineFreeAt = start + delay + timing.wireNanos(ACK_CHARS);
+        sentLeft = askedLeft;
+        sentRight = askedRight;
+        speedPending = false;
+    }
+
+    /** The controller sets the position counters ({@code G}); it waits its turn on the line. */
+    void commandPositions(long now, int left, int right) {
+        long start = StrictMath.max(now, lineFreeAt);
+        long delay = timing.setPositionDelayNanos(left, right);
+        commands.add(start + delay, CommandQueue.POSITION, left, right);
+        lineFreeAt = start + delay + timing.wireNanos(ACK_CHARS);
+    }
+
+    /** The controller moves the arm ({@code T,1,E,pos}), 0..255. */
+    void commandArm(long now, int position) {
+        int target = StrictMath.max(0, StrictMath.min(255, position));
+        queueTurret(now, CommandQueue.ARM, target, "T,1,E," + target, 3);
+    }
+
+    /** The controller opens or closes the fingers ({@code T,1,D,0|1}). */
+    void commandFingers(long now, boolean closed) {
+        int c = closed ? 1 : 0;
+        queueTurret(now, CommandQueue.FINGERS, c, "T,1,D," + c, 3);
+    }
+
+    private void queueTurret(long now, int type, int value, String command, int replyPayload) {
+        long start = StrictMath.max(now, lineFreeAt);
+        // The command line and CR, then the reply: "t,1," + payload + CR LF.
+        long delay = timing.wireNanos(command.length() + 1) + timing.turnaroundNanos();
+        commands.add(start + delay, type, value, 0);
+        lineFreeAt = start + delay + timing.wireNanos(4 + replyPayload + 2);
+    }
+
+    /** Everything in flight is dropped and the speeds are zero (robot-link sends {@code D,0,0}). */
+    void reset() {
+        askedLeft = 0;
+        askedRight = 0;
+        commands.clear();
+        speedPending = false;
+        sentLeft = 0;
+        sentRight = 0;
+    }
+
+    /** Speeds set on the robot itself (a protocol client): what the controller's side last asked. */
+    void asked(int left, int right) {
+        askedLeft = left;
+        askedRight = right;
+    }
+
+    // ------------------------------------------------------------------ time
+
+    /** Apply the commands that have arrived by {@code now}, and send a pending speed command when the line is free. */
+    void commandsDue(long now) {
+        if (speedPending && lineFreeAt <= now) {
+            sendSpeeds(lineFreeAt);
+        }
+        while (commands.headTime() <= now) {
+            int type = commands.headType();
+            int a = commands.headA();
+            int b = commands.headB();
+            commands.pop();
+            switch (type) {
+                case CommandQueue.SPEED -> robot.applySpeeds(now, a, b);
+                case CommandQueue.POSITION -> robot.applyCounters(a, b);
+                case CommandQueue.ARM -> robot.applyArm(now, a);
+                case CommandQueue.FINGERS -> robot.applyFingers(now, a == 1);
+                default -> throw new IllegalStateException("command type " + type);
+            }
+        }
+    }
+
+    /** @return when the next command arrives or a pending one can go out, ns ({@link Long#MAX_VALUE}: never) */
+    long nextCommandDue() {
+        long t = commands.headTime();
+        return speedPending && lineFreeAt < t ? lineFreeAt : t;
+    }
+
+    /**
+     * Take the poll cycle's sample due at {@code now}, if one is; the robot is where it is at
+     * {@code now}. Call it for every tick at which {@link #nextPollDue} falls, in order.
+     */
+    void pollDue(long now) {
+        while (polling && sampleAt <= now) {
+            int k = step;
+            if (pending[k]) {
+                deliver(k);
+            }
+            long reply = take(CYCLE[k], sampled[k]);
+            deliverAt[k] = sampleAt + reply;
+            pending[k] = true;
+            step = (k + 1) % CYCLE.length;
+            sampleAt = deliverAt[k] + commandNanos(CYCLE[step]);
+        }
+    }
+
+    /** @return when the poll cycle's next sample is taken, ns ({@link Long#MAX_VALUE}: not polling) */
+    long nextPollDue() {
+        return polling ? sampleAt : Long.MAX_VALUE;
+    }
+
+    /** Take a step's sample on the robot now; returns the reply's time on the wire, ns. */
+    private long take(PollStep s, int[] out) {
+        switch (s) {
+            case PROXIMITY -> robot.sampleProximity(out);
+            case LIGHT -> robot.sampleLight(out);
+            case ENCODERS -> {
+                out[0] = robot.sampleCounterLeft();
+                out[1] = robot.sampleCounterRight();
+            }
+            default -> throw new IllegalStateException("poll step " + s);
+        }
+        return timing.wireNanos(s.replyChars());
+    }
+
+    private void deliver(int k) {
+        System.arraycopy(sampled[k], 0, visible[k], 0, sampled[k].length);
+        pending[k] = false;
+    }
+
+    /** The values of step k as the controller sees them at {@code now}: delivered once the reply is in by the tick's start. */
+    private int[] seen(int k, long now) {
+        if (pending[k] && deliverAt[k] <= now - Math.floorMod(now, Engine.TICK_NANOS)) {
+            deliver(k);
+        }
+        return visible[k];
+    }
+
+    /** The time from the start of an exchange until the robot acts on its command, ns. */
+    private long commandNanos(PollStep s) {
+        return timing.wireNanos(s.commandChars()) + timing.turnaroundNanos();
+    }
+
+    // ------------------------------------------------------------------ what the controller sees
+
+    /** @param now the controller's simulated time, ns @param i sensor index @return the proximity value it sees */
+    int visibleProximity(long now, int i) {
+        return seen(PROXIMITY, now)[i];
+    }
+
+    /** @param now simulated time, ns @param i sensor index @return the light value the controller sees */
+    int visibleLight(long now, int i) {
+        return seen(LIGHT, now)[i];
+    }
+
+    /** @param now simulated time, ns @return the left counter the controller sees, pulses */
+    int visibleCounterLeft(long now) {
+        return seen(ENCODERS, now)[0];
+    }
+
+    /** @param now simulated time, ns @return the right counter the controller sees, pulses */
+    int visibleCounterRight(long now) {
+        return seen(ENCODERS, now)[1];
+    }
+
+    /** Copy the values the controller sees at {@code now} into a snapshot's arrays. */
+    void copyVisible(long now, int[] prox, int[] light) {
+        System.arraycopy(seen(PROXIMITY, now), 0, prox, 0, IrSensor.COUNT);
+        System.arraycopy(seen(LIGHT, now), 0, light, 0, IrSensor.COUNT);
+    }
+
+    int askedLeft() {
+        return askedLeft;
+    }
+
+    int askedRight() {
+        return askedRight;
+    }
+
+    LinkTiming timing() {
+        return timing;
+    }
+}
