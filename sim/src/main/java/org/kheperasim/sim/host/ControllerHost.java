@@ -2,39 +2,25 @@ package org.kheperasim.sim.host;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
-import java.time.Instant;
 import java.util.Locale;
-import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.locks.LockSupport;
-import org.kheperasim.api.ArmPosition;
 import org.kheperasim.api.CurrentRobotState;
-import org.kheperasim.api.GripperState;
 import org.kheperasim.api.MessagePasser;
 import org.kheperasim.api.spi.Controllers;
-import org.kheperasim.api.spi.RobotPort;
 import org.kheperasim.sim.engine.RobotDriver;
 import org.kheperasim.sim.engine.SimRobot;
 
 /**
- * Runs one controller thread in lockstep with the engine, and is the robot behind its API.
+ * One controller's life in a run: it is constructed, started when the engine first gives it the
+ * turn, and ends by returning, throwing, hanging or being stopped; whichever way, its robot stops
+ * (as robot-link sends {@code D,0,0}) and the run goes on. Its time is kept by its
+ * {@link ControllerClock}; its robot is the {@link SimulatedRobotPort} behind its API; the turn is
+ * passed by the {@link Lockstep}.
  *
- * <h2>The time model</h2>
- * The controller has its own simulated clock. Each API call costs {@code api.callCostUs} of
- * simulated time (that is how a busy loop makes time pass), {@code Thread.sleep(ms)} costs exactly
- * {@code ms}, and computing between calls costs nothing. The engine lets the controller run through
- * one tick's stretch of simulated time at a time; a call that would reach past the stretch steps the
- * world forward itself, on the controller's own thread, until a controller must run again (see
- * {@link Lockstep}). Exactly one thread holds the turn at any moment, so a run does not depend on
- * thread scheduling, machine speed or load.
- *
- * <p>With one robot the controller's thread never waits for another thread: it runs its code, then
- * the world, then its code again. Between several robots the turn is passed with a short spin, then
- * a park.
- * A controller that runs for {@code hangTimeout} of real time without an API call is reported by
+ * <p>A controller that runs for {@code hangTimeout} of real time without an API call is reported by
  * name with the simulated time, and stopped; the engine never hangs on it.
  */
-public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Clock {
+public final class ControllerHost implements RobotDriver {
 
     /** Tuning of a host that is not part of the simulation's result. */
     public record Options(long hangTimeoutNanos, int jitterMaxMicros) {
@@ -54,33 +40,21 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
         }
     }
 
-    /** Robot time starts at the Appendix controller's creation date, so currentTimeMillis looks plausible. */
-    private static final long EPOCH_MILLIS = Instant.parse("2001-07-27T11:06:00Z").toEpochMilli();
     private static final long STOP_GRACE_MILLIS = 2_000;
 
     private final SimRobot robot;
     private final Class<?> type;
     private final String name;
-    private final long apiCostNanos;
-    private final Options options;
     private final ConsoleSink console;
-    private final CurrentRobotState state;
-    private final MessagePasser messages;
-
+    private final ControllerClock clock;
     private final Thread controller;
+    private final Turn.Seat seat;
     private Lockstep lockstep;
-    private volatile boolean controllerWaiting;
-    private long apiCalls;
     private volatile ControllerStatus status = ControllerStatus.NOT_STARTED;
     private volatile boolean stopRequested;
     private volatile boolean detached;
     private boolean stopAnnounced;
     private volatile Throwable failure;
-
-    // The controller's clock; only the thread holding the turn touches it (the turn is volatile).
-    private long now;
-    private long limit;
-    private long wake;
 
     /**
      * Construct the controller (it does not start until the engine first runs it).
@@ -95,20 +69,20 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
         this.type = type;
         this.name = type.getSimpleName();
         this.console = console;
-        this.options = options;
-        this.apiCostNanos = StrictMath.max(1, (long) (robot.settings().number("api.callCostUs") * 1000));
-        this.state = new CurrentRobotState(this);
-        this.messages = new MessagePasser(this);
+        this.clock = new ControllerClock(this, robot.model().link().apiCostNanos(), options.jitterMaxMicros());
+        SimulatedRobotPort port = new SimulatedRobotPort(robot, clock, this);
+        this.seat = new Turn.Seat(null);
         // The clock is inheritable: binding it while the controller's Thread object is constructed
         // gives it to the controller thread, and only to it.
-        SimClock.bind(this);
+        SimClock.bind(clock);
         Thread created;
         try {
-            created = Controllers.instantiate(type, state, messages);
+            created = Controllers.instantiate(type, new CurrentRobotState(port), new MessagePasser(port));
         } finally {
             SimClock.unbind();
         }
         controller = created;
+        seat.seat(created);
         controller.setDaemon(true);
         controller.setUncaughtExceptionHandler((t, e) -> ended(e));
     }
@@ -137,12 +111,12 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
 
     @Override
     public long wakeNanos() {
-        return status.ended() ? Long.MAX_VALUE : wake;
+        return status.ended() ? Long.MAX_VALUE : clock.wake();
     }
 
     @Override
     public void grant(long limitNanos) {
-        limit = limitNanos;
+        clock.grant(limitNanos);
     }
 
     /** Join a run: the lockstep that passes this host the turn. */
@@ -150,64 +124,41 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
         this.lockstep = lockstep;
     }
 
+    Lockstep lockstep() {
+        return lockstep;
+    }
+
     /** @return the controller's thread */
     Thread thread() {
         return controller;
     }
 
+    Turn.Seat seat() {
+        return seat;
+    }
+
     /** @return API calls made so far; read without synchronisation by the watchdog */
     long apiCalls() {
-        return apiCalls;
+        return clock.apiCalls();
     }
 
     /** Give this host the turn, from whichever thread holds it: start the controller, or wake it. */
-    void receiveTurn() {
+    void receiveTurn(Turn turn) {
+        turn.giveTo(seat);
         if (status == ControllerStatus.NOT_STARTED) {
             status = ControllerStatus.RUNNING;
             controller.start();
-        } else if (controllerWaiting) {
-            LockSupport.unpark(controller);
         }
     }
 
-    /** The controller's slice is used up: step the world on this thread until someone must run. */
-    private void yieldTurn() {
-        wake = now;
-        jitter();
-        RobotDriver next;
-        try {
-            next = lockstep.engine().advance();
-        } catch (RuntimeException | Error e) {
-            lockstep.engineFailed(e);
-            next = null;
-        }
-        if (next == this) {
-            return;
-        }
-        lockstep.passTo(next);
-        awaitTurn();
+    /** Unwind the controller's thread when it has been asked to stop. */
+    void checkStop() {
         if (stopRequested) {
             throw new ControllerStoppedError("controller " + name + " was stopped");
         }
     }
 
-    private void awaitTurn() {
-        long spinStart = 0;
-        int spins = 0;
-        while (!lockstep.holds(controller)) {
-            if (spins == 0) {
-                spinStart = System.nanoTime();
-            }
-            if (Lockstep.spinning(++spins, spinStart)) {
-                continue;
-            }
-            controllerWaiting = true;
-            if (!lockstep.holds(controller)) {
-                LockSupport.park(this);
-            }
-            controllerWaiting = false;
-        }
-    }
+    // ------------------------------------------------------------------ the end of its life
 
     /**
      * Stop the controller: call its {@code killControl()}, then unwind its thread (the owner gives
@@ -247,7 +198,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
                         + " real time without reading a sensor, setting a motor or sleeping. A loop that waits for"
                         + " something must read a sensor or call Thread.sleep inside it. The controller was"
                         + " stopped and the robot's motors set to 0.",
-                name, type.getName(), now / 1e9, realSeconds));
+                name, type.getName(), clock.now() / 1e9, realSeconds));
         detached = true;
         announceStop();
         Controllers.requestStop(controller);
@@ -270,7 +221,7 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
         }
         status = end;
         robot.emergencyStop();
-        wake = Long.MAX_VALUE;
+        clock.ended();
     }
 
     /** The controller thread is ending with an exception (the uncaught-exception handler). */
@@ -314,231 +265,8 @@ public final class ControllerHost implements RobotDriver, RobotPort, SimClock.Cl
         return kept.toString().stripTrailing();
     }
 
-    private void say(ConsoleLine.Kind kind, String text) {
-        console.accept(new ConsoleLine(now, name, kind, text));
-    }
-
-    private void jitter() {
-        int max = options.jitterMaxMicros();
-        if (max > 0 && ThreadLocalRandom.current().nextInt(8) == 0) {
-            LockSupport.parkNanos(ThreadLocalRandom.current().nextLong(max * 1000L + 1));
-        }
-    }
-
-    // ------------------------------------------------------------------ the controller's side
-
-    /** Every API call starts here: the lockstep check. */
-    private void enter() {
-        Thread t = Thread.currentThread();
-        if (t != controller) {
-            if (status == ControllerStatus.NOT_STARTED) {
-                return; // the controller's constructor looking around: free, no time passes
-            }
-            throw new IllegalStateException("the robot API was called from thread '" + t.getName() + "', not from"
-                    + " the controller's own thread; in the simulator only the controller thread may use it"
-                    + " (that keeps runs deterministic)");
-        }
-        if (stopRequested) {
-            throw new ControllerStoppedError("controller " + name + " was stopped");
-        }
-        apiCalls++;
-        if (now >= limit) {
-            yieldTurn();
-        }
-    }
-
-    private void leave() {
-        now += apiCostNanos;
-    }
-
-    @Override
-    public void sleepNanos(long nanos) throws InterruptedException {
-        if (Thread.currentThread() != controller) {
-            TimeUnit.NANOSECONDS.sleep(nanos);
-            return;
-        }
-        if (stopRequested) {
-            throw new ControllerStoppedError("controller " + name + " was stopped");
-        }
-        if (Thread.interrupted()) {
-            throw new InterruptedException("sleep interrupted");
-        }
-        apiCalls++;
-        now += StrictMath.max(nanos, apiCostNanos);
-        if (now >= limit) {
-            yieldTurn();
-        }
-    }
-
-    @Override
-    public long nanoTime() {
-        if (Thread.currentThread() != controller) {
-            return System.nanoTime();
-        }
-        enter();
-        long t = now;
-        leave();
-        return t;
-    }
-
-    @Override
-    public long currentTimeMillis() {
-        if (Thread.currentThread() != controller) {
-            return System.currentTimeMillis();
-        }
-        enter();
-        long t = EPOCH_MILLIS + now / 1_000_000L;
-        leave();
-        return t;
-    }
-
-    @Override
-    public void pause() {
-        if (Thread.currentThread() != controller) {
-            Thread.onSpinWait();
-            return;
-        }
-        enter();
-        leave();
-    }
-
-    @Override
-    public void checkpoint() {
-        if (stopRequested && Thread.currentThread() == controller) {
-            throw new ControllerStoppedError("controller " + name + " was stopped");
-        }
-    }
-
-    // ------------------------------------------------------------------ the robot behind the API
-
-    @Override
-    public int proximity(int index) {
-        enter();
-        int v = robot.visibleProximity(now, index);
-        leave();
-        return v;
-    }
-
-    @Override
-    public int ambientLight(int index) {
-        enter();
-        int v = robot.visibleLight(now, index);
-        leave();
-        return v;
-    }
-
-    @Override
-    public void setSpeeds(int left, int right) {
-        enter();
-        robot.commandSpeeds(now, left, right);
-        leave();
-    }
-
-    @Override
-    public int leftSpeed() {
-        enter();
-        int v = robot.askedLeft();
-        leave();
-        return v;
-    }
-
-    @Override
-    public int rightSpeed() {
-        enter();
-        int v = robot.askedRight();
-        leave();
-        return v;
-    }
-
-    @Override
-    public int leftPosition() {
-        enter();
-        int v = robot.visibleEncoderLeft(now);
-        leave();
-        return v;
-    }
-
-    @Override
-    public int rightPosition() {
-        enter();
-        int v = robot.visibleEncoderRight(now);
-        leave();
-        return v;
-    }
-
-    @Override
-    public void setPositions(int left, int right) {
-        enter();
-        robot.commandPositions(now, left, right);
-        leave();
-    }
-
-    @Override
-    public void setArm(ArmPosition position) {
-        enter();
-        robot.commandArm(now, position);
-        leave();
-    }
-
-    @Override
-    public ArmPosition armPosition() {
-        enter();
-        ArmPosition v = robot.gripper().armRest();
-        leave();
-        return v;
-    }
-
-    @Override
-    public boolean armMoving() {
-        enter();
-        boolean v = robot.gripper().armMoving();
-        leave();
-        return v;
-    }
-
-    @Override
-    public void setFingers(GripperState fingers) {
-        enter();
-        robot.commandFingers(now, fingers);
-        leave();
-    }
-
-    @Override
-    public GripperState fingers() {
-        enter();
-        GripperState v = robot.gripper().fingers();
-        leave();
-        return v;
-    }
-
-    @Override
-    public boolean objectPresent() {
-        enter();
-        boolean v = robot.gripper().objectPresent();
-        leave();
-        return v;
-    }
-
-    @Override
-    public int resistivity() {
-        enter();
-        int v = robot.gripper().resistivity();
-        leave();
-        return v;
-    }
-
-    @Override
-    public void sleep(long millis) throws InterruptedException {
-        if (millis < 0) {
-            throw new IllegalArgumentException("sleep of " + millis + " ms: the time must not be negative");
-        }
-        sleepNanos(TimeUnit.MILLISECONDS.toNanos(millis));
-    }
-
-    @Override
-    public void message(String text) {
-        enter();
-        say(ConsoleLine.Kind.MESSAGE, text);
-        leave();
+    /** A line for the console, stamped with the controller's simulated time. */
+    void say(ConsoleLine.Kind kind, String text) {
+        console.accept(new ConsoleLine(clock.now(), name, kind, text));
     }
 }

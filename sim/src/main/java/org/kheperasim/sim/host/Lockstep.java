@@ -1,14 +1,15 @@
 package org.kheperasim.sim.host;
 
 import java.util.ArrayList;
+import java.util.IdentityHashMap;
 import java.util.List;
-import java.util.concurrent.locks.LockSupport;
+import java.util.Map;
 import org.kheperasim.sim.engine.Engine;
 import org.kheperasim.sim.engine.RobotDriver;
 
 /**
- * Runs an engine and its controllers in lockstep: exactly one thread, the <em>holder of the
- * turn</em>, runs at any moment, either a controller's code or the world (the holder calls
+ * Runs an engine and its controllers in lockstep: exactly one thread, the holder of the
+ * {@link Turn}, runs at any moment, either a controller's code or the world (the holder calls
  * {@link Engine#advance()}, whoever it is). The thread that calls {@link #run} is the owner: it
  * holds the turn at the start and the end, and watches while the controllers have it.
  *
@@ -19,21 +20,14 @@ import org.kheperasim.sim.engine.RobotDriver;
  * on a controller.
  */
 public final class Lockstep {
-    /**
-     * How long a controller waiting for its turn spins before it parks, while there are spare
-     * cores: long enough to ride out a short preemption of the holder, since waking a parked thread
-     * can cost a millisecond on a virtual machine.
-     */
-    private static final long SPIN_NANOS = Runtime.getRuntime().availableProcessors() > 1
-            ? Long.getLong("kheperasim.spinMicros", 5_000) * 1000 : 0;
     private static final long WATCH_PERIOD_NANOS = 1_000_000L;
 
     private final Engine engine;
     private final List<ControllerHost> hosts;
+    private final Map<RobotDriver, ControllerHost> byDriver = new IdentityHashMap<>();
     private final long hangTimeoutNanos;
-    private Thread owner;
-    private volatile Thread holder;
-    private volatile boolean ownerWaiting;
+    private final Turn.Seat owner = new Turn.Seat(null);
+    private final Turn turn = new Turn(owner);
     private volatile RuntimeException engineFailure;
 
     /**
@@ -46,12 +40,17 @@ public final class Lockstep {
         this.hosts = new ArrayList<>(hosts);
         this.hangTimeoutNanos = hangTimeoutNanos;
         for (ControllerHost h : hosts) {
+            byDriver.put(h, h);
             h.join(this);
         }
     }
 
     Engine engine() {
         return engine;
+    }
+
+    Turn turn() {
+        return turn;
     }
 
     /**
@@ -61,8 +60,8 @@ public final class Lockstep {
      * @param endNanos simulated time to stop at, ns
      */
     public void run(long endNanos) {
-        owner = Thread.currentThread();
-        holder = owner;
+        owner.seat(Thread.currentThread());
+        turn.giveTo(owner);
         engine.setEnd(endNanos);
         while (true) {
             RobotDriver next = engine.advance();
@@ -85,27 +84,17 @@ public final class Lockstep {
         }
     }
 
-    /** @return true when {@code thread} holds the turn */
-    boolean holds(Thread thread) {
-        return holder == thread;
-    }
-
     /**
-     * Pass the turn: to a driver (a controller host), or with null back to the owner.
+     * Pass the turn: to the controller the engine chose, or with null back to the owner.
      *
      * @param next the driver the engine chose, or null
      */
     void passTo(RobotDriver next) {
         if (next == null) {
-            holder = owner;
-            if (ownerWaiting) {
-                LockSupport.unpark(owner);
-            }
-            return;
+            turn.giveTo(owner);
+        } else {
+            byDriver.get(next).receiveTurn(turn);
         }
-        ControllerHost host = (ControllerHost) next;
-        holder = host.thread();
-        host.receiveTurn();
     }
 
     /** The world threw while a controller's thread was stepping it: the owner rethrows it. */
@@ -120,64 +109,46 @@ public final class Lockstep {
      */
     void awaitOwner(long maxNanos) {
         long start = System.nanoTime();
-        Thread watched = null;
+        ControllerHost watched = null;
         long progress = -1;
         long progressAt = start;
-        while (holder != owner) {
-            ownerWaiting = true;
-            if (holder != owner) {
-                LockSupport.parkNanos(this, WATCH_PERIOD_NANOS);
-            }
-            ownerWaiting = false;
+        while (!turn.heldBy(owner)) {
+            turn.awaitFor(owner, WATCH_PERIOD_NANOS);
             long now = System.nanoTime();
-            Thread h = holder;
-            if (h == owner) {
+            Turn.Seat seat = turn.holder();
+            if (seat == owner || now - start > maxNanos) {
                 return;
             }
-            if (now - start > maxNanos) {
-                return;
-            }
-            ControllerHost host = hostOf(h);
+            ControllerHost host = hostAt(seat);
             if (host == null) {
                 continue;
             }
             // TERMINATED, not !isAlive(): a thread just handed its first turn may not have started yet.
-            if (h.getState() == Thread.State.TERMINATED) {
-                if (holder == h) {
-                    // Its run() returned while it held the turn: take the turn back.
-                    holder = owner;
+            if (host.thread().getState() == Thread.State.TERMINATED) {
+                if (turn.takeFrom(seat, owner)) {
+                    // Its run() returned while it held the turn.
                     host.returned();
                 }
                 return;
             }
             long p = engine.ticks() + host.apiCalls();
-            if (h != watched || p != progress) {
-                watched = h;
+            if (host != watched || p != progress) {
+                watched = host;
                 progress = p;
                 progressAt = now;
-            } else if (now - progressAt > hangTimeoutNanos && holder == h) {
-                holder = owner;
+            } else if (now - progressAt > hangTimeoutNanos && turn.takeFrom(seat, owner)) {
                 host.hung((now - progressAt) / 1e9);
                 return;
             }
         }
     }
 
-    private ControllerHost hostOf(Thread t) {
+    private ControllerHost hostAt(Turn.Seat seat) {
         for (ControllerHost h : hosts) {
-            if (h.thread() == t) {
+            if (h.seat() == seat) {
                 return h;
             }
         }
         return null;
-    }
-
-    /** Spin once more, or (checking the clock every 256 spins) give up and park? */
-    static boolean spinning(int spins, long since) {
-        if ((spins & 255) != 0 || System.nanoTime() - since < SPIN_NANOS) {
-            Thread.onSpinWait();
-            return true;
-        }
-        return false;
     }
 }

@@ -1,0 +1,155 @@
+package org.kheperasim.sim.host;
+
+import java.util.concurrent.TimeUnit;
+import org.kheperasim.api.ArmPosition;
+import org.kheperasim.api.GripperState;
+import org.kheperasim.api.spi.RobotPort;
+import org.kheperasim.sim.engine.SimRobot;
+
+/**
+ * The simulated robot behind a controller's API: every call goes through the controller's clock
+ * (which charges its simulated time and keeps the lockstep) to the robot's link, so the controller
+ * sees what the serial link would have delivered by then.
+ */
+final class SimulatedRobotPort implements RobotPort {
+    private final SimRobot robot;
+    private final ControllerClock clock;
+    private final ControllerHost host;
+
+    SimulatedRobotPort(SimRobot robot, ControllerClock clock, ControllerHost host) {
+        this.robot = robot;
+        this.clock = clock;
+        this.host = host;
+    }
+
+    @Override
+    public int proximity(int index) {
+        clock.enter();
+        int v = robot.visibleProximity(clock.now(), index);
+        clock.leave();
+        return v;
+    }
+
+    @Override
+    public int ambientLight(int index) {
+        clock.enter();
+        int v = robot.visibleLight(clock.now(), index);
+        clock.leave();
+        return v;
+    }
+
+    @Override
+    public void setSpeeds(int left, int right) {
+        clock.enter();
+        robot.commandSpeeds(clock.now(), left, right);
+        clock.leave();
+    }
+
+    @Override
+    public int leftSpeed() {
+        clock.enter();
+        int v = robot.askedLeft();
+        clock.leave();
+        return v;
+    }
+
+    @Override
+    public int rightSpeed() {
+        clock.enter();
+        int v = robot.askedRight();
+        clock.leave();
+        return v;
+    }
+
+    @Override
+    public int leftPosition() {
+        clock.enter();
+        int v = robot.visibleEncoderLeft(clock.now());
+        clock.leave();
+        return v;
+    }
+
+    @Override
+    public int rightPosition() {
+        clock.enter();
+        int v = robot.visibleEncoderRight(clock.now());
+        clock.leave();
+        return v;
+    }
+
+    @Override
+    public void setPositions(int left, int right) {
+        clock.enter();
+        robot.commandPositions(clock.now(), left, right);
+        clock.leave();
+    }
+
+    @Override
+    public void setArm(ArmPosition position) {
+        clock.enter();
+        robot.commandArm(clock.now(), position);
+        clock.leave();
+    }
+
+    @Override
+    public ArmPosition armPosition() {
+        clock.enter();
+        ArmPosition v = robot.gripper().armRest();
+        clock.leave();
+        return v;
+    }
+
+    @Override
+    public boolean armMoving() {
+        clock.enter();
+        boolean v = robot.gripper().armMoving();
+        clock.leave();
+        return v;
+    }
+
+    @Override
+    public void setFingers(GripperState fingers) {
+        clock.enter();
+        robot.commandFingers(clock.now(), fingers);
+        clock.leave();
+    }
+
+    @Override
+    public GripperState fingers() {
+        clock.enter();
+        GripperState v = robot.gripper().fingers();
+        clock.leave();
+        return v;
+    }
+
+    @Override
+    public boolean objectPresent() {
+        clock.enter();
+        boolean v = robot.gripper().objectPresent();
+        clock.leave();
+        return v;
+    }
+
+    @Override
+    public int resistivity() {
+        clock.enter();
+        int v = robot.gripper().resistivity();
+        clock.leave();
+        return v;
+    }
+
+    @Override
+    public void sleep(long millis) throws InterruptedException {
+        if (millis < 0) {
+            throw new IllegalArgumentException("sleep of " + millis + " ms: the time must not be negative");
+        }
+        clock.sleepNanos(TimeUnit.MILLISECONDS.toNanos(millis));
+    }
+
+    @Override
+    public void message(String text) {
+        clock.enter();
+        host.say(ConsoleLine.Kind.MESSAGE, text);
+        clock.leave();
+    }
+}
