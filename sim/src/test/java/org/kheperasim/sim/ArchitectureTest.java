@@ -1,38 +1,77 @@
 package org.kheperasim.sim;
 
-import static org.junit.jupiter.api.Assertions.assertEquals;
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.classes;
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
 
-import java.io.IOException;
-import java.nio.file.Files;
-import java.nio.file.Path;
-import java.util.List;
-import java.util.stream.Collectors;
-import java.util.stream.Stream;
+import com.tngtech.archunit.core.domain.JavaClasses;
+import com.tngtech.archunit.core.importer.ClassFileImporter;
+import com.tngtech.archunit.core.importer.ImportOption;
+import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
-/** The engine knows nothing about the screen: nothing below the GUI imports AWT or Swing. */
+/**
+ * The layers, checked in the compiled classes: the model knows nothing of the screen (MASON's
+ * rule), renderers draw into a Graphics2D without Swing, the engine sits below the controller host,
+ * and controllers see only the student API.
+ */
 class ArchitectureTest {
-    private static final Path SRC = Path.of(System.getProperty("kheperasim.repoRoot", "..")).resolve("sim/src/main/java/org/kheperasim/sim");
+    private static JavaClasses sim;
+    private static JavaClasses controllers;
 
-    @Test
-    void engineHostRunTraceAndArenaDoNotTouchTheScreen() throws IOException {
-        List<String> offenders;
-        try (Stream<Path> files = Files.walk(SRC)) {
-            offenders = files.filter(p -> p.toString().endsWith(".java"))
-                    .filter(p -> !SRC.relativize(p).startsWith("gui"))
-                    .filter(ArchitectureTest::importsScreen)
-                    .map(p -> SRC.relativize(p).toString())
-                    .collect(Collectors.toList());
-        }
-        assertEquals(List.of(), offenders, "only the gui package may import java.awt or javax.swing");
+    @BeforeAll
+    static void importClasses() {
+        ClassFileImporter importer = new ClassFileImporter().withImportOption(ImportOption.Predefined.DO_NOT_INCLUDE_TESTS);
+        sim = importer.importPackages("org.kheperasim.sim");
+        controllers = importer.importPackages("org.kheperasim.controllers");
     }
 
-    private static boolean importsScreen(Path p) {
-        try {
-            String text = Files.readString(p);
-            return text.contains("import java.awt") || text.contains("import javax.swing");
-        } catch (IOException e) {
-            throw new java.io.UncheckedIOException(e);
-        }
+    @Test
+    void onlyTheWindowTouchesTheScreen() {
+        noClasses().that().resideInAnyPackage("..sim.engine..", "..sim.host..", "..sim.run..", "..sim.trace..",
+                        "..sim.arena..", "..sim.edit..", "..sim.serve..")
+                .should().dependOnClassesThat().resideInAnyPackage("java.awt..", "javax.swing..")
+                .because("the engine and everything it runs on work headless; only the gui package draws")
+                .check(sim);
+    }
+
+    @Test
+    void renderersDrawWithoutSwing() {
+        noClasses().that().haveSimpleNameEndingWith("Renderer")
+                .should().dependOnClassesThat().resideInAPackage("javax.swing..")
+                .because("a renderer draws a snapshot into any Graphics2D, so it is testable into an image")
+                .check(sim);
+    }
+
+    @Test
+    void theEngineKnowsNothingAboveIt() {
+        noClasses().that().resideInAPackage("..sim.engine..")
+                .should().dependOnClassesThat().resideInAnyPackage("..sim.host..", "..sim.run..", "..sim.gui..",
+                        "..sim.cli..", "..sim.serve..", "..sim.edit..", "..sim.trace..")
+                .check(sim);
+    }
+
+    @Test
+    void theHostKnowsNothingAboveIt() {
+        noClasses().that().resideInAPackage("..sim.host..")
+                .should().dependOnClassesThat().resideInAnyPackage("..sim.run..", "..sim.gui..", "..sim.cli..",
+                        "..sim.serve..", "..sim.edit..")
+                .check(sim);
+    }
+
+    @Test
+    void theArenaModelStandsAlone() {
+        noClasses().that().resideInAPackage("..sim.arena..")
+                .should().dependOnClassesThat().resideInAnyPackage("..sim.engine..", "..sim.host..", "..sim.run..",
+                        "..sim.gui..", "..sim.cli..", "..sim.serve..", "..sim.edit..")
+                .check(sim);
+    }
+
+    @Test
+    void controllersSeeOnlyTheStudentApi() {
+        classes().that().resideInAPackage("org.kheperasim.controllers..")
+                .should().onlyDependOnClassesThat().resideInAnyPackage("org.kheperasim.controllers..",
+                        "org.kheperasim.api", "java..")
+                .because("a controller must run unchanged on the real robot, which has only the api")
+                .check(controllers);
     }
 }

@@ -1,5 +1,8 @@
 package org.kheperasim.sim.gui;
 
+import org.kheperasim.sim.edit.ArenaCheck;
+import org.kheperasim.sim.edit.EditorModel;
+import org.kheperasim.sim.edit.Item;
 import java.awt.AlphaComposite;
 import java.awt.BasicStroke;
 import java.awt.Color;

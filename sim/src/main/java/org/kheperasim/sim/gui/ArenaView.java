@@ -1,5 +1,6 @@
 package org.kheperasim.sim.gui;
 
+import org.kheperasim.sim.edit.EditorModel;
 import java.awt.Cursor;
 import java.awt.Dimension;
 import java.awt.Graphics;

@@ -1,5 +1,8 @@
 package org.kheperasim.sim.gui;
 
+import org.kheperasim.sim.edit.ArenaEdits;
+import org.kheperasim.sim.edit.EditorModel;
+import org.kheperasim.sim.edit.Item;
 import java.util.List;
 import java.util.Set;
 import org.kheperasim.sim.arena.Arena;

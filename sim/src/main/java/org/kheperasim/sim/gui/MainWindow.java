@@ -1,5 +1,7 @@
 package org.kheperasim.sim.gui;
 
+import org.kheperasim.sim.edit.ArenaEdits;
+import org.kheperasim.sim.edit.EditorModel;
 import java.awt.BorderLayout;
 import java.awt.Color;
 import java.awt.Dimension;
@@ -55,6 +57,7 @@ import org.kheperasim.sim.run.ControllerCompiler;
 import org.kheperasim.sim.run.PacedRunner;
 import org.kheperasim.sim.serve.ProtocolServer;
 import org.kheperasim.sim.serve.ServedRobot;
+import org.kheperasim.sim.run.RunRecording;
 import org.kheperasim.sim.run.RunSession;
 import org.kheperasim.sim.run.SettingsFile;
 import org.kheperasim.sim.run.Simulation;
@@ -881,34 +884,9 @@ public final class MainWindow {
         showMessage("Recording saved in " + dir + " (see replay.txt)", false);
     }
 
-    /**
-     * Save what replays a run exactly: the start arena, the stamped edits, the settings and the
-     * command line that replays them.
-     *
-     * @param r the run
-     * @param classpath where its controller came from (empty for a bundled one)
-     * @param settings the run's settings
-     * @param dir the folder to write to
-     */
+    /** Save what replays a run exactly (see {@link RunRecording}). */
     static void saveRecording(PacedRunner r, List<Path> classpath, Settings settings, Path dir) {
-        try {
-            Files.createDirectories(dir);
-            RunSession s = r.session();
-            ArenaFormat.save(s.arena(), dir.resolve("start.arena"));
-            s.edits().save(dir.resolve("run.edits"));
-            SettingsFile.save(settings, dir.resolve("run.settings"));
-            StringBuilder cmd = new StringBuilder("java -jar khepera-sim.jar run --arena start.arena --controller ")
-                    .append(s.controllerClass()).append(" --seed ").append(s.seed()).append(" --edits run.edits");
-            if (!classpath.isEmpty()) {
-                cmd.append(" --classpath ");
-                cmd.append(String.join(java.io.File.pathSeparator, classpath.stream().map(p -> p.toAbsolutePath().toString()).toList()));
-            }
-            settings.overrides().forEach((k, v) -> cmd.append(" --set ").append(k).append('=').append(v));
-            Files.writeString(dir.resolve("replay.txt"), "# Replays the run exactly; add --seconds T for how long (the window ran to "
-                    + String.format(Locale.ROOT, "%.3f", r.latest().timeSeconds()) + " s) and --trace FILE for the trace:\n" + cmd + "\n");
-        } catch (IOException e) {
-            throw new java.io.UncheckedIOException("cannot write the recording in " + dir + ": " + e.getMessage(), e);
-        }
+        RunRecording.save(r.session(), r.latest().timeSeconds(), classpath, settings, dir);
     }
 
     private void close() {

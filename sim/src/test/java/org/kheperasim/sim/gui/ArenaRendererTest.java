@@ -1,5 +1,6 @@
 package org.kheperasim.sim.gui;
 
+import org.kheperasim.sim.edit.Item;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;

@@ -1,5 +1,8 @@
 package org.kheperasim.sim.gui;
 
+import org.kheperasim.sim.edit.ArenaEdits;
+import org.kheperasim.sim.edit.EditorModel;
+import org.kheperasim.sim.edit.Item;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;

@@ -1,5 +1,7 @@
 package org.kheperasim.sim.gui;
 
+import org.kheperasim.sim.edit.ArenaEdits;
+import org.kheperasim.sim.edit.EditorModel;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 

@@ -1,4 +1,4 @@
-package org.kheperasim.sim.gui;
+package org.kheperasim.sim.edit;
 
 import java.util.List;
 import org.kheperasim.sim.arena.Arena;

@@ -1,4 +1,4 @@
-package org.kheperasim.sim.gui;
+package org.kheperasim.sim.edit;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
@@ -143,7 +143,7 @@ public final class EditorModel {
         fire();
     }
 
-    static boolean exists(Arena a, Item it) {
+    public static boolean exists(Arena a, Item it) {
         int n = switch (it.kind()) {
             case ROBOT -> a.robots().size();
             case WALL -> a.walls().size();

@@ -1,4 +1,4 @@
-package org.kheperasim.sim.gui;
+package org.kheperasim.sim.edit;
 
 import java.util.ArrayList;
 import java.util.Collection;
@@ -24,7 +24,7 @@ public final class ArenaEdits {
     }
 
     /** @return a copy with the given lists */
-    static Arena with(Arena a, List<Pose> robots, List<Wall> walls, List<Light> lights, List<Cap> caps) {
+    public static Arena with(Arena a, List<Pose> robots, List<Wall> walls, List<Light> lights, List<Cap> caps) {
         return new Arena(a.name(), a.width(), a.height(), robots, walls, lights, caps, a.regions());
     }
 
@@ -249,11 +249,11 @@ public final class ArenaEdits {
     }
 
     /** Rounds to 0.01 mm, so rotated files stay readable. */
-    static double round(double v) {
+    public static double round(double v) {
         return StrictMath.rint(v * 100) / 100;
     }
 
-    static double normalise(double deg) {
+    public static double normalise(double deg) {
         double d = deg % 360;
         return d < 0 ? d + 360 : d;
     }

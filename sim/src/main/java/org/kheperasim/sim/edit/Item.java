@@ -1,4 +1,4 @@
-package org.kheperasim.sim.gui;
+package org.kheperasim.sim.edit;
 
 /**
  * One thing in an arena that can be selected: its kind and its index in the arena's list.
