@@ -25,7 +25,44 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
 
     /** @return a command line ready to execute, with the project's error handling */
     public static CommandLine commandLine() {
-        CommandLine cl = new CommandLine(new Main());
+        return withErrorHandling(new CommandLine(new Main()));
+    }
+
+    /**
+     * A command line for these arguments: when they name a subcommand, only that one is built
+     * (picocli reads every annotated option by reflection, which costs a tenth of a second for all
+     * of them at every start); otherwise every subcommand, for the top-level help.
+     *
+     * @param args command-line arguments
+     * @return a command line ready to execute them
+     */
+    static CommandLine commandLineFor(String[] args) {
+        if (args.length > 0) {
+            for (Object sub : SUBCOMMANDS) {
+                Class<?> type = (Class<?>) sub;
+                Command c = type.getAnnotation(Command.class);
+                if (c != null && c.name().equals(args[0]) && type != CommandLine.HelpCommand.class) {
+                    CommandLine top = new CommandLine(new Lean());
+                    top.addSubcommand(c.name(), type);
+                    return withErrorHandling(top);
+                }
+            }
+        }
+        return commandLine();
+    }
+
+    /** The top-level command when only one subcommand is built. */
+    @Command(name = "khepera-sim", mixinStandardHelpOptions = true, version = "khepera-sim 0.1.0")
+    static final class Lean implements java.util.concurrent.Callable<Integer> {
+        @Override
+        public Integer call() {
+            return GuiCommand.open(org.kheperasim.sim.gui.GuiOptions.defaults());
+        }
+    }
+
+    private static final Object[] SUBCOMMANDS = Main.class.getAnnotation(Command.class).subcommands();
+
+    private static CommandLine withErrorHandling(CommandLine cl) {
         cl.setExecutionExceptionHandler((e, cmd, parsed) -> {
             cmd.getErr().println("khepera-sim: " + e.getMessage());
             if (e.getCause() != null && System.getenv("KHEPERA_DEBUG") != null) {
@@ -43,7 +80,7 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
      * @param args command-line arguments
      */
     public static void main(String[] args) {
-        int code = commandLine().execute(args);
+        int code = commandLineFor(args).execute(args);
         if (code != 0) {
             System.exit(code);
         }

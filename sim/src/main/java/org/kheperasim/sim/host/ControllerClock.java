@@ -1,6 +1,5 @@
 package org.kheperasim.sim.host;
 
-import java.time.Instant;
 import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
@@ -18,8 +17,12 @@ import org.kheperasim.sim.engine.RobotDriver;
  * the real ones.
  */
 final class ControllerClock implements SimClock.Clock {
-    /** Robot time starts at the Appendix controller's creation date, so currentTimeMillis looks plausible. */
-    private static final long EPOCH_MILLIS = Instant.parse("2001-07-27T11:06:00Z").toEpochMilli();
+    /**
+     * Robot time starts at the Appendix controller's creation date, 2001-07-27T11:06:00Z, so
+     * currentTimeMillis looks plausible (a literal: parsing the date would load the java.time
+     * formatters at every start).
+     */
+    static final long EPOCH_MILLIS = 996_231_960_000L;
 
     private final ControllerHost host;
     private final long apiCostNanos;
