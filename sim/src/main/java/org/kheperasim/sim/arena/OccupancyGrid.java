@@ -285,21 +285,24 @@ public final class OccupancyGrid {
         }
         double tMaxX = stepC == 0 ? Double.POSITIVE_INFINITY : boundary(c, stepC, x, dirX);
         double tMaxY = stepR == 0 ? Double.POSITIVE_INFINITY : boundary(r, stepR, y, dirY);
+        // From one cell boundary to the next along an axis is a fixed distance along the ray.
+        double tDeltaX = stepC == 0 ? Double.POSITIVE_INFINITY : CELL_MM / StrictMath.abs(dirX);
+        double tDeltaY = stepR == 0 ? Double.POSITIVE_INFINITY : CELL_MM / StrictMath.abs(dirY);
         while (true) {
             double t;
             if (tMaxX < tMaxY) {
                 t = tMaxX;
                 c += stepC;
-                tMaxX = boundary(c, stepC, x, dirX);
+                tMaxX += tDeltaX;
             } else {
                 t = tMaxY;
                 r += stepR;
-                tMaxY = boundary(r, stepR, y, dirY);
+                tMaxY += tDeltaY;
             }
             if (t > maxDist) {
                 return record(hit, Double.POSITIVE_INFINITY, FLOOR, -1, -1);
             }
-            id = id(c, r);
+            id = c < 0 || r < 0 || c >= cols || r >= rows ? WALL : cells[r * cols + c];
             if (id != FLOOR && id != transparentId && !(capsTransparent && id >= FIRST_CAP)) {
                 return record(hit, t > 0 ? t : 0, id, c, r);
             }

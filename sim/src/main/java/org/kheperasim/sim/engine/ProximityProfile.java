@@ -61,6 +61,26 @@ public record ProximityProfile(String name, double[] distancesMm, double[] value
         return distancesMm[distancesMm.length - 1];
     }
 
+    /**
+     * The distance beyond which the response is at most {@code v}: {@code valueAt(d) <= v} for every
+     * d past it (the profile falls with distance).
+     *
+     * @param v a response value
+     * @return distance, mm (0 when even contact gives no more than v)
+     */
+    public double distanceBeyondWhichAtMost(double v) {
+        if (values[0] <= v) {
+            return 0;
+        }
+        for (int i = 1; i < values.length; i++) {
+            if (values[i] <= v) {
+                double t = (values[i - 1] - v) / (values[i - 1] - values[i]);
+                return distancesMm[i - 1] + t * (distancesMm[i] - distancesMm[i - 1]);
+            }
+        }
+        return distancesMm[distancesMm.length - 1];
+    }
+
     /** @param distanceMm distance from the sensor to the reflecting surface, mm @return the reading */
     public double valueAt(double distanceMm) {
         if (distanceMm <= distancesMm[0]) {

@@ -29,6 +29,7 @@ final class ProximitySensing {
     private final double[] rayCos = new double[RAY_ANGLES_DEG.length];
     private final double[] raySin = new double[RAY_ANGLES_DEG.length];
     private final double[] reflectance;
+    private final double maxReflectance;
     private final double[] gain;
     private final double[] offset;
     private final double[] noiseScale = new double[IrSensor.COUNT];
@@ -54,6 +55,7 @@ final class ProximitySensing {
             raySin[r] = StrictMath.sin(StrictMath.toRadians(RAY_ANGLES_DEG[r]));
         }
         this.reflectance = p.reflectance();
+        this.maxReflectance = StrictMath.max(reflectance[1], StrictMath.max(reflectance[2], reflectance[3]));
         this.gain = calibration.proxGain;
         this.offset = calibration.proxOffset;
         for (int i = 0; i < IrSensor.COUNT; i++) {
@@ -129,9 +131,15 @@ final class ProximitySensing {
     private double beams(double px, double py, double dx, double dy, double skip) {
         double raw = 0;
         for (int r = 0; r < rayCos.length; r++) {
+            // A hit beyond `reach` could not beat the strongest response so far: march no farther.
+            double reach = raw == 0 ? range
+                    : profile.distanceBeyondWhichAtMost(raw / (RAY_WEIGHTS[r] * maxReflectance)) + 1e-9;
+            if (reach <= skip) {
+                continue;
+            }
             double rx = dx * rayCos[r] - dy * raySin[r];
             double ry = dy * rayCos[r] + dx * raySin[r];
-            double d = skip + grid.castRay(px + skip * rx, py + skip * ry, rx, ry, range - skip, hit);
+            double d = skip + grid.castRay(px + skip * rx, py + skip * ry, rx, ry, StrictMath.min(range, reach) - skip, hit);
             if (d != Double.POSITIVE_INFINITY) {
                 double v = RAY_WEIGHTS[r] * reflectanceOf(hit.id) * profile.valueAt(d);
                 if (v > raw) {
