@@ -1,9 +1,10 @@
 package org.kheperasim.sim.engine;
 
 /**
- * What the robot does by itself when a protocol client talks to it directly (the protocol server):
- * speed, position ({@code C}, {@code J}) and PWM modes, the motion status {@code K} reports, and
- * the LEDs. A run with a controller never leaves speed mode.
+ * The robot as a protocol client drives it directly (the protocol server): each command acts at
+ * once, as on the robot when its characters have arrived. Speed, position ({@code C}, {@code J})
+ * and PWM modes, the motion status {@code K} reports, sensors read on demand, the counters, the
+ * gripper turret and the LEDs. A run with a controller never leaves speed mode.
  */
 public final class OnBoardControl {
 
@@ -28,15 +29,59 @@ public final class OnBoardControl {
         }
     }
 
+    private final SimRobot robot;
     private final DriveBody body;
+    private final GripperModel gripper;
     private final PositionControl left = new PositionControl();
     private final PositionControl right = new PositionControl();
     private MotorMode mode = MotorMode.SPEED;
     private long nextUpdate = Long.MAX_VALUE;
     private int leds;
 
-    OnBoardControl(DriveBody body) {
+    OnBoardControl(SimRobot robot, DriveBody body, GripperModel gripper) {
+        this.robot = robot;
         this.body = body;
+        this.gripper = gripper;
+    }
+
+    /** A protocol client drives the robot itself: the simulated controller's link stops polling. */
+    public void servedDirectly() {
+        robot.servedDirectly();
+    }
+
+    /** Read the eight proximity sensors now, with their noise ({@code N} arrived); 0..1023, higher = nearer. */
+    public void readProximity(int[] out) {
+        robot.readProximityNow(out);
+    }
+
+    /** Read the eight ambient-light sensors now ({@code O} arrived); 0..1023, lower = brighter. */
+    public void readLight(int[] out) {
+        robot.readLightNow(out);
+    }
+
+    /** Set the position counters at once ({@code G} arrived), pulses. */
+    public void setCounters(int left, int right) {
+        body.setCounters(left, right);
+    }
+
+    /** @return the left position counter now, pulses ({@code H}) */
+    public int counterLeft() {
+        return DriveBody.pulses(body.encoderLeftExact());
+    }
+
+    /** @return the right position counter now, pulses */
+    public int counterRight() {
+        return DriveBody.pulses(body.encoderRightExact());
+    }
+
+    /** Move the arm at once ({@code T,1,E,pos} arrived) from simulated time {@code now}; 0..255, larger = lower. */
+    public void moveArm(long now, int position) {
+        gripper.moveArm(now, position);
+    }
+
+    /** Start the fingers at once ({@code T,1,D,0|1} arrived at {@code now}). */
+    public void moveFingers(long now, org.kheperasim.api.GripperState state) {
+        gripper.moveFingers(now, state);
     }
 
     /** Leave position and PWM mode (a speed command, or the robot was stopped). */
@@ -59,6 +104,7 @@ public final class OnBoardControl {
      */
     public void driveSpeeds(int l, int r) {
         leave(MotorMode.SPEED);
+        robot.asked(l, r);
         body.setSpeeds(l, r);
     }
 
@@ -92,6 +138,7 @@ public final class OnBoardControl {
         right.moveTo(r, body.speedRight());
         mode = MotorMode.POSITION;
         nextUpdate = now;
+        robot.positionMoveStarted(now);
     }
 
     /**

@@ -70,7 +70,7 @@ public final class SimRobot implements RobotLink.Robot {
         this.gripper = new GripperModel(id, world, body, model.gripper());
         this.capContacts = new CapContacts(world.capSet(), gripper);
         this.gripperPort = new GripperPort(gripper);
-        this.onBoard = new OnBoardControl(body);
+        this.onBoard = new OnBoardControl(this, body, gripper);
         this.coverage = new Coverage(world, start.x(), start.y());
         this.link = new RobotLink(model.link().timing(), this);
         body.preview(0, sense);
@@ -155,6 +155,34 @@ public final class SimRobot implements RobotLink.Robot {
 
     private static long ceilTick(long nanos) {
         return -Math.floorDiv(-nanos, Engine.TICK_NANOS) * Engine.TICK_NANOS;
+    }
+
+    /** A protocol client drives the robot itself: the simulated controller's link stops polling. */
+    void servedDirectly() {
+        link.stopPolling();
+    }
+
+    /** Speeds set on the robot itself: what the controller's side last asked for too. */
+    void asked(int left, int right) {
+        link.asked(left, right);
+    }
+
+    /** Sample the proximity sensors where the robot is now. */
+    void readProximityNow(int[] out) {
+        body.preview(0, sense);
+        sampleProximity(out);
+    }
+
+    /** Sample the light sensors where the robot is now. */
+    void readLightNow(int[] out) {
+        body.preview(0, sense);
+        sampleLight(out);
+    }
+
+    /** A position move was started at {@code now}: the robot needs the engine from then on. */
+    void positionMoveStarted(long now) {
+        nextHardDue = StrictMath.min(nextHardDue, now);
+        nextDue = StrictMath.min(nextDue, now);
     }
 
     /** The arena was edited: check clearance, caps and regions again. */
@@ -298,57 +326,9 @@ public final class SimRobot implements RobotLink.Robot {
 
     // ------------------------------------------------------------------ on the robot (a protocol client)
 
-    /** @return the robot's own motor modes and LEDs, for a protocol client that drives it directly */
+    /** @return the robot as a protocol client drives it directly: motor modes, sensors read on demand, LEDs */
     public OnBoardControl onBoard() {
         return onBoard;
-    }
-
-    /** A protocol client drives the robot itself: the simulated controller link stops polling. */
-    public void servedDirectly() {
-        link.stopPolling();
-    }
-
-    /**
-     * Move the wheels to counter targets at once ({@code C,l,r} arrived at {@code now}), pulses; see
-     * {@link OnBoardControl#moveToPositions}.
-     */
-    public void moveToPositions(long now, int left, int right) {
-        onBoard.moveToPositions(now, left, right);
-        nextHardDue = StrictMath.min(nextHardDue, now);
-        nextDue = StrictMath.min(nextDue, now);
-    }
-
-    /** Set the wheel speeds at once ({@code D} arrived), units; leaves position and PWM mode. */
-    public void driveSpeeds(int left, int right) {
-        link.asked(left, right);
-        onBoard.driveSpeeds(left, right);
-    }
-
-    /** Read the eight proximity sensors now, with their noise ({@code N} arrived); 0..1023, higher = nearer. */
-    public void readProximity(int[] out) {
-        body.preview(0, sense);
-        sampleProximity(out);
-    }
-
-    /** Read the eight ambient-light sensors now ({@code O} arrived); 0..1023, lower = brighter. */
-    public void readLight(int[] out) {
-        body.preview(0, sense);
-        sampleLight(out);
-    }
-
-    /** Set the position counters at once ({@code G} arrived), pulses. */
-    public void setCounters(int left, int right) {
-        body.setCounters(left, right);
-    }
-
-    /** Move the arm at once ({@code T,1,E,pos} arrived) from simulated time {@code now}; 0..255, larger = lower. */
-    public void moveArm(long now, int position) {
-        gripper.moveArm(now, position);
-    }
-
-    /** Start the fingers at once ({@code T,1,D,0|1} arrived). */
-    public void moveFingers(long now, GripperState state) {
-        gripper.moveFingers(now, state);
     }
 
     // ------------------------------------------------------------------ read-only views
@@ -386,16 +366,6 @@ public final class SimRobot implements RobotLink.Robot {
     /** @return the right speed in effect on the wheel, units */
     public int speedRight() {
         return body.speedRight();
-    }
-
-    /** @return the robot's own left position counter now, pulses ({@code H} arrived) */
-    public int counterLeft() {
-        return encoderLeft();
-    }
-
-    /** @return the robot's own right position counter now, pulses */
-    public int counterRight() {
-        return encoderRight();
     }
 
     /** @return the robot's own left position counter, pulses (not delayed by the link) */

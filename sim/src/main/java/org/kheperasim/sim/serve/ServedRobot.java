@@ -77,7 +77,7 @@ public final class ServedRobot implements AutoCloseable {
         this.speed = speed;
         this.engine = new Engine(new World(arena), seed);
         this.robot = engine.addRobot("served", arena.robots().get(0), settings);
-        robot.servedDirectly();
+        robot.onBoard().servedDirectly();
         this.timing = robot.link();
     }
 
@@ -142,23 +142,23 @@ public final class ServedRobot implements AutoCloseable {
 
     private String answer(Command command) {
         if (command instanceof Command.SetSpeed c) {
-            robot.driveSpeeds(c.left(), c.right());
+            robot.onBoard().driveSpeeds(c.left(), c.right());
             return c.reply().encode();
         } else if (command instanceof Command.ReadProximity c) {
-            robot.readProximity(values);
+            robot.onBoard().readProximity(values);
             return c.reply(values).encode();
         } else if (command instanceof Command.ReadLight c) {
-            robot.readLight(values);
+            robot.onBoard().readLight(values);
             return c.reply(values).encode();
         } else if (command instanceof Command.ReadPositionCounters c) {
-            return c.reply(robot.counterLeft(), robot.counterRight()).encode();
+            return c.reply(robot.onBoard().counterLeft(), robot.onBoard().counterRight()).encode();
         } else if (command instanceof Command.SetPositionCounters c) {
-            robot.setCounters(c.left(), c.right());
+            robot.onBoard().setCounters(c.left(), c.right());
             return c.reply().encode();
         } else if (command instanceof Command.ReadSpeed c) {
             return c.reply(robot.speedLeft(), robot.speedRight()).encode();
         } else if (command instanceof Command.MoveToPosition c) {
-            robot.moveToPositions(engine.timeNanos(), c.left(), c.right());
+            robot.onBoard().moveToPositions(engine.timeNanos(), c.left(), c.right());
             return c.reply().encode();
         } else if (command instanceof Command.SetPositionProfile c) {
             robot.onBoard().positionProfile(c.maxSpeedLeft(), c.accelerationLeft(), c.maxSpeedRight(), c.accelerationRight());
@@ -203,10 +203,10 @@ public final class ServedRobot implements AutoCloseable {
         }
         TurretCommand body = c.body();
         if (body instanceof TurretCommand.Fingers f) {
-            robot.moveFingers(engine.timeNanos(), f.close() ? GripperState.CLOSED : GripperState.OPEN);
+            robot.onBoard().moveFingers(engine.timeNanos(), f.close() ? GripperState.CLOSED : GripperState.OPEN);
             return c.reply().encode();
         } else if (body instanceof TurretCommand.Arm a) {
-            robot.moveArm(engine.timeNanos(), a.position());
+            robot.onBoard().moveArm(engine.timeNanos(), a.position());
             return c.reply().encode();
         } else if (body instanceof TurretCommand.Resistivity) {
             return c.reply(robot.gripper().resistivity()).encode();
