@@ -19,7 +19,7 @@ import picocli.CommandLine.Option;
 /** {@code run}: one headless run, with a one-line result or a JSON object. */
 @Command(name = "run", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Run a controller in an arena headless and print the result.",
-            "Exit status: 0 when the controller ran to the end, 1 when it threw or hung, 2 for bad input."})
+            "Exit status: 0 when the controller ran to the end, 1 when it threw, hung, broke a rule (System.exit, a forbidden call) or ran out of memory, 2 for bad input."})
 final class RunCommand implements Callable<Integer> {
 
     @Option(names = "--arena", required = true, paramLabel = "FILE",
@@ -103,7 +103,7 @@ final class RunCommand implements Callable<Integer> {
             System.out.println(summary(result));
         }
         for (RunResult.RobotResult r : result.robots()) {
-            if (r.status() == ControllerStatus.FAILED || r.status() == ControllerStatus.HUNG) {
+            if (r.status().failed()) {
                 return 1;
             }
         }

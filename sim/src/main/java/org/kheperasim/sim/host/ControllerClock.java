@@ -24,6 +24,9 @@ final class ControllerClock implements SimClock.Clock {
      */
     static final long EPOCH_MILLIS = 996_231_960_000L;
 
+    /** The heap is looked at every 16 API calls (a few nanoseconds each, on average). */
+    private static final int HEAP_LOOK_MASK = 15;
+
     private final ControllerHost host;
     private final long apiCostNanos;
     private final int jitterMaxMicros;
@@ -71,9 +74,20 @@ final class ControllerClock implements SimClock.Clock {
                     + " (that keeps runs deterministic)");
         }
         host.checkStop();
-        apiCalls++;
+        if ((++apiCalls & HEAP_LOOK_MASK) == 0) {
+            lookAtHeap();
+        }
         if (now >= limit) {
             yieldTurn();
+        }
+    }
+
+    /** A controller that allocates without bound is stopped before the heap runs out. */
+    private void lookAtHeap() {
+        String full = HeapWatch.pressed();
+        if (full != null) {
+            host.exceededMemory(full);
+            host.checkStop();
         }
     }
 
@@ -160,9 +174,23 @@ final class ControllerClock implements SimClock.Clock {
 
     @Override
     public void checkpoint() {
-        if (Thread.currentThread() == host.thread()) {
-            host.checkStop();
-        }
+        // The controller's thread unwinds when asked to stop; so does every thread it started.
+        host.checkStop();
+    }
+
+    @Override
+    public boolean onControllerThread() {
+        return Thread.currentThread() == host.thread();
+    }
+
+    @Override
+    public void brokeRule(String what) {
+        host.brokeRule(what);
+    }
+
+    @Override
+    public void adopt(Thread thread) {
+        host.adopt(thread);
     }
 
     /** The controller has ended: it never needs to run again. */

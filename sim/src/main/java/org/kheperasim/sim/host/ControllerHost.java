@@ -2,6 +2,7 @@ package org.kheperasim.sim.host;
 
 import java.io.PrintWriter;
 import java.io.StringWriter;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import org.kheperasim.api.CurrentRobotState;
@@ -55,6 +56,9 @@ public final class ControllerHost implements RobotDriver {
     private volatile boolean detached;
     private boolean stopAnnounced;
     private volatile Throwable failure;
+    /** How the controller's life ends once it has unwound, when a fault decided it; else null. */
+    private volatile ControllerStatus pendingEnd;
+    private final java.util.List<Thread> strays = new java.util.ArrayList<>();
 
     /**
      * Construct the controller (it does not start until the engine first runs it).
@@ -151,6 +155,58 @@ public final class ControllerHost implements RobotDriver {
         }
     }
 
+    /**
+     * The controller broke a rule (see {@link Containment}): report it once, and stop the
+     * controller; its thread unwinds from the call that broke it.
+     */
+    void brokeRule(String what) {
+        fault(ControllerStatus.BROKE_RULE, what + "; the controller was stopped and the robot's motors set to 0");
+    }
+
+    /** The controller allocates without bound: stop it, and let what it holds go. */
+    void exceededMemory(String what) {
+        fault(ControllerStatus.EXCEEDED_MEMORY, "allocated without bound (" + what + "); the controller was stopped"
+                + " and the robot's motors set to 0. Does it keep adding to a list or map it never empties?");
+    }
+
+    private void fault(ControllerStatus end, String message) {
+        synchronized (strays) {
+            if (pendingEnd != null || status.ended()) {
+                return;
+            }
+            pendingEnd = end;
+        }
+        say(ConsoleLine.Kind.ERROR, "controller " + name + " (" + type.getName() + ") " + message);
+        announceStop();
+        for (Thread t : straysNow()) {
+            t.interrupt();
+        }
+    }
+
+    /** A thread the controller started: it ends with the run. */
+    void adopt(Thread t) {
+        t.setDaemon(true);
+        t.setUncaughtExceptionHandler((th, e) -> {
+            if (!(e instanceof ControllerStoppedError)) {
+                say(ConsoleLine.Kind.ERROR, "a thread the controller started (" + th.getName() + ") threw " + e);
+            }
+        });
+        synchronized (strays) {
+            strays.add(t);
+        }
+    }
+
+    private java.util.List<Thread> straysNow() {
+        synchronized (strays) {
+            return java.util.List.copyOf(strays);
+        }
+    }
+
+    /** @return the threads the controller started that are still alive */
+    public java.util.List<Thread> liveThreads() {
+        return straysNow().stream().filter(Thread::isAlive).toList();
+    }
+
     /** Unwind the controller's thread when it has been asked to stop. */
     void checkStop() {
         if (stopRequested) {
@@ -170,25 +226,58 @@ public final class ControllerHost implements RobotDriver {
             status = ControllerStatus.STOPPED;
             return;
         }
-        if (status != ControllerStatus.RUNNING) {
+        if (status == ControllerStatus.RUNNING) {
+            announceStop();
+            Controllers.requestStop(controller);
+            lockstep.passTo(this);
+            lockstep.awaitOwner(STOP_GRACE_MILLIS * 1_000_000L);
+            if (status == ControllerStatus.RUNNING) {
+                detached = true;
+                controller.interrupt();
+                say(ConsoleLine.Kind.ERROR, "did not stop within " + STOP_GRACE_MILLIS / 1000 + " s of being asked;"
+                        + " it was left behind. Does it catch Throwable, or loop inside a library call?");
+                finish(ControllerStatus.STOPPED);
+            }
+        }
+        endStrays();
+    }
+
+    /** The threads the controller started end with it: they are interrupted and unwind at their next loop or call. */
+    private void endStrays() {
+        stopRequested = true;
+        List<Thread> alive = liveThreads();
+        if (alive.isEmpty()) {
             return;
         }
-        announceStop();
-        Controllers.requestStop(controller);
-        lockstep.passTo(this);
-        lockstep.awaitOwner(STOP_GRACE_MILLIS * 1_000_000L);
-        if (status == ControllerStatus.RUNNING) {
-            detached = true;
-            controller.interrupt();
-            say(ConsoleLine.Kind.ERROR, "did not stop within " + STOP_GRACE_MILLIS / 1000 + " s of being asked;"
-                    + " it was left behind. Does it catch Throwable, or loop inside a library call?");
-            finish(ControllerStatus.STOPPED);
+        // While they unwind, every loop checkpoint of theirs looks for the stop.
+        SimClock.stopRequested();
+        try {
+            joinStrays(alive);
+        } finally {
+            SimClock.stopSettled();
+        }
+    }
+
+    private void joinStrays(List<Thread> alive) {
+        long deadline = System.nanoTime() + STOP_GRACE_MILLIS * 1_000_000L;
+        for (Thread t : alive) {
+            t.interrupt();
+            try {
+                t.join(StrictMath.max(1, (deadline - System.nanoTime()) / 1_000_000L));
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            }
+            if (t.isAlive()) {
+                say(ConsoleLine.Kind.ERROR, "a thread the controller started (" + t.getName() + ") did not end with"
+                        + " the run; it was left behind");
+            }
         }
     }
 
     /** The watchdog saw the controller's thread end while it held the turn: run() returned. */
     void returned() {
-        finish(ControllerStatus.FINISHED);
+        finish(pendingEnd != null ? pendingEnd : ControllerStatus.FINISHED);
     }
 
     /** The watchdog saw no progress for the hang timeout while this controller held the turn. */
@@ -230,7 +319,20 @@ public final class ControllerHost implements RobotDriver {
             settleStop();
             return;
         }
-        if (e instanceof ControllerStoppedError) {
+        if (pendingEnd != null) {
+            finish(pendingEnd);
+        } else if (e instanceof OutOfMemoryError) {
+            HeapWatch.ranOut();
+            failure = e;
+            say(ConsoleLine.Kind.ERROR, "controller " + name + " (" + type.getName() + ") allocated without bound:"
+                    + " the Java heap ran out (" + e.getMessage() + "); the controller was stopped and the robot's"
+                    + " motors set to 0. Does it keep adding to a list or map it never empties?");
+            finish(ControllerStatus.EXCEEDED_MEMORY);
+        } else if (isPolicyError(e)) {
+            failure = e;
+            say(ConsoleLine.Kind.ERROR, rootMessage(e) + "; the controller was stopped.");
+            finish(ControllerStatus.BROKE_RULE);
+        } else if (e instanceof ControllerStoppedError) {
             finish(ControllerStatus.STOPPED);
         } else {
             failure = e;
@@ -239,6 +341,24 @@ public final class ControllerHost implements RobotDriver {
         }
         settleStop();
         lockstep.passTo(null);
+    }
+
+    private static boolean isPolicyError(Throwable e) {
+        for (Throwable t = e; t != null; t = t.getCause()) {
+            if (t.getClass().getName().endsWith("ControllerPolicyError")) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static String rootMessage(Throwable e) {
+        for (Throwable t = e; t != null; t = t.getCause()) {
+            if (t.getClass().getName().endsWith("ControllerPolicyError")) {
+                return t.getMessage();
+            }
+        }
+        return String.valueOf(e.getMessage());
     }
 
     private void settleStop() {

@@ -13,10 +13,19 @@ public enum ControllerStatus {
     /** It stopped making API calls; it was reported and stopped. */
     HUNG,
     /** The simulator stopped it (end of the run, or asked to). */
-    STOPPED;
+    STOPPED,
+    /** It broke a rule of the simulator (called System.exit, waited forever, made a forbidden call); it was stopped. */
+    BROKE_RULE,
+    /** It allocated without bound; it was stopped and what it held was let go. */
+    EXCEEDED_MEMORY;
 
     /** @return true once the controller no longer runs */
     public boolean ended() {
         return this != NOT_STARTED && this != RUNNING;
+    }
+
+    /** @return true when the controller ended by a fault of its own (the run then failed) */
+    public boolean failed() {
+        return this == FAILED || this == HUNG || this == BROKE_RULE || this == EXCEEDED_MEMORY;
     }
 }

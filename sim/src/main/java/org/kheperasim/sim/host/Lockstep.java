@@ -21,6 +21,8 @@ import org.kheperasim.sim.engine.RobotDriver;
  */
 public final class Lockstep {
     private static final long WATCH_PERIOD_NANOS = 1_000_000L;
+    /** The heap is looked at every this many watch periods. */
+    private static final int HEAP_WATCH_EVERY = 100;
 
     private final Engine engine;
     private final List<ControllerHost> hosts;
@@ -63,19 +65,32 @@ public final class Lockstep {
         owner.seat(Thread.currentThread());
         turn.giveTo(owner);
         engine.setEnd(endNanos);
-        while (true) {
-            RobotDriver next = engine.advance();
-            if (next == null) {
-                return;
+        HeapWatch.listen(heapFull);
+        try {
+            while (true) {
+                RobotDriver next = engine.advance();
+                if (next == null) {
+                    return;
+                }
+                passTo(next);
+                awaitOwner(Long.MAX_VALUE);
+                RuntimeException failure = engineFailure;
+                if (failure != null) {
+                    throw failure;
+                }
             }
-            passTo(next);
-            awaitOwner(Long.MAX_VALUE);
-            RuntimeException failure = engineFailure;
-            if (failure != null) {
-                throw failure;
-            }
+        } finally {
+            HeapWatch.unlisten(heapFull);
         }
     }
+
+    /** The heap passed its threshold: the controller holding the turn is the one allocating. */
+    private final java.util.function.Consumer<String> heapFull = what -> {
+        ControllerHost holder = hostAt(turn.holder());
+        if (holder != null) {
+            holder.exceededMemory(what);
+        }
+    };
 
     /** Stop every controller (at the end of a run); returns when they have unwound or been left behind. */
     public void stopAll() {
@@ -112,8 +127,16 @@ public final class Lockstep {
         ControllerHost watched = null;
         long progress = -1;
         long progressAt = start;
+        int watches = 0;
         while (!turn.heldBy(owner)) {
             turn.awaitFor(owner, WATCH_PERIOD_NANOS);
+            if (++watches % HEAP_WATCH_EVERY == 0) {
+                String full = HeapWatch.nearlyFull();
+                ControllerHost holder = hostAt(turn.holder());
+                if (full != null && holder != null) {
+                    holder.exceededMemory(full);
+                }
+            }
             long now = System.nanoTime();
             Turn.Seat seat = turn.holder();
             if (seat == owner || now - start > maxNanos) {

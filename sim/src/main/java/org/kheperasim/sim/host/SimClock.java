@@ -31,6 +31,20 @@ public final class SimClock {
 
         /** Called at loop back-edges of controller code: throws when the controller must stop. */
         void checkpoint();
+
+        /** @return true on the controller's own thread (not a thread it started) */
+        boolean onControllerThread();
+
+        /**
+         * The controller broke a rule of the simulator (it called {@code System.exit}, waited with
+         * nothing to wake it, ...): the run records the fault and stops the controller.
+         *
+         * @param what the call, for the user
+         */
+        void brokeRule(String what);
+
+        /** A thread the controller started: it belongs to the run and ends with it. */
+        void adopt(Thread thread);
     }
 
     // Inheritable: the host binds the clock on the engine thread while it constructs the controller
@@ -44,6 +58,11 @@ public final class SimClock {
     private static volatile int stopsPending;
 
     private SimClock() {
+    }
+
+    /** @return the clock of the calling thread's run, or null outside a run */
+    static Clock current() {
+        return CURRENT.get();
     }
 
     /** Bind {@code clock} to the calling thread (the controller thread, at its start). */

@@ -5,6 +5,7 @@ import java.util.List;
 import org.kheperasim.api.spi.ControllerException;
 import org.kheperasim.api.spi.ControllerNames;
 import org.kheperasim.sim.host.loading.ControllerClassLoader;
+import org.kheperasim.sim.host.loading.ControllerPolicyError;
 
 /**
  * Finds controller classes by name: a bundled controller ({@code WallFollower}), or a class the
@@ -39,6 +40,10 @@ public final class ControllerCatalog {
      */
     public Class<?> load(String name) {
         ControllerClassLoader loader = new ControllerClassLoader(classpath, ControllerCatalog.class.getClassLoader());
-        return ControllerNames.resolve(name, loader, bundled(), classpath, "khepera-sim.jar");
+        try {
+            return ControllerNames.resolve(name, loader, bundled(), classpath, "khepera-sim.jar");
+        } catch (ControllerPolicyError e) {
+            throw new ControllerException("controller " + name + " was refused: " + e.getMessage(), e);
+        }
     }
 }

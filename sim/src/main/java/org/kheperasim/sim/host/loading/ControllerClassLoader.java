@@ -50,6 +50,7 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
 
     private final List<Root> roots;
     private final ClassHierarchy hierarchy;
+    private final boolean contained;
 
     /**
      * @param classpath directories and jar files of the user's compiled classes, searched in order
@@ -59,7 +60,21 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
      * @throws UncheckedIOException when a jar file cannot be opened
      */
     public ControllerClassLoader(List<Path> classpath, ClassLoader parent) {
+        this(classpath, parent, true);
+    }
+
+    /**
+     * @param classpath see {@link #ControllerClassLoader(List, ClassLoader)}
+     * @param parent see {@link #ControllerClassLoader(List, ClassLoader)}
+     * @param contained true (the default) to contain the code: its calls that could end the
+     *     application or stall a run go to {@link org.kheperasim.sim.host.Containment}, and a class
+     *     that reaches for files, the network, processes, native code, class loaders, reflection or
+     *     the simulator is refused ({@link ControllerPolicyError}); false only for a controller the
+     *     user trusts
+     */
+    public ControllerClassLoader(List<Path> classpath, ClassLoader parent, boolean contained) {
         super(Objects.requireNonNull(parent, "parent"));
+        this.contained = contained;
         this.roots = open(classpath);
         this.hierarchy = new ClassHierarchy(this::localClassFile, parent);
     }
@@ -137,8 +152,10 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         }
         String failure = "Cannot load class " + name + " from " + found.location() + ": ";
         try {
-            byte[] rewritten = TimeCallRewriter.rewrite(found.bytes(), hierarchy);
+            byte[] rewritten = TimeCallRewriter.rewrite(found.bytes(), hierarchy, contained);
             return defineClass(name, rewritten, 0, rewritten.length, found.domain());
+        } catch (ControllerPolicyError e) {
+            throw withCause(new ControllerPolicyError(failure + e.getMessage()), e);
         } catch (UnsupportedClassVersionError e) {
             throw withCause(new UnsupportedClassVersionError(failure + e.getMessage()), e);
         } catch (ClassFormatError e) {

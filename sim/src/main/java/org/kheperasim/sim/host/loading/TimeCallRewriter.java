@@ -58,6 +58,39 @@ public final class TimeCallRewriter {
     /** The replacement of the instance method {@code TimeUnit.sleep(long)}: the unit comes first. */
     private static final String TIME_UNIT_SLEEP_HOOK = "(L" + TIME_UNIT + ";J)V";
 
+    /** Internal name of the class the containment hooks are in. */
+    static final String CONTAINMENT = Type.getInternalName(org.kheperasim.sim.host.Containment.class);
+
+    /** Where a call goes instead. */
+    private record Target(String owner, String name, String descriptor) {
+    }
+
+    /**
+     * Static calls redirected to {@link org.kheperasim.sim.host.Containment}, by owner, name and
+     * descriptor, to the method of the given name and the same descriptor.
+     */
+    private static final java.util.Map<String, String> CONTAINED_STATICS = java.util.Map.ofEntries(
+            java.util.Map.entry("java/lang/System.exit(I)V", "exit"),
+            java.util.Map.entry("java/util/concurrent/locks/LockSupport.parkNanos(J)V", "parkNanos"),
+            java.util.Map.entry("java/util/concurrent/locks/LockSupport.parkNanos(Ljava/lang/Object;J)V", "parkNanos"),
+            java.util.Map.entry("java/util/concurrent/locks/LockSupport.parkUntil(J)V", "parkUntil"),
+            java.util.Map.entry("java/util/concurrent/locks/LockSupport.parkUntil(Ljava/lang/Object;J)V", "parkUntil"),
+            java.util.Map.entry("java/util/concurrent/locks/LockSupport.park()V", "park"),
+            java.util.Map.entry("java/util/concurrent/locks/LockSupport.park(Ljava/lang/Object;)V", "park"),
+            java.util.Map.entry("java/time/Instant.now()Ljava/time/Instant;", "instantNow"),
+            java.util.Map.entry("java/time/Clock.systemUTC()Ljava/time/Clock;", "clockUTC"),
+            java.util.Map.entry("java/time/Clock.systemDefaultZone()Ljava/time/Clock;", "clockDefaultZone"),
+            java.util.Map.entry("java/time/LocalDateTime.now()Ljava/time/LocalDateTime;", "localDateTimeNow"),
+            java.util.Map.entry("java/time/LocalDate.now()Ljava/time/LocalDate;", "localDateNow"),
+            java.util.Map.entry("java/time/LocalTime.now()Ljava/time/LocalTime;", "localTimeNow"),
+            java.util.Map.entry("java/time/ZonedDateTime.now()Ljava/time/ZonedDateTime;", "zonedDateTimeNow"));
+
+    /** Instance calls redirected to static hooks that take the receiver first, by owner, name and descriptor. */
+    private static final java.util.Map<String, String> CONTAINED_VIRTUALS = java.util.Map.of(
+            "java/lang/Runtime.exit(I)V", "exit",
+            "java/lang/Runtime.halt(I)V", "halt",
+            "java/lang/Runtime.addShutdownHook(Ljava/lang/Thread;)V", "addShutdownHook");
+
     /**
      * The newest class file version this rewriter accepts: what both ASM 9.8 (up to Java 25) and
      * the running JVM can read.
@@ -84,6 +117,21 @@ public final class TimeCallRewriter {
      *     too large for the class file format once checkpoints are inserted
      */
     public static byte[] rewrite(byte[] classFile, HierarchyLookup lookup) {
+        return rewrite(classFile, lookup, false);
+    }
+
+    /**
+     * Rewrite one class file, and with {@code contained} also put its escapes under the simulator's
+     * control and refuse its forbidden calls (see {@link ControllerPolicy} and
+     * {@link org.kheperasim.sim.host.Containment}).
+     *
+     * @param classFile the class file's bytes (not modified)
+     * @param lookup see {@link #rewrite(byte[], HierarchyLookup)}
+     * @param contained true for untrusted controller code
+     * @return the rewritten class file, or {@code classFile} itself when nothing had to change
+     * @throws ControllerPolicyError naming the first forbidden call and its source line
+     */
+    public static byte[] rewrite(byte[] classFile, HierarchyLookup lookup, boolean contained) {
         checkHeader(classFile);
         ClassReader reader;
         ClassWriter writer;
@@ -91,8 +139,10 @@ public final class TimeCallRewriter {
         try {
             reader = new ClassReader(classFile);
             writer = new ClassWriter(reader, ClassWriter.COMPUTE_MAXS);
-            rewriter = new ClassRewriter(writer, lookup);
+            rewriter = new ClassRewriter(writer, lookup, contained);
             reader.accept(rewriter, 0);
+        } catch (ControllerPolicyError e) {
+            throw e;
         } catch (RuntimeException e) {
             // ASM reports a malformed class file with whatever runtime exception it runs into.
             throw withCause(new ClassFormatError("not a well-formed class file (" + e + ")"), e);
@@ -138,11 +188,46 @@ public final class TimeCallRewriter {
     /** Rewrites every method and remembers whether anything changed. */
     private static final class ClassRewriter extends ClassVisitor {
         private final HierarchyLookup lookup;
+        private final boolean contained;
         private boolean changed;
+        private String className;
+        private String source;
 
-        ClassRewriter(ClassVisitor next, HierarchyLookup lookup) {
+        ClassRewriter(ClassVisitor next, HierarchyLookup lookup, boolean contained) {
             super(Opcodes.ASM9, next);
             this.lookup = lookup;
+            this.contained = contained;
+        }
+
+        @Override
+        public void visit(int version, int access, String name, String signature, String superName, String[] interfaces) {
+            className = name;
+            if (contained) {
+                check(-1, superName, null);
+                if (interfaces != null) {
+                    for (String i : interfaces) {
+                        check(-1, i, null);
+                    }
+                }
+            }
+            super.visit(version, access, name, signature, superName, interfaces);
+        }
+
+        @Override
+        public void visitSource(String file, String debug) {
+            source = file;
+            super.visitSource(file, debug);
+        }
+
+        /** Refuse a forbidden use (contained code only). */
+        private void check(int line, String owner, String member) {
+            if (!contained || owner == null) {
+                return;
+            }
+            String why = ControllerPolicy.refusal(owner, member);
+            if (why != null) {
+                throw ControllerPolicy.error(className, source, line, owner, member, why);
+            }
         }
 
         @Override
@@ -153,25 +238,56 @@ public final class TimeCallRewriter {
         }
 
         /**
-         * The descriptor of the {@link SimClock} method (of the same name) that replaces a call, or
-         * null when the call stays.
+         * Where a call goes instead, or null when it stays: the {@link SimClock} method of the same
+         * name for the time calls, and for contained code the {@link org.kheperasim.sim.host.Containment}
+         * hooks.
          *
          * @param opcode {@link Opcodes#INVOKESTATIC} or {@link Opcodes#INVOKEVIRTUAL}; any other
          *     kind of call always stays
          */
-        private String hook(int opcode, String owner, String name, String descriptor) {
+        private Target hook(int opcode, String owner, String name, String descriptor) {
             if (opcode == Opcodes.INVOKESTATIC) {
                 String method = name + descriptor;
                 if (THREAD_STATICS.contains(method)
                         && (owner.equals(THREAD) || lookup.resolvesToThread(owner, name, descriptor))) {
-                    return descriptor;
+                    return new Target(SIM_CLOCK, name, descriptor);
                 }
                 if (owner.equals(SYSTEM) && SYSTEM_STATICS.contains(method)) {
-                    return descriptor;
+                    return new Target(SIM_CLOCK, name, descriptor);
                 }
-            } else if (opcode == Opcodes.INVOKEVIRTUAL && owner.equals(TIME_UNIT)
-                    && name.equals("sleep") && descriptor.equals("(J)V")) {
-                return TIME_UNIT_SLEEP_HOOK;
+                String contain = contained ? CONTAINED_STATICS.get(owner + "." + method) : null;
+                if (contain != null) {
+                    return new Target(CONTAINMENT, contain, descriptor);
+                }
+            } else if (opcode == Opcodes.INVOKEVIRTUAL) {
+                if (owner.equals(TIME_UNIT) && name.equals("sleep") && descriptor.equals("(J)V")) {
+                    return new Target(SIM_CLOCK, name, TIME_UNIT_SLEEP_HOOK);
+                }
+                if (!contained) {
+                    return null;
+                }
+                String contain = CONTAINED_VIRTUALS.get(owner + "." + name + descriptor);
+                if (contain != null) {
+                    return new Target(CONTAINMENT, contain, "(L" + owner + ";" + descriptor.substring(1));
+                }
+                if (name.equals("wait") && !owner.startsWith("[")) {
+                    String receiver = "(Ljava/lang/Object;";
+                    switch (descriptor) {
+                        case "()V" -> {
+                            return new Target(CONTAINMENT, "waitForever", receiver + ")V");
+                        }
+                        case "(J)V", "(JI)V" -> {
+                            return new Target(CONTAINMENT, "waitFor", receiver + descriptor.substring(1));
+                        }
+                        default -> {
+                            return null;
+                        }
+                    }
+                }
+                if (name.equals("start") && descriptor.equals("()V")
+                        && (owner.equals(THREAD) || lookup.resolvesToThread(owner, name, descriptor))) {
+                    return new Target(CONTAINMENT, "start", "(Ljava/lang/Thread;)V");
+                }
             }
             return null;
         }
@@ -184,12 +300,16 @@ public final class TimeCallRewriter {
                     case Opcodes.H_INVOKEVIRTUAL -> Opcodes.INVOKEVIRTUAL;
                     default -> 0;
                 };
-                String hook = hook(opcode, handle.getOwner(), handle.getName(), handle.getDesc());
+                check(-1, handle.getOwner(), handle.getName());
+                Target hook = hook(opcode, handle.getOwner(), handle.getName(), handle.getDesc());
                 if (hook == null) {
                     return handle;
                 }
                 changed = true;
-                return new Handle(Opcodes.H_INVOKESTATIC, SIM_CLOCK, handle.getName(), hook, false);
+                return new Handle(Opcodes.H_INVOKESTATIC, hook.owner(), hook.name(), hook.descriptor(), false);
+            }
+            if (value instanceof Type type && type.getSort() == Type.OBJECT) {
+                check(-1, type.getInternalName(), null);
             }
             if (value instanceof ConstantDynamic dynamic) {
                 Object[] arguments = new Object[dynamic.getBootstrapMethodArgumentCount()];
@@ -229,12 +349,17 @@ public final class TimeCallRewriter {
 
             @Override
             public void visitLabel(Label label) {
+                rethrowStops();
                 passed.add(label);
                 super.visitLabel(label);
+                if (catchAlls.contains(label)) {
+                    atCatchAll = true;
+                }
             }
 
             @Override
             public void visitJumpInsn(int opcode, Label label) {
+                rethrowStops();
                 // A JSR (pre-Java 6 subroutine call) returns with RET: jumping back with it is no loop.
                 if (opcode != Opcodes.JSR && passed.contains(label)) {
                     checkpoint();
@@ -244,6 +369,7 @@ public final class TimeCallRewriter {
 
             @Override
             public void visitTableSwitchInsn(int min, int max, Label dflt, Label... labels) {
+                rethrowStops();
                 if (anyPassed(dflt, labels)) {
                     checkpoint();
                 }
@@ -252,33 +378,117 @@ public final class TimeCallRewriter {
 
             @Override
             public void visitLookupSwitchInsn(Label dflt, int[] keys, Label[] labels) {
+                rethrowStops();
                 if (anyPassed(dflt, labels)) {
                     checkpoint();
                 }
                 super.visitLookupSwitchInsn(dflt, keys, labels);
             }
 
+            private int line = -1;
+            /** Handlers of catch-alls ({@code Throwable}, {@code Error}): a stop must not end in them. */
+            private final Set<Label> catchAlls = new HashSet<>();
+            private boolean atCatchAll;
+
+            @Override
+            public void visitTryCatchBlock(Label start, Label end, Label handler, String type) {
+                if (contained && ("java/lang/Throwable".equals(type) || "java/lang/Error".equals(type))) {
+                    catchAlls.add(handler);
+                }
+                super.visitTryCatchBlock(start, end, handler, type);
+            }
+
+            @Override
+            public void visitFrame(int type, int numLocal, Object[] local, int numStack, Object[] stack) {
+                super.visitFrame(type, numLocal, local, numStack, stack);
+                rethrowStops();
+            }
+
+            /** At a catch-all handler, with the exception on the stack: rethrow it if it is a stop. */
+            private void rethrowStops() {
+                if (atCatchAll) {
+                    atCatchAll = false;
+                    changed = true;
+                    super.visitInsn(Opcodes.DUP);
+                    super.visitMethodInsn(Opcodes.INVOKESTATIC, CONTAINMENT, "rethrowIfStopped",
+                            "(Ljava/lang/Throwable;)V", false);
+                }
+            }
+
+            @Override
+            public void visitInsn(int opcode) {
+                rethrowStops();
+                super.visitInsn(opcode);
+            }
+
+            @Override
+            public void visitIntInsn(int opcode, int operand) {
+                rethrowStops();
+                super.visitIntInsn(opcode, operand);
+            }
+
+            @Override
+            public void visitIincInsn(int varIndex, int increment) {
+                rethrowStops();
+                super.visitIincInsn(varIndex, increment);
+            }
+
+            @Override
+            public void visitVarInsn(int opcode, int varIndex) {
+                rethrowStops();
+                super.visitVarInsn(opcode, varIndex);
+            }
+
+            @Override
+            public void visitLineNumber(int number, Label start) {
+                line = number;
+                super.visitLineNumber(number, start);
+            }
+
             @Override
             public void visitMethodInsn(int opcode, String owner, String name, String descriptor,
                     boolean isInterface) {
-                String hook = hook(opcode, owner, name, descriptor);
+                rethrowStops();
+                check(line, owner, name);
+                Target hook = hook(opcode, owner, name, descriptor);
                 if (hook == null) {
                     super.visitMethodInsn(opcode, owner, name, descriptor, isInterface);
                 } else {
                     changed = true;
-                    super.visitMethodInsn(Opcodes.INVOKESTATIC, SIM_CLOCK, name, hook, false);
+                    super.visitMethodInsn(Opcodes.INVOKESTATIC, hook.owner(), hook.name(), hook.descriptor(), false);
                 }
+            }
+
+            @Override
+            public void visitFieldInsn(int opcode, String owner, String name, String descriptor) {
+                rethrowStops();
+                check(line, owner, name);
+                super.visitFieldInsn(opcode, owner, name, descriptor);
+            }
+
+            @Override
+            public void visitTypeInsn(int opcode, String type) {
+                rethrowStops();
+                if (!type.startsWith("[")) {
+                    check(line, type, null);
+                }
+                super.visitTypeInsn(opcode, type);
             }
 
             @Override
             public void visitInvokeDynamicInsn(String name, String descriptor, Handle bootstrapMethod,
                     Object... bootstrapMethodArguments) {
+                rethrowStops();
                 super.visitInvokeDynamicInsn(name, descriptor, bootstrapMethod,
                         constants(bootstrapMethodArguments));
             }
 
             @Override
             public void visitLdcInsn(Object value) {
+                rethrowStops();
+                if (value instanceof Type type && type.getSort() == Type.OBJECT) {
+                    check(line, type.getInternalName(), null);
+                }
                 super.visitLdcInsn(constant(value));
             }
 

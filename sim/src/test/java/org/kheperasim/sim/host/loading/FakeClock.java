@@ -51,6 +51,26 @@ final class FakeClock implements SimClock.Clock {
         }
     }
 
+    @Override
+    public boolean onControllerThread() {
+        return true;
+    }
+
+    @Override
+    public void brokeRule(String what) {
+        rules.add(what);
+    }
+
+    @Override
+    public void adopt(Thread thread) {
+        adopted.add(thread);
+    }
+
+    /** The rules broken so far, as reported. */
+    final List<String> rules = new java.util.concurrent.CopyOnWriteArrayList<>();
+    /** The threads adopted so far. */
+    final List<Thread> adopted = new java.util.concurrent.CopyOnWriteArrayList<>();
+
     /** From now on {@link #checkpoint()} throws {@link Stop}. */
     void requestStop() {
         stop = true;

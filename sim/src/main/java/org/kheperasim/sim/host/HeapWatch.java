@@ -1,0 +1,108 @@
+package org.kheperasim.sim.host;
+
+import java.lang.management.ManagementFactory;
+import java.lang.management.MemoryNotificationInfo;
+import java.lang.management.MemoryPoolMXBean;
+import java.lang.management.MemoryType;
+import java.lang.management.MemoryUsage;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Consumer;
+import javax.management.NotificationEmitter;
+
+/**
+ * Watches the Java heap for a controller that allocates without bound. The JVM itself tells when a
+ * heap pool passes {@value #THRESHOLD_PERCENT} % of its maximum (a usage threshold, checked by its
+ * low-memory detector), so a runaway controller is stopped before the heap runs out; the watchdog
+ * also asks after each garbage collection how full the heap stayed. A small reserve is let go when
+ * the heap runs short, so that reporting the fault still has room.
+ */
+final class HeapWatch {
+    private static final int THRESHOLD_PERCENT = 80;
+    private static final int FULL_PERCENT = 90;
+    private static final List<MemoryPoolMXBean> POOLS = ManagementFactory.getMemoryPoolMXBeans().stream()
+            .filter(p -> p.getType() == MemoryType.HEAP).toList();
+    private static final List<Consumer<String>> LISTENERS = new CopyOnWriteArrayList<>();
+    private static volatile byte[] reserve = new byte[1 << 20];
+
+    static {
+        for (MemoryPoolMXBean pool : POOLS) {
+            long max = pool.getUsage().getMax();
+            if (pool.isUsageThresholdSupported() && max > 0) {
+                pool.setUsageThreshold(max / 100 * THRESHOLD_PERCENT);
+            }
+        }
+        if (ManagementFactory.getMemoryMXBean() instanceof NotificationEmitter emitter) {
+            emitter.addNotificationListener((n, handback) -> {
+                if (MemoryNotificationInfo.MEMORY_THRESHOLD_EXCEEDED.equals(n.getType())) {
+                    reserve = null;
+                    String what = nearlyFull(THRESHOLD_PERCENT, false);
+                    for (Consumer<String> l : LISTENERS) {
+                        l.accept(what != null ? what : "the heap passed " + THRESHOLD_PERCENT + " % of its maximum");
+                    }
+                }
+            }, null, null);
+        }
+    }
+
+    private HeapWatch() {
+    }
+
+    /** @param listener told (on a JVM service thread) when the heap passes its threshold */
+    static void listen(Consumer<String> listener) {
+        LISTENERS.add(listener);
+    }
+
+    /** @param listener no longer told */
+    static void unlisten(Consumer<String> listener) {
+        LISTENERS.remove(listener);
+    }
+
+    /** @return what is nearly full after the last garbage collection, for the user, or null when the heap is fine */
+    static String nearlyFull() {
+        return nearlyFull(FULL_PERCENT, true);
+    }
+
+    private static volatile long lastCollection;
+
+    /**
+     * A cheap look, for the controller's thread every few API calls: when the heap holds more than
+     * the threshold, collect the garbage (at most five times a second) and look again.
+     *
+     * @return what is full, for the user, or null when the heap is fine
+     */
+    static String pressed() {
+        Runtime rt = Runtime.getRuntime();
+        long max = rt.maxMemory();
+        if ((rt.totalMemory() - rt.freeMemory()) * 100 < max * THRESHOLD_PERCENT) {
+            return null;
+        }
+        long now = System.nanoTime();
+        if (now - lastCollection < 200_000_000L) {
+            return null;
+        }
+        lastCollection = now;
+        System.gc();
+        long used = rt.totalMemory() - rt.freeMemory();
+        return used * 100 < max * THRESHOLD_PERCENT ? null
+                : String.format(Locale.ROOT, "%d of %d MB of the heap still in use after a garbage collection",
+                        used >> 20, max >> 20);
+    }
+
+    /** The heap ran out: let the reserve go so that the fault can still be reported. */
+    static void ranOut() {
+        reserve = null;
+    }
+
+    private static String nearlyFull(int percent, boolean afterCollection) {
+        for (MemoryPoolMXBean pool : POOLS) {
+            MemoryUsage u = afterCollection ? pool.getCollectionUsage() : pool.getUsage();
+            if (u != null && u.getMax() > 0 && u.getUsed() * 100 > u.getMax() * percent) {
+                return String.format(Locale.ROOT, "the heap's %s was %d of %d MB full", pool.getName(),
+                        u.getUsed() >> 20, u.getMax() >> 20);
+            }
+        }
+        return null;
+    }
+}

@@ -1,0 +1,181 @@
+package org.kheperasim.sim.run;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+import javax.tools.JavaCompiler;
+import javax.tools.ToolProvider;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.kheperasim.api.spi.ControllerException;
+import org.kheperasim.sim.host.ConsoleLine;
+import org.kheperasim.sim.host.ControllerStatus;
+
+/**
+ * Student code cannot take the simulator down, harm the machine or fake a result: each hostile
+ * controller runs headless and ends with a named fault (or is refused at load, naming its line),
+ * the application stays alive, nothing is written outside, and its threads end with the run.
+ */
+@Timeout(value = 300, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+class HostileControllerTest {
+    @TempDir
+    static Path dir;
+    static Path classes;
+    static Path outside;
+
+    private static final String[][] SOURCES = {
+        {"Exiter", "setSpeeds(3, 3); sleepMillis(500); System.exit(0);"},
+        {"Halter", "sleepMillis(100); Runtime.getRuntime().halt(0);"},
+        {"ExitByReference", "java.util.function.IntConsumer e = System::exit; sleepMillis(100); e.accept(3);"},
+        {"Writer", "try { java.nio.file.Files.writeString(java.nio.file.Path.of(TARGET), \"x\"); } catch (Exception e) { }"},
+        {"Deleter", "new java.io.File(TARGET).delete(); sleepMillis(100);"},
+        {"Networker", "try { new java.net.Socket(\"127.0.0.1\", 9).close(); } catch (Exception e) { } sleepMillis(100);"},
+        {"Reflector", "try { Class<?> c = Class.forName(\"org.kheperasim.sim.engine.SimRobot\"); } catch (Exception e) { }"},
+        {"Intruder", "org.kheperasim.sim.engine.Khepera.class.getName(); sleepMillis(100);"},
+        {"HandleBot", "try { java.lang.invoke.MethodHandles.lookup().findStatic(System.class, \"exit\","
+            + " java.lang.invoke.MethodType.methodType(void.class, int.class)).invoke(0); } catch (Throwable t) { }"},
+        {"Waiter", "synchronized (this) { try { wait(100); } catch (InterruptedException e) { } } setSpeeds(1, 1);"},
+        {"WaitForever", "synchronized (this) { try { wait(); } catch (InterruptedException e) { } }"},
+        {"Parker", "java.util.concurrent.locks.LockSupport.parkNanos(100_000_000L); setSpeeds(1, 1);"},
+        {"Spinner", "if (!started) { started = true; new Thread(() -> { long n = 0; while (true) { n++; } }).start(); }"
+            + " sleepMillis(100);"},
+        {"Swallower", "while (true) { try { sleepMillis(10); } catch (Throwable t) { } }"},
+        {"Clockwatcher", "print(\"now \" + java.time.Instant.now()); sleepMillis(1000);"},
+    };
+
+    @BeforeAll
+    static void compile() throws IOException {
+        classes = dir.resolve("classes");
+        outside = dir.resolve("outside.txt");
+        Files.writeString(outside, "keep me");
+        Files.createDirectories(classes);
+        List<String> files = new ArrayList<>();
+        for (String[] s : SOURCES) {
+            Path f = dir.resolve(s[0] + ".java");
+            Files.writeString(f, "import org.kheperasim.api.*;\n\npublic class " + s[0] + " extends Controller {\n"
+                    + "    static final String TARGET = \"" + outside.toString().replace("\\", "\\\\") + "\";\n"
+                    + "    boolean started;\n\n"
+                    + "    @Override\n    protected void doWork() {\n        " + s[1] + "\n    }\n}\n");
+            files.add(f.toString());
+        }
+        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
+        List<String> args = new ArrayList<>(List.of("-cp", System.getProperty("java.class.path"), "-d", classes.toString(),
+                "-g", "--release", "17", "-proc:none"));
+        args.addAll(files);
+        assertEquals(0, javac.run(null, null, null, args.toArray(new String[0])), "the hostile controllers compile");
+    }
+
+    private record Outcome(RunResult result, List<String> console) {
+        String text() {
+            return String.join("\n", console);
+        }
+    }
+
+    private static Outcome run(String controller, double seconds) {
+        List<String> console = new ArrayList<>();
+        RunResult r = Simulation.builder().arena("lab").classpath(List.of(classes)).controller(controller).seed(1)
+                .seconds(seconds).console((ConsoleLine line) -> {
+                    synchronized (console) {
+                        console.add(line.text());
+                    }
+                }).run();
+        return new Outcome(r, console);
+    }
+
+    private static void brokeRule(String controller, String named) {
+        Outcome o = run(controller, 10);
+        assertEquals(ControllerStatus.BROKE_RULE, o.result.first().status(), controller + ": " + o.text());
+        assertTrue(o.text().contains(named), controller + " names the fault '" + named + "': " + o.text());
+    }
+
+    @Test
+    void exitAndHaltEndTheRunWithANamedFaultAndTheApplicationStays() {
+        brokeRule("Exiter", "called System.exit(0)");
+        brokeRule("Halter", "called Runtime.halt(0)");
+        brokeRule("ExitByReference", "called System.exit(3)");
+    }
+
+    @Test
+    void filesNetworkReflectionAndTheSimulatorAreRefusedAtLoadNamingTheLine() throws IOException {
+        for (String[] c : new String[][] {{"Writer", "java.nio.file."}, {"Deleter", "java.io.File"},
+            {"Networker", "java.net.Socket"}, {"Reflector", "java.lang.Class.forName"},
+            {"Intruder", "org.kheperasim.sim.engine.Khepera"}, {"HandleBot", "MethodHandles$Lookup.findStatic"}}) {
+            ControllerException e = assertThrows(ControllerException.class, () -> run(c[0], 1), c[0]);
+            assertTrue(e.getMessage().contains(c[1]), c[0] + " names the call: " + e.getMessage());
+            assertTrue(e.getMessage().contains(c[0] + ".java:"), c[0] + " names the student's line: " + e.getMessage());
+        }
+        assertEquals("keep me", Files.readString(outside), "nothing outside was touched");
+    }
+
+    @Test
+    void waitingAndParkingPassSimulatedTime() {
+        for (String c : List.of("Waiter", "Parker")) {
+            Outcome o = run(c, 20);
+            assertEquals(ControllerStatus.STOPPED, o.result.first().status(), c + " ran to the end: " + o.text());
+            assertEquals(20, o.result.simulatedSeconds(), 0.01);
+            assertTrue(o.result.first().distanceMm() > 100, c + " drove: it was not stalled");
+        }
+        brokeRule("WaitForever", "called Object.wait() with no timeout");
+    }
+
+    @Test
+    void theWallClockIsTheSimulatedOne() {
+        Outcome o = run("Clockwatcher", 3);
+        assertTrue(o.text().contains("now 2001-07-27T11:06:0"), "Instant.now() reads robot time: " + o.text());
+    }
+
+    @Test
+    void threadsAControllerStartsEndWithTheRunAndCatchAllLoopsStop() throws InterruptedException {
+        int before = ManagementFactory.getThreadMXBean().getThreadCount();
+        Outcome spinner = run("Spinner", 5);
+        Outcome swallower = run("Swallower", 5);
+        assertEquals(ControllerStatus.STOPPED, swallower.result.first().status(), swallower.text());
+        assertFalse(swallower.text().contains("left behind"), swallower.text());
+        assertFalse(spinner.text().contains("left behind"), spinner.text());
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+        int after;
+        do {
+            Thread.sleep(50);
+            after = ManagementFactory.getThreadMXBean().getThreadCount();
+        } while (after > before && System.nanoTime() < deadline);
+        assertTrue(after <= before, "threads back to " + before + ", now " + after);
+    }
+
+    @Test
+    void theCommandLineExitsNonZeroWithTheResultLineForAFaultAndForAHog() throws Exception {
+        Path hog = dir.resolve("Hog.java");
+        Files.writeString(hog, "import org.kheperasim.api.*;\nimport java.util.*;\n\npublic class Hog extends Controller {\n"
+                + "    final List<long[]> kept = new ArrayList<>();\n\n    @Override\n    protected void doWork() {\n"
+                + "        kept.add(new long[1 << 16]);\n        setSpeeds(1, 1);\n    }\n}\n");
+        assertEquals(0, ToolProvider.getSystemJavaCompiler().run(null, null, null, "-cp",
+                System.getProperty("java.class.path"), "-d", classes.toString(), "--release", "17", hog.toString()));
+        for (String[] c : new String[][] {{"Exiter", "System.exit"}, {"Hog", "allocated without bound"}}) {
+            Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx64m",
+                    "-cp", System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main", "run", "--arena", "lab",
+                    "--classpath", classes.toString(), "--controller", c[0], "--seconds", "60")
+                    .redirectErrorStream(true).start();
+            ByteArrayOutputStream out = new ByteArrayOutputStream();
+            p.getInputStream().transferTo(out);
+            assertTrue(p.waitFor(120, TimeUnit.SECONDS), c[0] + " ends");
+            String text = out.toString(StandardCharsets.UTF_8);
+            assertEquals(1, p.exitValue(), c[0] + " fails the run: " + text);
+            assertTrue(text.contains(c[1]), c[0] + " names the fault: " + text);
+            assertTrue(text.toLowerCase(Locale.ROOT).contains(c[0].toLowerCase(Locale.ROOT) + " in lab:"),
+                    c[0] + " still prints the result line: " + text);
+        }
+    }
+}
