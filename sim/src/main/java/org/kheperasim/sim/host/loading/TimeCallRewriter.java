@@ -38,58 +38,17 @@ import org.objectweb.asm.Type;
  * </ul>
  * Nothing else changes: the inserted call takes and leaves nothing on the operand stack and does
  * not change control flow, so the class's own stack map frames stay valid and are kept.
+ *
+ * <p>Untrusted controller code is also contained (see {@link CallTargets} for the calls that go to
+ * {@link org.kheperasim.sim.host.Containment}, and {@link ControllerPolicy} for the calls refused
+ * at load): every handler that catches {@code Throwable} or {@code Error} first rethrows a stop of
+ * the simulator, so a catch-all loop cannot keep a stopped controller alive.
  */
 public final class TimeCallRewriter {
 
     /** Internal name of the class all rewritten calls go to. */
     static final String SIM_CLOCK = Type.getInternalName(SimClock.class);
 
-    private static final String THREAD = "java/lang/Thread";
-    private static final String SYSTEM = "java/lang/System";
-    private static final String TIME_UNIT = "java/util/concurrent/TimeUnit";
-
-    /** The static methods of {@code Thread} that {@link SimClock} replaces, as name + descriptor. */
-    private static final Set<String> THREAD_STATICS = Set.of(
-            "sleep(J)V", "sleep(JI)V", "sleep(Ljava/time/Duration;)V", "yield()V", "onSpinWait()V");
-
-    /** The static methods of {@code System} that {@link SimClock} replaces, as name + descriptor. */
-    private static final Set<String> SYSTEM_STATICS = Set.of("currentTimeMillis()J", "nanoTime()J");
-
-    /** The replacement of the instance method {@code TimeUnit.sleep(long)}: the unit comes first. */
-    private static final String TIME_UNIT_SLEEP_HOOK = "(L" + TIME_UNIT + ";J)V";
-
-    /** Internal name of the class the containment hooks are in. */
-    static final String CONTAINMENT = Type.getInternalName(org.kheperasim.sim.host.Containment.class);
-
-    /** Where a call goes instead. */
-    private record Target(String owner, String name, String descriptor) {
-    }
-
-    /**
-     * Static calls redirected to {@link org.kheperasim.sim.host.Containment}, by owner, name and
-     * descriptor, to the method of the given name and the same descriptor.
-     */
-    private static final java.util.Map<String, String> CONTAINED_STATICS = java.util.Map.ofEntries(
-            java.util.Map.entry("java/lang/System.exit(I)V", "exit"),
-            java.util.Map.entry("java/util/concurrent/locks/LockSupport.parkNanos(J)V", "parkNanos"),
-            java.util.Map.entry("java/util/concurrent/locks/LockSupport.parkNanos(Ljava/lang/Object;J)V", "parkNanos"),
-            java.util.Map.entry("java/util/concurrent/locks/LockSupport.parkUntil(J)V", "parkUntil"),
-            java.util.Map.entry("java/util/concurrent/locks/LockSupport.parkUntil(Ljava/lang/Object;J)V", "parkUntil"),
-            java.util.Map.entry("java/util/concurrent/locks/LockSupport.park()V", "park"),
-            java.util.Map.entry("java/util/concurrent/locks/LockSupport.park(Ljava/lang/Object;)V", "park"),
-            java.util.Map.entry("java/time/Instant.now()Ljava/time/Instant;", "instantNow"),
-            java.util.Map.entry("java/time/Clock.systemUTC()Ljava/time/Clock;", "clockUTC"),
-            java.util.Map.entry("java/time/Clock.systemDefaultZone()Ljava/time/Clock;", "clockDefaultZone"),
-            java.util.Map.entry("java/time/LocalDateTime.now()Ljava/time/LocalDateTime;", "localDateTimeNow"),
-            java.util.Map.entry("java/time/LocalDate.now()Ljava/time/LocalDate;", "localDateNow"),
-            java.util.Map.entry("java/time/LocalTime.now()Ljava/time/LocalTime;", "localTimeNow"),
-            java.util.Map.entry("java/time/ZonedDateTime.now()Ljava/time/ZonedDateTime;", "zonedDateTimeNow"));
-
-    /** Instance calls redirected to static hooks that take the receiver first, by owner, name and descriptor. */
-    private static final java.util.Map<String, String> CONTAINED_VIRTUALS = java.util.Map.of(
-            "java/lang/Runtime.exit(I)V", "exit",
-            "java/lang/Runtime.halt(I)V", "halt",
-            "java/lang/Runtime.addShutdownHook(Ljava/lang/Thread;)V", "addShutdownHook");
 
     /**
      * The newest class file version this rewriter accepts: what both ASM 9.8 (up to Java 25) and
@@ -187,7 +146,7 @@ public final class TimeCallRewriter {
 
     /** Rewrites every method and remembers whether anything changed. */
     private static final class ClassRewriter extends ClassVisitor {
-        private final HierarchyLookup lookup;
+        private final CallTargets targets;
         private final boolean contained;
         private boolean changed;
         private String className;
@@ -195,7 +154,7 @@ public final class TimeCallRewriter {
 
         ClassRewriter(ClassVisitor next, HierarchyLookup lookup, boolean contained) {
             super(Opcodes.ASM9, next);
-            this.lookup = lookup;
+            this.targets = new CallTargets(lookup, contained);
             this.contained = contained;
         }
 
@@ -237,61 +196,6 @@ public final class TimeCallRewriter {
             return next == null ? null : new MethodRewriter(next);
         }
 
-        /**
-         * Where a call goes instead, or null when it stays: the {@link SimClock} method of the same
-         * name for the time calls, and for contained code the {@link org.kheperasim.sim.host.Containment}
-         * hooks.
-         *
-         * @param opcode {@link Opcodes#INVOKESTATIC} or {@link Opcodes#INVOKEVIRTUAL}; any other
-         *     kind of call always stays
-         */
-        private Target hook(int opcode, String owner, String name, String descriptor) {
-            if (opcode == Opcodes.INVOKESTATIC) {
-                String method = name + descriptor;
-                if (THREAD_STATICS.contains(method)
-                        && (owner.equals(THREAD) || lookup.resolvesToThread(owner, name, descriptor))) {
-                    return new Target(SIM_CLOCK, name, descriptor);
-                }
-                if (owner.equals(SYSTEM) && SYSTEM_STATICS.contains(method)) {
-                    return new Target(SIM_CLOCK, name, descriptor);
-                }
-                String contain = contained ? CONTAINED_STATICS.get(owner + "." + method) : null;
-                if (contain != null) {
-                    return new Target(CONTAINMENT, contain, descriptor);
-                }
-            } else if (opcode == Opcodes.INVOKEVIRTUAL) {
-                if (owner.equals(TIME_UNIT) && name.equals("sleep") && descriptor.equals("(J)V")) {
-                    return new Target(SIM_CLOCK, name, TIME_UNIT_SLEEP_HOOK);
-                }
-                if (!contained) {
-                    return null;
-                }
-                String contain = CONTAINED_VIRTUALS.get(owner + "." + name + descriptor);
-                if (contain != null) {
-                    return new Target(CONTAINMENT, contain, "(L" + owner + ";" + descriptor.substring(1));
-                }
-                if (name.equals("wait") && !owner.startsWith("[")) {
-                    String receiver = "(Ljava/lang/Object;";
-                    switch (descriptor) {
-                        case "()V" -> {
-                            return new Target(CONTAINMENT, "waitForever", receiver + ")V");
-                        }
-                        case "(J)V", "(JI)V" -> {
-                            return new Target(CONTAINMENT, "waitFor", receiver + descriptor.substring(1));
-                        }
-                        default -> {
-                            return null;
-                        }
-                    }
-                }
-                if (name.equals("start") && descriptor.equals("()V")
-                        && (owner.equals(THREAD) || lookup.resolvesToThread(owner, name, descriptor))) {
-                    return new Target(CONTAINMENT, "start", "(Ljava/lang/Thread;)V");
-                }
-            }
-            return null;
-        }
-
         /** A loadable constant with every method handle to a replaced method pointed at its hook. */
         private Object constant(Object value) {
             if (value instanceof Handle handle) {
@@ -301,7 +205,7 @@ public final class TimeCallRewriter {
                     default -> 0;
                 };
                 check(-1, handle.getOwner(), handle.getName());
-                Target hook = hook(opcode, handle.getOwner(), handle.getName(), handle.getDesc());
+                CallTargets.Target hook = targets.of(opcode, handle.getOwner(), handle.getName(), handle.getDesc());
                 if (hook == null) {
                     return handle;
                 }
@@ -410,7 +314,7 @@ public final class TimeCallRewriter {
                     atCatchAll = false;
                     changed = true;
                     super.visitInsn(Opcodes.DUP);
-                    super.visitMethodInsn(Opcodes.INVOKESTATIC, CONTAINMENT, "rethrowIfStopped",
+                    super.visitMethodInsn(Opcodes.INVOKESTATIC, CallTargets.CONTAINMENT, "rethrowIfStopped",
                             "(Ljava/lang/Throwable;)V", false);
                 }
             }
@@ -450,7 +354,7 @@ public final class TimeCallRewriter {
                     boolean isInterface) {
                 rethrowStops();
                 check(line, owner, name);
-                Target hook = hook(opcode, owner, name, descriptor);
+                CallTargets.Target hook = targets.of(opcode, owner, name, descriptor);
                 if (hook == null) {
                     super.visitMethodInsn(opcode, owner, name, descriptor, isInterface);
                 } else {
