@@ -15,8 +15,11 @@ final class Turn {
      * long enough to ride out a short preemption of the holder, since waking a parked thread can
      * cost a millisecond on a virtual machine.
      */
-    private static final long SPIN_NANOS = Runtime.getRuntime().availableProcessors() > 1
-            ? Long.getLong("kheperasim.spinMicros", 5_000) * 1000 : 0;
+    private static final long SPIN_NANOS = Long.getLong("kheperasim.spinMicros", 5_000) * 1000;
+    /** Threads may spin while they leave a core for the holder: cores − 1 at most. */
+    private static final int MAX_SPINNERS = Runtime.getRuntime().availableProcessors() - 1;
+    /** Threads spinning now, across every run in this JVM. */
+    private static final java.util.concurrent.atomic.AtomicInteger SPINNERS = new java.util.concurrent.atomic.AtomicInteger();
 
     /** One thread that takes turns, and whether it is parked waiting for one. */
     static final class Seat {
@@ -76,22 +79,45 @@ final class Turn {
         return true;
     }
 
-    /** Wait until {@code me} holds the turn: spin while there are spare cores, then park. */
+    /**
+     * Wait until {@code me} holds the turn: spin for a short while if a core is free (no more
+     * threads spin than there are cores besides the holder's, so waiting threads never starve the
+     * one that runs), then park.
+     */
     void await(Seat me) {
-        long spinStart = 0;
-        int spins = 0;
+        if (holder == me) {
+            return;
+        }
+        if (reserveSpin()) {
+            try {
+                long spinStart = System.nanoTime();
+                int spins = 0;
+                while (holder != me && spinning(++spins, spinStart)) {
+                    // spin
+                }
+            } finally {
+                SPINNERS.decrementAndGet();
+            }
+        }
         while (holder != me) {
-            if (spins == 0) {
-                spinStart = System.nanoTime();
-            }
-            if (spinning(++spins, spinStart)) {
-                continue;
-            }
             me.parked = true;
             if (holder != me) {
                 LockSupport.park(this);
             }
             me.parked = false;
+        }
+    }
+
+    /** @return true when this thread may spin (a core is free for it); it must then release the slot */
+    private static boolean reserveSpin() {
+        while (true) {
+            int n = SPINNERS.get();
+            if (n >= MAX_SPINNERS) {
+                return false;
+            }
+            if (SPINNERS.compareAndSet(n, n + 1)) {
+                return true;
+            }
         }
     }
 
