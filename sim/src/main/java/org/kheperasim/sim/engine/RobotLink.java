@@ -68,9 +68,17 @@ final class RobotLink {
     private final long[] deliverAt = new long[CYCLE.length];
     private final boolean[] pending = new boolean[CYCLE.length];
 
+    /** Wire time of a poll step's command and turnaround, and of its reply, per step: fixed, so computed once. */
+    private final long[] commandNanos = new long[CYCLE.length];
+    private final long[] replyNanos = new long[CYCLE.length];
+
     RobotLink(LinkTiming timing, Robot robot) {
         this.timing = timing;
         this.robot = robot;
+        for (int k = 0; k < CYCLE.length; k++) {
+            commandNanos[k] = timing.wireNanos(CYCLE[k].commandChars()) + timing.turnaroundNanos();
+            replyNanos[k] = timing.wireNanos(CYCLE[k].replyChars());
+        }
         for (int k = 0; k < CYCLE.length; k++) {
             int n = CYCLE[k] == PollStep.ENCODERS ? 2 : IrSensor.COUNT;
             sampled[k] = new int[n];
@@ -84,7 +92,7 @@ final class RobotLink {
             take(CYCLE[k], visible[k]);
         }
         step = 0;
-        sampleAt = commandNanos(CYCLE[0]);
+        sampleAt = commandNanos[0];
     }
 
     /** Stop polling (a protocol client polls the robot itself). */
@@ -195,11 +203,11 @@ final class RobotLink {
             if (pending[k]) {
                 deliver(k);
             }
-            long reply = take(CYCLE[k], sampled[k]);
-            deliverAt[k] = sampleAt + reply;
+            take(CYCLE[k], sampled[k]);
+            deliverAt[k] = sampleAt + replyNanos[k];
             pending[k] = true;
-            step = (k + 1) % CYCLE.length;
-            sampleAt = deliverAt[k] + commandNanos(CYCLE[step]);
+            step = k + 1 == CYCLE.length ? 0 : k + 1;
+            sampleAt = deliverAt[k] + commandNanos[step];
         }
     }
 
@@ -208,8 +216,8 @@ final class RobotLink {
         return polling ? sampleAt : Long.MAX_VALUE;
     }
 
-    /** Take a step's sample on the robot now; returns the reply's time on the wire, ns. */
-    private long take(PollStep s, int[] out) {
+    /** Take a step's sample on the robot now. */
+    private void take(PollStep s, int[] out) {
         switch (s) {
             case PROXIMITY -> robot.sampleProximity(out);
             case LIGHT -> robot.sampleLight(out);
@@ -219,7 +227,6 @@ final class RobotLink {
             }
             default -> throw new IllegalStateException("poll step " + s);
         }
-        return timing.wireNanos(s.replyChars());
     }
 
     private void deliver(int k) {
@@ -233,11 +240,6 @@ final class RobotLink {
             deliver(k);
         }
         return visible[k];
-    }
-
-    /** The time from the start of an exchange until the robot acts on its command, ns. */
-    private long commandNanos(PollStep s) {
-        return timing.wireNanos(s.commandChars()) + timing.turnaroundNanos();
     }
 
     // ------------------------------------------------------------------ what the controller sees
