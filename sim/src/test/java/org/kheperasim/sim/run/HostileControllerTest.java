@@ -155,6 +155,46 @@ class HostileControllerTest {
         assertTrue(after <= before, "threads back to " + before + ", now " + after);
     }
 
+    /**
+     * The window drives a run through a {@link PacedRunner} on its own thread: the same hostile
+     * controllers end there with their fault, the runner (the window's run) stays usable, and the
+     * controllers' threads are gone after a stop.
+     */
+    @Test
+    void inAWindowSessionTheFaultIsNamedAndTheWindowsRunGoesOn() throws Exception {
+        int before = ManagementFactory.getThreadMXBean().getThreadCount();
+        for (String[] c : new String[][] {{"Exiter", "BROKE_RULE"}, {"WaitForever", "BROKE_RULE"},
+            {"Spinner", "RUNNING"}, {"Swallower", "RUNNING"}}) {
+            List<String> console = new ArrayList<>();
+            RunSession s = new RunSession(org.kheperasim.sim.arena.ArenaFormat.loadBundled("lab"), c[0],
+                    new ControllerCatalog(List.of(classes)), 1, org.kheperasim.sim.engine.Settings.defaults(),
+                    line -> {
+                        synchronized (console) {
+                            console.add(line.text());
+                        }
+                    }, org.kheperasim.sim.host.ControllerHost.Options.defaults());
+            PacedRunner runner = new PacedRunner(s, null);
+            runner.setSpeed(PacedRunner.MAX_SPEED);
+            runner.pauseAt(3_000_000_000L);
+            runner.start();
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+            while (runner.latest().timeNanos() < 3_000_000_000L && !s.status().ended() && System.nanoTime() < deadline) {
+                Thread.sleep(5);
+            }
+            assertEquals(c[1], s.status().name(), c[0] + " in the window's run: " + console);
+            assertTrue(runner.failure() == null, c[0] + " did not break the window's run: " + runner.failure());
+            assertTrue(runner.stopAndWait(10_000), c[0] + ": the window can stop the run");
+            s.close();
+        }
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+        int after;
+        do {
+            Thread.sleep(50);
+            after = ManagementFactory.getThreadMXBean().getThreadCount();
+        } while (after > before && System.nanoTime() < deadline);
+        assertTrue(after <= before, "threads back to " + before + " after the window's runs, now " + after);
+    }
+
     @Test
     void theCommandLineExitsNonZeroWithTheResultLineForAFaultAndForAHog() throws Exception {
         Path hog = dir.resolve("Hog.java");
