@@ -10,6 +10,9 @@ import java.util.List;
  * <p>A character is 11 bits on the wire (1 start, 8 data, 2 stop bits), so one character takes
  * 1.146 ms at 9600 baud and 0.286 ms at 38400. An exchange is the command's characters, the
  * robot's turnaround (the time it takes to act and start replying), then the reply's characters.
+ * Replies are as long as the numbers they carry ({@link #replyChars}), so the poll cycle runs
+ * faster while the values are small: at 38400 baud about 40 cycles/s with typical values (two-digit
+ * proximity, three-digit light, four-digit counters), 28 with every value at its longest.
  *
  * @param baud line speed, bits per second (the Khepera uses 9600 to 115200)
  * @param bitsPerChar bits per character on the wire, 11 for 8 data bits and 2 stop bits
@@ -69,7 +72,69 @@ public record LinkTiming(int baud, int bitsPerChar, long turnaroundNanos) {
         return exchangeNanos(step.commandChars(), step.replyChars());
     }
 
-    /** @return the time one whole poll cycle (N, O, H) takes, ns */
+    /**
+     * Characters of the reply to a poll step that carries {@code values}, CR LF included: the
+     * robot writes each value in decimal with no padding ({@code n,15,22,...}), so a reply is as
+     * long as its numbers are.
+     *
+     * @param step the poll step
+     * @param values the values in the reply (8 for N and O, 2 for H)
+     * @return the reply's length on the wire, characters
+     */
+    public static int replyChars(PollStep step, int[] values) {
+        int chars = 1 + values.length + 2; // the letter, a comma before each value, CR LF
+        for (int v : values) {
+            chars += decimalLength(v);
+        }
+        return chars;
+    }
+
+    /** @return how many characters {@code v} takes in decimal, its sign included */
+    static int decimalLength(int v) {
+        if (v < 0) {
+            return v == Integer.MIN_VALUE ? 11 : 1 + decimalLength(-v);
+        }
+        int n = 1;
+        for (long p = 10; p <= v; p *= 10) {
+            n++;
+        }
+        return n;
+    }
+
+    /**
+     * @param step a poll step
+     * @return the time from the start of its exchange until the robot acts on the command: the
+     *     command's characters and the turnaround, ns
+     */
+    public long commandNanos(PollStep step) {
+        return wireNanos(step.commandChars()) + turnaroundNanos;
+    }
+
+    /**
+     * @param step a poll step
+     * @param values the values its reply carries
+     * @return the reply's time on the wire, ns
+     */
+    public long replyNanos(PollStep step, int[] values) {
+        return wireNanos(replyChars(step, values));
+    }
+
+    /**
+     * The time one poll cycle takes when its replies carry these values: each exchange is its
+     * command, the turnaround and its reply, each as long as it really is.
+     *
+     * @param proximity the eight proximity values
+     * @param light the eight light values
+     * @param counters the two position counters
+     * @return the cycle's time, ns
+     */
+    public long pollCycleNanos(int[] proximity, int[] light, int[] counters) {
+        return commandNanos(PollStep.PROXIMITY) + replyNanos(PollStep.PROXIMITY, proximity)
+                + commandNanos(PollStep.LIGHT) + replyNanos(PollStep.LIGHT, light)
+                + commandNanos(PollStep.ENCODERS) + replyNanos(PollStep.ENCODERS, counters);
+    }
+
+    /** @return the time one whole poll cycle (N, O, H) takes with every reply at its longest, ns (an upper bound) */
     public long pollCycleNanos() {
         long sum = 0;
         for (PollStep s : POLL_CYCLE) {

@@ -14,7 +14,8 @@ import org.kheperasim.link.timing.PollStep;
  *
  * <p>Polling: the cycle N, O, H runs back to back. Each step's values are sampled on the robot when
  * it has read the command and turned around, and become visible to the controller when the reply's
- * last character has arrived (see {@link LinkTiming}).
+ * last character has arrived; a reply is as long as the numbers it carries, so the next exchange
+ * starts earlier after short values (see {@link LinkTiming#replyChars}).
  */
 final class RobotLink {
     /** A command's acknowledgement, e.g. {@code d} CR LF. */
@@ -68,16 +69,18 @@ final class RobotLink {
     private final long[] deliverAt = new long[CYCLE.length];
     private final boolean[] pending = new boolean[CYCLE.length];
 
-    /** Wire time of a poll step's command and turnaround, and of its reply, per step: fixed, so computed once. */
+    /** Wire time of a poll step's command and turnaround, per step; and of a line of n characters. */
     private final long[] commandNanos = new long[CYCLE.length];
-    private final long[] replyNanos = new long[CYCLE.length];
+    private final long[] lineNanos = new long[64];
 
     RobotLink(LinkTiming timing, Robot robot) {
         this.timing = timing;
         this.robot = robot;
         for (int k = 0; k < CYCLE.length; k++) {
-            commandNanos[k] = timing.wireNanos(CYCLE[k].commandChars()) + timing.turnaroundNanos();
-            replyNanos[k] = timing.wireNanos(CYCLE[k].replyChars());
+            commandNanos[k] = timing.commandNanos(CYCLE[k]);
+        }
+        for (int n = 0; n < lineNanos.length; n++) {
+            lineNanos[n] = timing.wireNanos(n);
         }
         for (int k = 0; k < CYCLE.length; k++) {
             int n = CYCLE[k] == PollStep.ENCODERS ? 2 : IrSensor.COUNT;
@@ -204,7 +207,9 @@ final class RobotLink {
                 deliver(k);
             }
             take(CYCLE[k], sampled[k]);
-            deliverAt[k] = sampleAt + replyNanos[k];
+            // The reply is as long as the values it carries.
+            int chars = LinkTiming.replyChars(CYCLE[k], sampled[k]);
+            deliverAt[k] = sampleAt + (chars < lineNanos.length ? lineNanos[chars] : timing.wireNanos(chars));
             pending[k] = true;
             step = k + 1 == CYCLE.length ? 0 : k + 1;
             sampleAt = deliverAt[k] + commandNanos[step];

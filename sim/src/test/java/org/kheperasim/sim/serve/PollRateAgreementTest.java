@@ -1,0 +1,90 @@
+package org.kheperasim.sim.serve;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Arrays;
+import java.util.Locale;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import org.kheperasim.link.io.Links;
+import org.kheperasim.link.io.SerialSettings;
+import org.kheperasim.link.robot.PollBench;
+import org.kheperasim.link.session.Session;
+import org.kheperasim.link.timing.LinkTiming;
+import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.arena.Pose;
+import org.kheperasim.sim.engine.Engine;
+import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.SimRobot;
+import org.kheperasim.sim.engine.World;
+
+/**
+ * One link timing model, and it matches the wire: the poll rate a controller sees in the simulator
+ * and the rate robot-link measures against the protocol server (which paces each reply by its real
+ * length) agree within 10 % at 9600, 38400 and 115200 baud. Both robots stand at the same spot of
+ * the same arena, so their replies carry numbers of the same lengths.
+ *
+ * <p>The served rate is a wall-clock measurement: a loaded machine can only make it lower, so it
+ * is taken as the best of three tries.
+ */
+@Tag("timing")
+@Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+class PollRateAgreementTest {
+    private static final String ARENA = "khepera-arena 1\nname t\nsize 1219.2 1219.2\nrobot 600 600 90\n"
+            + "wall 0 4 1219.2 4 8\nwall 0 1215.2 1219.2 1215.2 8\nwall 4 0 4 1219.2 8\nwall 1215.2 0 1215.2 1219.2 8\n";
+
+    /** Poll cycles per simulated second the simulator's controller sees: deliveries of new proximity values. */
+    private static double simulatedRate(Settings settings) {
+        Engine engine = new Engine(new World(ArenaFormat.parse(ARENA, "t.arena")), 5);
+        SimRobot robot = engine.addRobot("r", new Pose(600, 600, 90), settings);
+        int[] last = new int[8];
+        int[] now = new int[8];
+        int changes = 0;
+        long end = 20_000_000_000L;
+        for (long t = Engine.TICK_NANOS; t <= end; t += Engine.TICK_NANOS) {
+            engine.runUntil(t);
+            for (int i = 0; i < 8; i++) {
+                now[i] = robot.visibleProximity(t, i);
+            }
+            if (!Arrays.equals(now, last)) {
+                changes++;
+                System.arraycopy(now, 0, last, 0, 8);
+            }
+        }
+        return changes / (end / 1e9);
+    }
+
+    private static double servedRate(Settings settings, int baud) throws Exception {
+        double best = 0;
+        for (int attempt = 0; attempt < 3; attempt++) {
+            ServedRobot robot = new ServedRobot(ArenaFormat.parse(ARENA, "t.arena"), settings, 5, 1);
+            try (ProtocolServer server = ProtocolServer.start(robot, 0);
+                    Session session = new Session(Links.open(SerialSettings.khepera("tcp://127.0.0.1:" + server.port(), baud)),
+                            LinkTiming.atBaud(baud), Session.Options.defaults())) {
+                session.open();
+                PollBench.Result r = PollBench.measure(session, baud, baud < 20_000 ? 4000 : 2500);
+                best = StrictMath.max(best, r.rateHz());
+            } finally {
+                robot.close();
+            }
+        }
+        return best;
+    }
+
+    @ParameterizedTest(name = "{0} baud")
+    @ValueSource(ints = {9600, 38400, 115200})
+    void theSimulatorsPollRateIsTheWiresPollRate(int baud) throws Exception {
+        Settings settings = Settings.defaults().with("link.baud", Integer.toString(baud));
+        double sim = simulatedRate(settings);
+        double served = servedRate(settings, baud);
+        double longest = 1e9 / LinkTiming.atBaud(baud).pollCycleNanos();
+        System.out.printf(Locale.ROOT, "%6d baud: simulator %.1f cycles/s, robot-link against serve %.1f/s"
+                + " (every reply at its longest: %.1f/s)%n", baud, sim, served, longest);
+        assertTrue(sim > longest * 1.2, "replies as long as their numbers poll faster than the longest replies: "
+                + sim + " vs " + longest);
+        assertEquals(1, served / sim, 0.10, "served " + served + "/s vs simulated " + sim + "/s");
+    }
+}
