@@ -26,6 +26,14 @@ public record LinkTiming(int baud, int bitsPerChar, long turnaroundNanos) {
     public static final int DEFAULT_BITS_PER_CHAR = 11;
     /** Default robot turnaround: 0.5 ms (not documented by K-Team; a setting). */
     public static final long DEFAULT_TURNAROUND_NANOS = 500_000L;
+    /**
+     * The host's own time between the last character of a reply and the first of its next command:
+     * robot-link reading the line, storing the values and writing the next command through the
+     * operating system's serial (or TCP) stack. Measured on our Linux machines at 0.3 to 0.5 ms per
+     * exchange over a pty and over TCP; a USB-serial adapter adds its own latency timer (1 ms when
+     * tuned, 16 ms by default on FTDI chips), so a real lab may poll slower still.
+     */
+    public static final long HOST_GAP_NANOS = 300_000L;
     /** The poll cycle, in order. */
     public static final List<PollStep> POLL_CYCLE = List.of(PollStep.values());
 
@@ -103,11 +111,12 @@ public record LinkTiming(int baud, int bitsPerChar, long turnaroundNanos) {
 
     /**
      * @param step a poll step
-     * @return the time from the start of its exchange until the robot acts on the command: the
-     *     command's characters and the turnaround, ns
+     * @return the time from the end of the previous reply until the robot acts on this step's
+     *     command: the host's gap ({@link #HOST_GAP_NANOS}), the command's characters and the
+     *     robot's turnaround, ns
      */
     public long commandNanos(PollStep step) {
-        return wireNanos(step.commandChars()) + turnaroundNanos;
+        return HOST_GAP_NANOS + wireNanos(step.commandChars()) + turnaroundNanos;
     }
 
     /**
