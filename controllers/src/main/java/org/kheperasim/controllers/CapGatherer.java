@@ -35,6 +35,13 @@ public class CapGatherer extends Controller {
     private int lastLeft;
     private int lastRight;
     private int stuckSteps;
+    /** While carrying: the brightest reading so far, and how many steps since it last got brighter. */
+    private int bestLight = 1023;
+    private int stepsWithoutProgress;
+    /** Steps left of straight exploring after giving up on a light that led nowhere. */
+    private int exploreSteps;
+    /** Carrying, this long without getting nearer the lamp is a livelock (a corner beside the doorway). */
+    private static final int GIVE_UP_MS = 8000;
 
     @Override
     protected void setup() {
@@ -49,6 +56,7 @@ public class CapGatherer extends Controller {
             escape();
             return;
         }
+
         if (phase == Phase.SEARCH) {
             search();
         } else {
@@ -64,6 +72,8 @@ public class CapGatherer extends Controller {
             if (!nearLamp && grab() && gripper().getResistivity() > 0) {
                 raiseArm();
                 phase = Phase.DELIVER;
+                bestLight = 1023;
+                stepsWithoutProgress = 0;
                 print("got a cap (resistivity " + gripper().getResistivity() + ")");
                 return;
             }
@@ -78,6 +88,13 @@ public class CapGatherer extends Controller {
         }
         if (nearLamp) {
             steerAwayFromLight();
+        } else if (exploreSteps > 0) {
+            exploreSteps--;
+            wander();
+        } else if (brightest() < LAMP_SEEN) {
+            // The lamp is in sight: this is the target room, where the caps have been brought.
+            // Head for the dark, which is back through the doorway to the caps still to fetch.
+            steerFromLight();
         } else {
             // Something small just ahead on one side: steer toward it so it comes between the fingers.
             int p2 = prox(2);
@@ -114,10 +131,26 @@ public class CapGatherer extends Controller {
             wanderSteps = 300;
             return;
         }
+        if (bright < bestLight - 10) {
+            bestLight = bright;
+            stepsWithoutProgress = 0;
+        } else if (++stepsWithoutProgress * STEP_MS > GIVE_UP_MS) {
+            // Turning between a wall and the light seen through the doorway gets nowhere: back off,
+            // turn a random way and go exploring for a while before following the light again.
+            stepsWithoutProgress = 0;
+            bestLight = bright;
+            drive(-6, -6, 700);
+            turnRandomly();
+            exploreSteps = 100 + random.nextInt(100);
+            return;
+        }
         if (avoid(true)) {
             return;
         }
-        if (bright < LAMP_SEEN) {
+        if (exploreSteps > 0) {
+            exploreSteps--;
+            wander();
+        } else if (bright < LAMP_SEEN) {
             steerTowardLight();
         } else {
             wander();
@@ -169,6 +202,21 @@ public class CapGatherer extends Controller {
             setSpeeds(CRUISE, CRUISE - 4);
         } else {
             setSpeeds(CRUISE, CRUISE);
+        }
+    }
+
+    /** Steer so the darker side (higher reading) comes ahead. */
+    private void steerFromLight() {
+        int l = lux(0) + lux(1) + lux(2);
+        int r = lux(3) + lux(4) + lux(5);
+        if (Math.min(lux(2), lux(3)) < Math.min(lux(6), lux(7)) - 20) {
+            setSpeeds(6, -6);
+        } else if (l < r - 15) {
+            setSpeeds(CRUISE, CRUISE - 4);
+        } else if (r < l - 15) {
+            setSpeeds(CRUISE - 4, CRUISE);
+        } else {
+            wander();
         }
     }
 
