@@ -146,13 +146,18 @@ class HostileControllerTest {
         assertEquals(ControllerStatus.STOPPED, swallower.result.first().status(), swallower.text());
         assertFalse(swallower.text().contains("left behind"), swallower.text());
         assertFalse(spinner.text().contains("left behind"), spinner.text());
+        assertThreadsBackTo(before, "after the runs");
+    }
+
+    /** The JVM's thread count falls back to {@code before} (generous: threads take a moment to end). */
+    private static void assertThreadsBackTo(int before, String when) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
         int after;
         do {
             Thread.sleep(50);
             after = ManagementFactory.getThreadMXBean().getThreadCount();
         } while (after > before && System.nanoTime() < deadline);
-        assertTrue(after <= before, "threads back to " + before + ", now " + after);
+        assertTrue(after <= before, "threads back to " + before + " " + when + ", now " + after);
     }
 
     /**
@@ -186,13 +191,7 @@ class HostileControllerTest {
             assertTrue(runner.stopAndWait(10_000), c[0] + ": the window can stop the run");
             s.close();
         }
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-        int after;
-        do {
-            Thread.sleep(50);
-            after = ManagementFactory.getThreadMXBean().getThreadCount();
-        } while (after > before && System.nanoTime() < deadline);
-        assertTrue(after <= before, "threads back to " + before + " after the window's runs, now " + after);
+        assertThreadsBackTo(before, "after the window's runs");
     }
 
     @Test
