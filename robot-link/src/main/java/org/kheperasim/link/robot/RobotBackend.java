@@ -43,6 +43,11 @@ public final class RobotBackend implements RobotPort {
     private volatile long wantedSpeeds = pack(0, 0);
     private volatile long sentSpeeds = Long.MIN_VALUE;
     private long foreignSeen;
+    /** Boot banners already handled, and what the controller's counters carry over a reboot. */
+    private long bootsSeen;
+    private boolean rebooted;
+    private int offsetLeft;
+    private int offsetRight;
     private volatile boolean objectPresent;
     private volatile int resistivity;
     private volatile GripperState fingers = GripperState.OPEN;
@@ -137,8 +142,14 @@ public final class RobotBackend implements RobotPort {
             case LIGHT -> light = session.exchange(new Command.ReadLight()).ints();
             case ENCODERS -> {
                 int[] v = session.exchange(new Command.ReadPositionCounters()).ints();
-                leftPosition = v[0];
-                rightPosition = v[1];
+                if (rebooted) {
+                    // The robot's counters restarted at 0: carry on from where the controller was.
+                    rebooted = false;
+                    offsetLeft = leftPosition - v[0];
+                    offsetRight = rightPosition - v[1];
+                }
+                leftPosition = v[0] + offsetLeft;
+                rightPosition = v[1] + offsetRight;
             }
         }
     }
@@ -161,6 +172,15 @@ public final class RobotBackend implements RobotPort {
 
     /** Send the changed speeds, then queued commands. Runs on the poll thread. */
     private void sendChanges() throws SessionException {
+        long boots = session.boots();
+        if (boots != bootsSeen) {
+            bootsSeen = boots;
+            rebooted = true;
+            console.accept("warning: the robot rebooted during the run (its boot banner arrived on "
+                    + session.link().describe() + "): it had stopped its wheels and restarted its position counters"
+                    + " at 0. The run goes on: the speeds are sent again, and the positions the controller reads"
+                    + " continue from where they were. Check the battery and the cable.");
+        }
         long foreign = session.foreignLines();
         if (foreign != foreignSeen) {
             // A banner (a reset robot has stopped its wheels) or noise: say the speeds again.

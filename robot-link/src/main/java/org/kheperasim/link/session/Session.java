@@ -78,6 +78,7 @@ public final class Session implements AutoCloseable {
     private final LongAdder skippedLines = new LongAdder();
     private final LongAdder discardedChars = new LongAdder();
     private final LongAdder foreignLines = new LongAdder();
+    private final LongAdder boots = new LongAdder();
     private long rttSum;
     private long rttMax;
     private volatile String lastSent;
@@ -176,6 +177,9 @@ public final class Session implements AutoCloseable {
                         skippedLines.increment();
                         if (!looksLikeReply(got)) {
                             foreignLines.increment();
+                            if (looksLikeBanner(got)) {
+                                boots.increment();
+                            }
                         }
                         if (e.kind() == ProtocolException.Kind.COMMAND_NOT_FOUND
                                 || e.kind() == ProtocolException.Kind.ROBOT_ERROR) {
@@ -250,6 +254,21 @@ public final class Session implements AutoCloseable {
      */
     public long foreignLines() {
         return foreignLines.sum();
+    }
+
+    /**
+     * Boot banners seen in the middle of the session: the robot was reset (power dip, reset button,
+     * a flat battery) and has forgotten its speeds and restarted its position counters at 0.
+     *
+     * @return how many banner lines arrived after {@link #open()}
+     */
+    public long boots() {
+        return boots.sum();
+    }
+
+    /** The Khepera's boot banner names its BIOS and protocol versions ("Khepera BIOS version 5.02"). */
+    static boolean looksLikeBanner(String line) {
+        return line.contains("BIOS") || line.startsWith("Protocol version");
     }
 
     private static boolean looksLikeReply(String line) {
