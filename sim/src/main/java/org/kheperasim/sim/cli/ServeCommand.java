@@ -53,6 +53,10 @@ final class ServeCommand implements Callable<Integer> {
             description = "also make a pseudo-terminal at PATH for serial-only clients (starts socat; prints the command if it is missing)")
     Path pty;
 
+    @Option(names = "--idle-timeout", paramLabel = "SECONDS", defaultValue = "60",
+            description = "let a client go after SECONDS without a command, so none holds the robot forever; 0 = never (default: ${DEFAULT-VALUE})")
+    double idleTimeout;
+
     @Option(names = "--seconds", paramLabel = "T", description = "stop after T real seconds (default: run until Ctrl-C)")
     Double seconds;
 
@@ -66,7 +70,10 @@ final class ServeCommand implements Callable<Integer> {
         ServedRobot robot = new ServedRobot(a, settings, runSeed, speed);
         ProtocolServer server;
         try {
-            server = ProtocolServer.start(robot, address, port);
+            if (!(idleTimeout >= 0 && idleTimeout <= 86_400)) {
+                throw new IllegalArgumentException("--idle-timeout " + idleTimeout + " must lie in 0..86400 seconds (0 = never)");
+            }
+            server = ProtocolServer.start(robot, address, port).idleTimeout((long) (idleTimeout * 1000));
         } catch (Exception e) {
             robot.close();
             throw e;

@@ -29,8 +29,11 @@ import org.kheperasim.link.timing.LinkTiming;
  * <ul>
  *   <li>Binds to the loopback address unless another is given: exposing a robot on a network is a
  *       choice the caller makes (the CLI's {@code --bind}) and is told about.
- *   <li>One client at a time. A second connection gets one line,
+ *   <li>One client at a time. A second connection waits up to 0.25 s for the first to leave (so a
+ *       client that closes and reconnects at once is never refused), then gets one line,
  *       {@code z,Busy: robot already has a client from HOST:PORT}, and is closed.
+ *   <li>A client that sends nothing for the idle timeout (60 s unless {@link #idleTimeout} says
+ *       otherwise) gets {@code z,Idle: ...} and is let go, so that no client holds the robot forever.
  *   <li>When the client goes away (end of stream, error, server closed) the wheels stop at once.
  *   <li>Each command takes effect when its characters and the robot's turnaround would have passed
  *       on the serial line at the set baud, and its reply is sent when the reply's characters would
@@ -80,6 +83,15 @@ public final class ProtocolServer implements AutoCloseable {
     private String clientName;
     private Thread clientThread;
     private volatile boolean closed;
+    private volatile long idleTimeoutMillis = DEFAULT_IDLE_TIMEOUT_MILLIS;
+
+    /** A client that sends nothing for this long is let go, so that it cannot hold the robot forever. */
+    public static final long DEFAULT_IDLE_TIMEOUT_MILLIS = 60_000;
+    /** A new client waits at most this long for the previous one's leaving to finish before it is refused. */
+    private static final long HANDOVER_MILLIS = 250;
+    /** At most this many new clients wait for the hand-over at once; more are refused at once. */
+    private static final int MAX_WAITING = 8;
+    private final java.util.concurrent.atomic.AtomicInteger waiting = new java.util.concurrent.atomic.AtomicInteger();
 
     private ProtocolServer(ServedRobot robot, ServerSocket socket) {
         this.robot = robot;
@@ -168,6 +180,19 @@ public final class ProtocolServer implements AutoCloseable {
         return "tcp://" + (host.contains(":") ? "[" + host + "]" : host) + ":" + port();
     }
 
+    /**
+     * @param millis how long a client may send nothing before it is let go (its robot stops); 0 for
+     *     no limit. Applies to clients that connect from now on.
+     * @return this server
+     */
+    public ProtocolServer idleTimeout(long millis) {
+        if (millis < 0) {
+            throw new IllegalArgumentException("idle timeout " + millis + " ms must not be negative (0 = none)");
+        }
+        this.idleTimeoutMillis = millis;
+        return this;
+    }
+
     /** @return the current client as {@code host:port}, or null when none is connected */
     public String client() {
         synchronized (clientLock) {
@@ -213,19 +238,62 @@ public final class ProtocolServer implements AutoCloseable {
                 continue;
             }
             String who = name(s);
-            String busyWith;
-            synchronized (clientLock) {
-                busyWith = clientName;
-                if (busyWith == null && !closed) {
-                    client = s;
-                    clientName = who;
-                    clientThread = new Thread(() -> serve(s, who), "protocol-server-client");
-                    clientThread.setDaemon(true);
-                    clientThread.start();
+            if (!admit(s, who, false)) {
+                // Busy: the client that has it may be just leaving (it closed, and the server has
+                // still to read the end of its stream and stop the robot). Let this one wait for
+                // that a moment on a thread of its own, so a client that reconnects at once is
+                // never refused; the acceptor goes on at once.
+                if (waiting.incrementAndGet() > MAX_WAITING) {
+                    waiting.decrementAndGet();
+                    refuse(s, who, busyName());
                     continue;
                 }
+                Thread waiter = new Thread(() -> {
+                    try {
+                        if (!admit(s, who, true)) {
+                            refuse(s, who, busyName());
+                        }
+                    } finally {
+                        waiting.decrementAndGet();
+                    }
+                }, "protocol-server-waiting");
+                waiter.setDaemon(true);
+                waiter.start();
             }
-            refuse(s, who, busyWith == null ? "server closing" : busyWith);
+        }
+    }
+
+    /** Make {@code s} the client if the robot is free (waiting up to the hand-over time if asked); false when busy. */
+    private boolean admit(Socket s, String who, boolean wait) {
+        synchronized (clientLock) {
+            long deadline = System.nanoTime() + HANDOVER_MILLIS * 1_000_000L;
+            while (wait && clientName != null && !closed) {
+                long left = deadline - System.nanoTime();
+                if (left <= 0) {
+                    break;
+                }
+                try {
+                    clientLock.wait(StrictMath.max(1, left / 1_000_000L));
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    break;
+                }
+            }
+            if (clientName != null || closed) {
+                return false;
+            }
+            client = s;
+            clientName = who;
+            clientThread = new Thread(() -> serve(s, who), "protocol-server-client");
+            clientThread.setDaemon(true);
+            clientThread.start();
+            return true;
+        }
+    }
+
+    private String busyName() {
+        synchronized (clientLock) {
+            return clientName == null ? "server closing" : clientName;
         }
     }
 
@@ -252,9 +320,19 @@ public final class ProtocolServer implements AutoCloseable {
     private void serve(Socket s, String who) {
         emit(EventKind.CONNECTED, who, "client " + who + " connected");
         String why = "closed the connection";
+        long idle = idleTimeoutMillis;
         try {
             s.setTcpNoDelay(true);
+            s.setSoTimeout((int) StrictMath.min(Integer.MAX_VALUE, idle));
             handle(s.getInputStream(), s.getOutputStream());
+        } catch (java.net.SocketTimeoutException e) {
+            why = "sent nothing for " + idle / 1000.0 + " s and was let go (serve --idle-timeout)";
+            try {
+                s.getOutputStream().write(("z,Idle: no command for " + idle / 1000.0 + " s; the robot stopped and"
+                        + " the connection is closed" + KheperaProtocol.REPLY_END).getBytes(StandardCharsets.ISO_8859_1));
+            } catch (IOException gone) {
+                // The client has gone too.
+            }
         } catch (SocketException e) {
             why = closed ? "server closed" : "connection lost (" + e.getMessage() + ")";
         } catch (IOException e) {
@@ -273,6 +351,7 @@ public final class ProtocolServer implements AutoCloseable {
                     client = null;
                     clientName = null;
                     clientThread = null;
+                    clientLock.notifyAll();
                 }
             }
             emit(EventKind.DISCONNECTED, who, "client " + who + " " + why + "; the robot stopped");
