@@ -57,7 +57,9 @@ public final class ServedRobot implements AutoCloseable {
     private final int[] values = new int[IrSensor.COUNT];
     private Thread ticker;
     private volatile boolean running;
-    private long wallStart;
+    private volatile long wallStart;
+    private volatile long leadNanos;
+    private volatile long lastCommandNanos;
 
     /**
      * @param arena the arena; its first robot pose is where the robot starts
@@ -109,9 +111,32 @@ public final class ServedRobot implements AutoCloseable {
         ticker.start();
     }
 
+    /**
+     * Keep the robot's time from running more than {@code leadNanos} of simulated time past the
+     * last command a client sent: a client starved of the processor (a busy test machine) then finds
+     * the robot where it left it instead of far ahead. A real robot does not wait, so this is off
+     * by default; tests that compare a run through the server with a direct one at a high speed
+     * factor use it.
+     *
+     * @param leadNanos the most simulated time the robot may run ahead of the client, ns; 0 = off
+     */
+    public void followClient(long leadNanos) {
+        if (leadNanos < 0) {
+            throw new IllegalArgumentException("lead " + leadNanos + " ns must not be negative (0 = off)");
+        }
+        this.leadNanos = leadNanos;
+    }
+
     private void tickLoop() {
         while (running) {
-            long target = (long) ((System.nanoTime() - wallStart) * speed);
+            long now = System.nanoTime();
+            long target = (long) ((now - wallStart) * speed);
+            long lead = leadNanos;
+            if (lead > 0 && target > lastCommandNanos + lead) {
+                // The client is late: hold the robot's time, and resume the pacing from here.
+                target = lastCommandNanos + lead;
+                wallStart = now - (long) (target / speed);
+            }
             target -= target % Engine.TICK_NANOS;
             lock.lock();
             try {
@@ -134,6 +159,7 @@ public final class ServedRobot implements AutoCloseable {
     public String execute(Command command) {
         lock.lock();
         try {
+            lastCommandNanos = engine.timeNanos();
             return answer(command);
         } finally {
             lock.unlock();

@@ -18,6 +18,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.sim.engine.Settings;
@@ -25,6 +26,7 @@ import org.kheperasim.sim.engine.SimRobot;
 
 /** One client per robot, the robot stops when it leaves, and abuse does not hurt the server. */
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+@Tag("timing")
 class ClientRulesTest {
     private static final Settings EXACT = Settings.defaults().withNoise(0);
 

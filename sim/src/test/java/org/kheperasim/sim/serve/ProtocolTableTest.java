@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Arrays;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.link.timing.LinkTiming;
@@ -15,6 +16,7 @@ import org.kheperasim.sim.engine.SimRobot;
  * Khepera gives. The robot stands at (300, 600) facing +x, its front 9.5 mm from a wall.
  */
 @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+@Tag("timing")
 class ProtocolTableTest {
     private static final Settings EXACT = Settings.defaults().withNoise(0);
     /** A wall across the robot's path, its face at x = 337: 9.5 mm from the body, 12 mm from the front sensors. */
@@ -92,6 +94,7 @@ class ProtocolTableTest {
             assertEquals("g", c.ask("G,0,0"));
             assertEquals("j", c.ask("J,10,64,10,64"));
             long start = System.nanoTime();
+            long simStart = s.robot.timeNanos();
             assertEquals("c", c.ask("C,500,-500"));
             int[] k = values(c.ask("K"), "k", 6);
             assertEquals(0, k[0], "left not on target yet: " + Arrays.toString(k));
@@ -108,12 +111,13 @@ class ProtocolTableTest {
                 if (k[0] == 1 && k[3] == 1) {
                     break;
                 }
-                assertTrue(System.nanoTime() - start < 3e9, "the move ends: " + Arrays.toString(k));
+                assertTrue(System.nanoTime() - start < 30e9, "the move ends: " + Arrays.toString(k));
             }
-            double seconds = (System.nanoTime() - start) / 1e9;
-            // 500 pulses at most 10 pulses/10 ms, accelerating 64/256 pulse/10 ms per 10 ms:
-            // 0.4 s up (200 pulses), 0.1 s at 10 (100), 0.4 s down (200) = 0.9 s.
-            assertTrue(seconds > 0.8 && seconds < 1.3, "the trapezoid takes about 0.9 s: " + seconds);
+            // In robot time, which a loaded machine cannot stretch (it can only make the polling
+            // of K see the end a little late): 500 pulses at most 10 pulses/10 ms, accelerating
+            // 64/256 pulse/10 ms per 10 ms: 0.4 s up (200 pulses), 0.1 s at 10 (100), 0.4 s down (200) = 0.9 s.
+            double seconds = (s.robot.timeNanos() - simStart) / 1e9;
+            assertTrue(seconds > 0.85 && seconds < 1.5, "the trapezoid takes about 0.9 s of robot time: " + seconds);
             assertEquals(10, maxSpeed, "the profile's maximum speed is reached and not exceeded");
             int[] h = values(c.ask("H"), "h", 2);
             assertEquals(500, h[0], 1);
@@ -162,24 +166,24 @@ class ProtocolTableTest {
             LinkTiming timing = LinkTiming.atBaud(baud);
             try (Served s = new Served(WALL_AHEAD, settings, 1); LineClient c = s.client()) {
                 c.ask("B");
-                long worstEarly = Long.MAX_VALUE;
-                long sum = 0;
                 int rounds = 30;
+                long[] late = new long[rounds];
                 for (int i = 0; i < rounds; i++) {
                     long t0 = System.nanoTime();
                     String reply = c.ask("N");
                     long rtt = System.nanoTime() - t0;
-                    long expected = timing.exchangeNanos(2, reply.length() + 2);
-                    worstEarly = Math.min(worstEarly, rtt - expected);
-                    sum += rtt - expected;
+                    late[i] = rtt - timing.exchangeNanos(2, reply.length() + 2);
                 }
-                assertTrue(worstEarly >= 0, baud + " baud: no reply comes before its wire time; earliest by "
-                        + worstEarly / 1e6 + " ms");
-                double meanLateMs = sum / 1e6 / rounds;
-                assertTrue(meanLateMs < 5, baud + " baud: replies come about at their wire time; mean lateness "
-                        + meanLateMs + " ms");
-                System.out.printf(java.util.Locale.ROOT, "N round trip at %d baud: wire time %.2f ms, mean lateness %.3f ms%n",
-                        baud, timing.exchangeNanos(2, 40) / 1e6, meanLateMs);
+                Arrays.sort(late);
+                // Exact: no reply ever comes before its wire time. A loaded machine can only delay
+                // replies, so the rest is judged on the best of them and, generously, the median.
+                assertTrue(late[0] >= 0, baud + " baud: no reply comes before its wire time; earliest by "
+                        + late[0] / 1e6 + " ms");
+                assertTrue(late[0] < 3_000_000L, baud + " baud: unhindered, a reply comes at its wire time; the"
+                        + " best of " + rounds + " was late by " + late[0] / 1e6 + " ms");
+                assertTrue(late[rounds / 2] < 50_000_000L, baud + " baud: median lateness " + late[rounds / 2] / 1e6 + " ms");
+                System.out.printf(java.util.Locale.ROOT, "N round trip at %d baud: wire time %.2f ms, lateness best %.3f ms, median %.3f ms%n",
+                        baud, timing.exchangeNanos(2, 40) / 1e6, late[0] / 1e6, late[rounds / 2] / 1e6);
             }
         }
     }

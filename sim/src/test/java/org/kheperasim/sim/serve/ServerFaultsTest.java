@@ -6,12 +6,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.sim.engine.Settings;
 
 /** Faults of the protocol server said out loud: an idle client is let go; a reconnect after a clean close is never refused. */
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+@Tag("timing")
 class ServerFaultsTest {
     private static final Settings EXACT = Settings.defaults().withNoise(0);
 
