@@ -1,5 +1,7 @@
 package org.kheperasim.sim.cli;
 
+import org.kheperasim.link.tool.ToolErrors;
+import org.kheperasim.link.tool.ToolVersion;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -7,7 +9,7 @@ import picocli.CommandLine.Command;
  * The simulator's entry point: {@code java -jar khepera-sim.jar <command>}. With no command it
  * opens the window with {@code maze} loaded and {@code WallFollower} chosen.
  */
-@Command(name = "khepera-sim", mixinStandardHelpOptions = true, version = "khepera-sim 0.1.0",
+@Command(name = "khepera-sim", mixinStandardHelpOptions = true, versionProvider = ToolVersion.class,
         description = "A deterministic Khepera robot simulator. Runs a controller class in an arena.",
         subcommands = {GuiCommand.class, GuiBenchCommand.class, RunCommand.class, BenchCommand.class, SettingsCommand.class,
             ListCommand.class, ServeCommand.class,
@@ -25,15 +27,7 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
 
     /** @return a command line ready to execute, with the project's error handling */
     public static CommandLine commandLine() {
-        CommandLine cl = new CommandLine(new Main());
-        cl.setExecutionExceptionHandler((e, cmd, parsed) -> {
-            cmd.getErr().println("khepera-sim: " + e.getMessage());
-            if (e.getCause() != null && System.getenv("KHEPERA_DEBUG") != null) {
-                e.printStackTrace(cmd.getErr());
-            }
-            return 2;
-        });
-        return cl;
+        return ToolErrors.install(new CommandLine(new Main()), "khepera-sim");
     }
 
     /**

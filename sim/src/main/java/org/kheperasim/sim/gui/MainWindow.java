@@ -68,6 +68,8 @@ import org.kheperasim.sim.run.Simulation;
  * snapshot on a Swing timer and sends it commands, so the engine never waits on the screen.
  */
 public final class MainWindow {
+    private static final System.Logger LOG = System.getLogger(MainWindow.class.getName());
+
     /** Speeds offered, simulated seconds per real second; the last is as fast as possible. */
     static final double[] SPEEDS = {0.25, 0.5, 1, 2, 4, PacedRunner.MAX_SPEED};
     /** Frame period while paced, ms: a little faster than 60 frames/s, so the screen keeps up. */
@@ -904,7 +906,7 @@ public final class MainWindow {
                 cmd.append(String.join(java.io.File.pathSeparator, classpath.stream().map(p -> p.toAbsolutePath().toString()).toList()));
             }
             settings.overrides().forEach((k, v) -> cmd.append(" --set ").append(k).append('=').append(v));
-            Files.writeString(dir.resolve("replay.txt"), "# Replays the run exactly; add --seconds T for how long (the window ran to "
+            org.kheperasim.sim.files.AtomicFiles.write(dir.resolve("replay.txt"), "# Replays the run exactly; add --seconds T for how long (the window ran to "
                     + String.format(Locale.ROOT, "%.3f", r.latest().timeSeconds()) + " s) and --trace FILE for the trace:\n" + cmd + "\n");
         } catch (IOException e) {
             throw new java.io.UncheckedIOException("cannot write the recording in " + dir + ": " + e.getMessage(), e);
@@ -949,6 +951,7 @@ public final class MainWindow {
                         .map(f -> p.relativize(f).toString().replace(java.io.File.separatorChar, '.').replaceFirst("\\.class$", ""))
                         .findFirst().orElse("Robot");
             } catch (IOException e) {
+                LOG.log(System.Logger.Level.DEBUG, "cannot look for classes in " + p + ", guessing Robot: " + e);
                 return "Robot";
             }
         }
