@@ -41,6 +41,10 @@ public final class Connection {
 
     /** @return the serial settings these options give */
     SerialSettings settings() {
+        if (timeoutMillis > 600_000 || retries > 100) {
+            throw new IllegalArgumentException("--timeout " + timeoutMillis + " ms / --retries " + retries
+                    + ": give at most 600000 ms and 100 retries");
+        }
         if (eol == LineEnd.CRLF) {
             throw new IllegalArgumentException("--eol CRLF: a command ends with exactly one CR or LF; give CR or LF");
         }

@@ -54,13 +54,13 @@ public final class ArenaLimits {
      */
     public static void checkSize(double width, double height) {
         if (width > MAX_SIDE_MM || height > MAX_SIDE_MM) {
-            throw new IllegalArgumentException("arena size " + Numbers.format(width) + " x " + Numbers.format(height)
-                    + " mm is too large: each side may be at most " + Numbers.format(MAX_SIDE_MM)
+            throw new IllegalArgumentException("arena size " + Numbers.brief(width) + " x " + Numbers.brief(height)
+                    + " mm is too large: each side may be at most " + Numbers.brief(MAX_SIDE_MM)
                     + " mm (10 m); give the size in mm");
         }
         if (width * height > MAX_AREA_MM2) {
-            throw new IllegalArgumentException("arena size " + Numbers.format(width) + " x " + Numbers.format(height)
-                    + " mm is too large: the floor may be at most 25 m² (" + Numbers.format(MAX_AREA_MM2)
+            throw new IllegalArgumentException("arena size " + Numbers.brief(width) + " x " + Numbers.brief(height)
+                    + " mm is too large: the floor may be at most 25 m² (" + Numbers.brief(MAX_AREA_MM2)
                     + " mm², e.g. 5000 x 5000 or 10000 x 2500); make the arena smaller");
         }
     }

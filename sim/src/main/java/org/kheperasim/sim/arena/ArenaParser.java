@@ -263,14 +263,14 @@ final class ArenaParser {
 
     private void atMost(String what, double value, double max, String unit) {
         if (value > max) {
-            throw error(lineNo, what + " is " + Numbers.format(value) + "; it may be at most "
-                    + Numbers.format(max) + " " + unit);
+            throw error(lineNo, what + " is " + Numbers.brief(value) + "; it may be at most "
+                    + Numbers.brief(max) + " " + unit);
         }
     }
 
     private void angle(String what, double deg) {
         if (deg < -MAX_ANGLE_DEG || deg > MAX_ANGLE_DEG) {
-            throw error(lineNo, what + " is " + Numbers.format(deg) + " degrees; give an angle from -360 to 360");
+            throw error(lineNo, what + " is " + Numbers.brief(deg) + " degrees; give an angle from -360 to 360");
         }
     }
 
@@ -330,8 +330,8 @@ final class ArenaParser {
 
     private void inside(String what, double x, double y, int line) {
         if (x < 0 || y < 0 || x > width || y > height) {
-            String w = Numbers.format(width);
-            String h = Numbers.format(height);
+            String w = Numbers.brief(width);
+            String h = Numbers.brief(height);
             throw error(line, what + " at " + point(x, y) + " lies outside the " + w + " x " + h
                     + " mm arena; keep x within 0..", w, " and y within 0..", h);
         }
@@ -351,7 +351,7 @@ final class ArenaParser {
                 throw error(wallLines.get(i), String.format(Locale.ROOT, "the walls up to this one cover %.1f times"
                         + " the floor's area (each wall counts (length + thickness) x thickness); at most %s times"
                         + " is allowed, so remove walls that overlap or make them thinner", total / floor,
-                        Numbers.format(ArenaLimits.MAX_WALL_AREA_RATIO)));
+                        Numbers.brief(ArenaLimits.MAX_WALL_AREA_RATIO)));
             }
         }
     }
@@ -386,6 +386,6 @@ final class ArenaParser {
     }
 
     private static String point(double x, double y) {
-        return "(" + Numbers.format(x) + ", " + Numbers.format(y) + ")";
+        return "(" + Numbers.brief(x) + ", " + Numbers.brief(y) + ")";
     }
 }

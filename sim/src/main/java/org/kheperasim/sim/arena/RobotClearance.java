@@ -51,7 +51,7 @@ final class RobotClearance {
                         + String.format(Locale.ROOT, " near (%.1f, %.1f)",
                                 grid.cellCentreX(bestCol), grid.cellCentreY(bestRow));
                 throw new ArenaFormatException(source, robotLines.get(i), "robot at " + point(p) + " overlaps " + what
-                        + "; its body is a " + Numbers.format(radius) + " mm radius disc,"
+                        + "; its body is a " + Numbers.brief(radius) + " mm radius disc,"
                         + " so move its centre that far from walls, lights and the edge");
             }
             for (int j = 0; j < i; j++) {
@@ -61,13 +61,13 @@ final class RobotClearance {
                     throw new ArenaFormatException(source, robotLines.get(i), "robot at " + point(p)
                             + " overlaps the robot on line " + robotLines.get(j) + ": their centres are "
                             + String.format(Locale.ROOT, "%.1f", d) + " mm apart, less than "
-                            + Numbers.format(2 * radius) + " mm; move one of them");
+                            + Numbers.brief(2 * radius) + " mm; move one of them");
                 }
             }
         }
     }
 
     private static String point(Pose p) {
-        return "(" + Numbers.format(p.x()) + ", " + Numbers.format(p.y()) + ")";
+        return "(" + Numbers.brief(p.x()) + ", " + Numbers.brief(p.y()) + ")";
     }
 }

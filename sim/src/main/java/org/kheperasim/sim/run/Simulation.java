@@ -123,8 +123,9 @@ public final class Simulation {
 
         /** @param millis trace sample period, whole ms @return this */
         public Builder sampleMillis(long millis) {
-            if (millis < 1) {
-                throw new IllegalArgumentException("trace sample period " + millis + " ms must be at least 1 ms");
+            if (millis < 1 || millis > 3_600_000) {
+                throw new IllegalArgumentException("trace sample period " + millis + " ms must lie in 1..3600000 ms"
+                        + " (one sample an hour at most)");
             }
             this.sampleMillis = millis;
             return this;

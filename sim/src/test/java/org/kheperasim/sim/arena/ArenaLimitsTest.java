@@ -89,6 +89,16 @@ class ArenaLimitsTest {
         assertEquals(a, ArenaFormat.parse(written, "again.arena"));
     }
 
+    /** Found by the fuzz run: extreme numbers made a 1059-character message; messages show them briefly. */
+    @Test
+    void messagesShowExtremeNumbersBriefly() {
+        ArenaFormatException e = assertThrows(ArenaFormatException.class,
+                () -> ArenaFormat.parse("khepera-arena 1\nsize 4e-324 1\nrobot 4 1e308 1\n", "x.arena"));
+        assertTrue(e.getMessage().startsWith("x.arena:3: robot at (4, 1.0E308) lies outside the 4.9E-324 x 1 mm arena"),
+                e.getMessage());
+        assertTrue(e.getMessage().length() < 200, e.getMessage());
+    }
+
     @Test
     void fortyThousandWholeGridWallsAreRefusedAtTheFirstWallTooMany() {
         // The input took 54 s to refuse; the count is now checked line by line, before any drawing.
