@@ -69,12 +69,18 @@ public abstract class Controller extends Thread {
         return active;
     }
 
-    /** @return proximity at that sensor, 0..1023, higher = nearer */
+    /**
+     * @param sensor which sensor
+     * @return proximity at that sensor, 0..1023, higher = nearer
+     */
     protected final int proximity(IrSensor sensor) {
         return sensors[sensor.index()].getDistValue();
     }
 
-    /** @return ambient light at that sensor, 0..1023, lower = brighter */
+    /**
+     * @param sensor which sensor
+     * @return ambient light at that sensor, 0..1023, lower = brighter
+     */
     protected final int light(IrSensor sensor) {
         return sensors[sensor.index()].getLightValue();
     }

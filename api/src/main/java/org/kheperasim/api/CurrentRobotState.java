@@ -32,7 +32,10 @@ public final class CurrentRobotState {
         return sensors.clone();
     }
 
-    /** @param which a sensor position @return that live sensor */
+    /**
+     * @param which a sensor position
+     * @return that live sensor
+     */
     public Sensor getSensor(IrSensor which) {
         return sensors[which.index()];
     }

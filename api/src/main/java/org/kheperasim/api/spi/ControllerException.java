@@ -7,7 +7,10 @@ public class ControllerException extends RuntimeException {
         super(message);
     }
 
-    /** @param message what is wrong and how to fix it @param cause the underlying failure */
+    /**
+     * @param message what is wrong and how to fix it
+     * @param cause the underlying failure
+     */
     public ControllerException(String message, Throwable cause) {
         super(message, cause);
     }

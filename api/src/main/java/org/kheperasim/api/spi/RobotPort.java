@@ -16,13 +16,24 @@ import org.kheperasim.api.GripperState;
  */
 public interface RobotPort {
 
-    /** @return proximity of sensor {@code index}, 0..1023, higher = nearer */
+    /**
+     * @param index the sensor, 0..7 ({@link org.kheperasim.api.IrSensor#index()})
+     * @return proximity of sensor {@code index}, 0..1023, higher = nearer
+     */
     int proximity(int index);
 
-    /** @return ambient light at sensor {@code index}, 0..1023, lower = brighter */
+    /**
+     * @param index the sensor, 0..7 ({@link org.kheperasim.api.IrSensor#index()})
+     * @return ambient light at sensor {@code index}, 0..1023, lower = brighter
+     */
     int ambientLight(int index);
 
-    /** Ask for wheel speeds, in speed units (≈ 8 mm/s), each already checked to lie in −127..127. */
+    /**
+     * Ask for wheel speeds, in speed units (≈ 8 mm/s), each already checked to lie in −127..127.
+     *
+     * @param left left wheel, speed units
+     * @param right right wheel, speed units
+     */
     void setSpeeds(int left, int right);
 
     /** @return the speed last asked for on the left wheel, speed units */
@@ -37,10 +48,19 @@ public interface RobotPort {
     /** @return right wheel position counter, pulses (≈ 0.08 mm) */
     int rightPosition();
 
-    /** Set both wheel position counters, pulses (the protocol's {@code G} command). */
+    /**
+     * Set both wheel position counters, pulses (the protocol's {@code G} command).
+     *
+     * @param left left counter, pulses (≈ 0.08 mm)
+     * @param right right counter, pulses
+     */
     void setPositions(int left, int right);
 
-    /** Move the gripper arm towards {@code position}. */
+    /**
+     * Move the gripper arm towards {@code position}.
+     *
+     * @param position where the arm goes
+     */
     void setArm(ArmPosition position);
 
     /** @return where the arm last came to rest */
@@ -49,7 +69,11 @@ public interface RobotPort {
     /** @return true while the arm is travelling between positions */
     boolean armMoving();
 
-    /** Open or close the fingers. */
+    /**
+     * Open or close the fingers.
+     *
+     * @param state open or closed
+     */
     void setFingers(GripperState state);
 
     /** @return the fingers' state */
@@ -71,6 +95,10 @@ public interface RobotPort {
      */
     void sleep(long millis) throws InterruptedException;
 
-    /** Deliver a line of text from the controller to the person watching (console, log). */
+    /**
+     * Deliver a line of text from the controller to the person watching (console, log).
+     *
+     * @param text the line, without a line end
+     */
     void message(String text);
 }

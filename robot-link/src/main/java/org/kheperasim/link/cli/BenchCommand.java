@@ -7,11 +7,12 @@ import org.kheperasim.link.session.Session;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
+import org.kheperasim.link.tool.CliNumbers;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /** {@code bench}: the poll rate this link reaches. */
-@Command(name = "bench", description = "Poll the robot (N, O, H) as fast as the link allows for a while and print"
+@Command(name = "bench", mixinStandardHelpOptions = true, description = "Poll the robot (N, O, H) as fast as the link allows for a while and print"
         + " the rate reached next to the timing model's prediction. The wheels stay still.")
 final class BenchCommand implements Callable<Integer> {
     @Spec
@@ -20,7 +21,8 @@ final class BenchCommand implements Callable<Integer> {
     @Mixin
     Connection connection;
 
-    @Option(names = "--seconds", defaultValue = "5", description = "How long to poll. Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--seconds", defaultValue = "5", converter = CliNumbers.PositiveSeconds.class,
+            description = "How long to poll, seconds. Default: ${DEFAULT-VALUE}.")
     double seconds;
 
     @Override

@@ -17,7 +17,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /** {@code check}: every command once, a table of results and round-trip times. */
-@picocli.CommandLine.Command(name = "check", description = "Send every protocol command once (the robot does not"
+@picocli.CommandLine.Command(name = "check", mixinStandardHelpOptions = true, description = "Send every protocol command once (the robot does not"
         + " move: C targets the current position, G keeps the counters, D and P are zero) and print a table.")
 final class CheckCommand implements Callable<Integer> {
     @Spec

@@ -8,6 +8,7 @@ import org.kheperasim.link.io.Links;
 import org.kheperasim.link.io.SerialSettings;
 import org.kheperasim.link.session.Session;
 import org.kheperasim.link.timing.LinkTiming;
+import org.kheperasim.link.tool.CliNumbers;
 import picocli.CommandLine.Option;
 
 /** The connection options every command shares: a serial port (or a TCP address) and its frame. */
@@ -16,7 +17,8 @@ public final class Connection {
             description = "Serial port path (e.g. /dev/ttyUSB0, COM3, a socat pty link) or tcp://HOST:PORT.")
     String port;
 
-    @Option(names = "--baud", defaultValue = "38400", description = "Line speed, 9600..115200 (the robot's mode jumper). Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--baud", defaultValue = "38400", converter = CliNumbers.Baud.class,
+            description = "Line speed: 9600, 19200, 38400, 57600 or 115200 (the robot's mode jumper). Default: ${DEFAULT-VALUE}.")
     int baud;
 
     @Option(names = "--data-bits", defaultValue = "8", description = "Data bits. Default: ${DEFAULT-VALUE}.")
@@ -31,14 +33,18 @@ public final class Connection {
     @Option(names = "--eol", defaultValue = "LF", description = "What ends each command: CR or LF (send exactly one). Default: ${DEFAULT-VALUE}.")
     LineEnd eol;
 
-    @Option(names = "--timeout", defaultValue = "300", paramLabel = "MS", description = "Reply timeout beyond the reply's wire time, ms. Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--timeout", defaultValue = "300", paramLabel = "MS", converter = CliNumbers.PositiveLong.class, description = "Reply timeout beyond the reply's wire time, ms. Default: ${DEFAULT-VALUE}.")
     long timeoutMillis;
 
-    @Option(names = "--retries", defaultValue = "3", description = "Times a command with no reply is sent again. Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--retries", defaultValue = "3", converter = CliNumbers.NonNegativeInt.class, description = "Times a command with no reply is sent again. Default: ${DEFAULT-VALUE}.")
     int retries;
 
     /** @return the serial settings these options give */
     SerialSettings settings() {
+        if (timeoutMillis > 600_000 || retries > 100) {
+            throw new IllegalArgumentException("--timeout " + timeoutMillis + " ms / --retries " + retries
+                    + ": give at most 600000 ms and 100 retries");
+        }
         if (eol == LineEnd.CRLF) {
             throw new IllegalArgumentException("--eol CRLF: a command ends with exactly one CR or LF; give CR or LF");
         }

@@ -16,7 +16,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;
 
 /** {@code console}: type raw protocol lines, see the replies. */
-@Command(name = "console", description = "Type protocol lines (e.g. N, D,3,3, T,1,G) and see the robot's replies."
+@Command(name = "console", mixinStandardHelpOptions = true, description = "Type protocol lines (e.g. N, D,3,3, T,1,G) and see the robot's replies."
         + " An empty line or end of input quits; the robot is sent D,0,0 on the way out.")
 final class ConsoleCommand implements Callable<Integer> {
     @Spec

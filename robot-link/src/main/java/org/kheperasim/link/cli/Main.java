@@ -1,17 +1,17 @@
 package org.kheperasim.link.cli;
 
-import java.io.IOException;
 import java.io.InputStream;
 import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
-import org.kheperasim.api.spi.ControllerException;
-import org.kheperasim.link.session.SessionException;
+import org.kheperasim.link.tool.ExitCodes;
+import org.kheperasim.link.tool.ToolErrors;
+import org.kheperasim.link.tool.ToolVersion;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Spec;
 
 /** {@code java -jar khepera-link.jar}: drive a real Khepera over a serial port with a simulator controller. */
-@Command(name = "khepera-link", mixinStandardHelpOptions = true, version = "khepera-link 0.1.0",
+@Command(name = "khepera-link", mixinStandardHelpOptions = true, versionProvider = ToolVersion.class,
         description = "Runs the simulator's controllers on a real Khepera over a serial port (or TCP).",
         subcommands = {PortsCommand.class, RunCommand.class, ConsoleCommand.class, CheckCommand.class,
                 BenchCommand.class})
@@ -34,7 +34,7 @@ public final class Main implements Runnable {
      * @param input standard input (the console command reads it)
      * @param out standard output
      * @param err standard error
-     * @return the exit code: 0 ok, 1 the run or check failed, 2 a usage or connection error
+     * @return the exit code ({@link ExitCodes}): 0 ok, 1 the run or check failed, 2 a usage or connection error
      */
     public static int execute(String[] args, InputStream input, PrintWriter out, PrintWriter err) {
         in = input;
@@ -42,15 +42,7 @@ public final class Main implements Runnable {
         cl.setOut(out);
         cl.setErr(err);
         cl.setCaseInsensitiveEnumValuesAllowed(true);
-        cl.setExecutionExceptionHandler((e, line, parsed) -> {
-            if (e instanceof IOException || e instanceof SessionException || e instanceof ControllerException
-                    || e instanceof IllegalArgumentException) {
-                line.getErr().println("error: " + e.getMessage());
-                line.getErr().flush();
-                return 2;
-            }
-            throw e;
-        });
+        ToolErrors.install(cl, "khepera-link");
         int code = cl.execute(args);
         out.flush();
         err.flush();

@@ -9,7 +9,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;
 
 /** {@code ports}: list the serial ports. */
-@Command(name = "ports", description = "List the serial ports this machine has.")
+@Command(name = "ports", mixinStandardHelpOptions = true, description = "List the serial ports this machine has.")
 final class PortsCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;

@@ -2,8 +2,6 @@ package org.kheperasim.link.cli;
 
 import java.io.PrintWriter;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kheperasim.link.robot.ControllerLoader;
@@ -12,6 +10,8 @@ import org.kheperasim.link.robot.RobotBackend;
 import org.kheperasim.link.robot.RobotRun;
 import org.kheperasim.link.robot.RobotSettings;
 import org.kheperasim.link.session.Session;
+import org.kheperasim.link.tool.ControllerOptions;
+import org.kheperasim.link.tool.ExitCodes;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -19,7 +19,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /** {@code run}: a controller drives the robot. */
-@Command(name = "run", description = "Run a controller on the robot until it ends, --seconds pass, or Ctrl-C."
+@Command(name = "run", mixinStandardHelpOptions = true, description = "Run a controller on the robot until it ends, --seconds pass, or Ctrl-C."
         + " The robot is sent D,0,0 on every way out.")
 final class RunCommand implements Callable<Integer> {
     @Spec
@@ -28,16 +28,8 @@ final class RunCommand implements Callable<Integer> {
     @Mixin
     Connection connection;
 
-    @Option(names = "--controller", required = true, paramLabel = "NAME",
-            description = "A bundled controller (WallFollower, Braitenberg, Template) or a class on --classpath.")
-    String controller;
-
-    @Option(names = "--classpath", paramLabel = "DIR_OR_JAR", split = "${sys:path.separator}",
-            description = "Folders and jars with your compiled controller.")
-    List<Path> classpath = new ArrayList<>();
-
-    @Option(names = "--seconds", paramLabel = "T", description = "Stop after T seconds (default: run until the controller ends or Ctrl-C).")
-    double seconds;
+    @Mixin
+    ControllerOptions controllerOptions = new ControllerOptions();
 
     @Option(names = "--record", paramLabel = "FILE", description = "Write every poll cycle to FILE (text).")
     Path record;
@@ -56,7 +48,8 @@ final class RunCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
         RobotSettings settings = RobotSettings.defaults().withMaxSpeed(maxSpeed).withGripper(gripper, parkGripper);
-        Class<?> type = new ControllerLoader(classpath).load(controller);
+        double seconds = controllerOptions.seconds(0);
+        Class<?> type = new ControllerLoader(controllerOptions.classpath()).load(controllerOptions.controller());
         try (Session session = connection.open(out)) {
             Session.Versions v = session.open();
             out.println("robot answers: BIOS " + v.bios() + ", protocol " + v.protocol());
@@ -98,8 +91,8 @@ final class RunCommand implements Callable<Integer> {
             }
             out.flush();
             return switch (r.end()) {
-                case FINISHED, TIME_UP, STOPPED -> 0;
-                case FAILED, LINK_LOST -> 1;
+                case FINISHED, TIME_UP, STOPPED -> ExitCodes.OK;
+                case FAILED, LINK_LOST -> ExitCodes.FAILED;
             };
         }
     }

@@ -9,6 +9,8 @@ import java.net.SocketTimeoutException;
 
 /** A TCP connection to something that speaks the Khepera protocol: the simulator's server, or a serial relay. */
 public final class TcpLink extends ByteLink {
+    private static final System.Logger LOG = System.getLogger(TcpLink.class.getName());
+
     private final Socket socket;
     private final InputStream in;
     private final OutputStream out;
@@ -91,7 +93,8 @@ public final class TcpLink extends ByteLink {
         try {
             socket.close();
         } catch (IOException e) {
-            // nothing left to do with a socket that will not close
+            // Nothing left to do with a socket that will not close; worth a note when tracking down a leak.
+            LOG.log(System.Logger.Level.DEBUG, "closing " + describe() + " failed: " + e);
         }
     }
 }

@@ -136,7 +136,7 @@ public final class KheperaProtocol {
                     + values.size() + " values after '" + head + "'; expected " + expected);
         }
         for (String v : values) {
-            if (command.integerReply() ? !isInteger(v) : v.isEmpty()) {
+            if (command.integerReply() ? !isInteger(v) : v.isEmpty() || !printable(v)) {
                 throw new ProtocolException(Kind.MALFORMED, text, "reply '" + text + "' to command '" + sent
                         + "' has '" + v + "' where " + (command.integerReply() ? "an integer" : "a value") + " belongs");
             }
@@ -159,6 +159,16 @@ public final class KheperaProtocol {
             end--;
         }
         return line.substring(0, end);
+    }
+
+    /** @return true when every character is printable ASCII (no control characters, no line breaks) */
+    private static boolean printable(String s) {
+        for (int i = 0; i < s.length(); i++) {
+            if (s.charAt(i) < 0x20 || s.charAt(i) > 0x7E) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static boolean isInteger(String s) {

@@ -83,11 +83,40 @@ public sealed interface TurretCommand {
      * @param text the command after {@code T,id,}, starting with its letter
      */
     record Raw(String text) implements TurretCommand {
-        /** @param text starts with a letter */
+        /**
+         * @param text starts with an ASCII letter; printable ASCII only, so that it goes on the wire as
+         *     one command (a line break inside would end the command early and send the rest as another)
+         */
         public Raw {
-            if (text == null || text.isEmpty() || !Character.isLetter(text.charAt(0))) {
-                throw new IllegalArgumentException("T: turret command '" + text + "' must start with a letter");
+            if (text == null || text.isEmpty() || !isAsciiLetter(text.charAt(0))) {
+                throw new IllegalArgumentException("T: turret command '" + printable(text)
+                        + "' must start with a letter A-Z or a-z");
             }
+            for (int i = 0; i < text.length(); i++) {
+                char c = text.charAt(i);
+                if (c < 0x20 || c > 0x7E) {
+                    throw new IllegalArgumentException(String.format(java.util.Locale.ROOT,
+                            "T: turret command '%s' has the character U+%04X at position %d; a command is one line"
+                                    + " of printable ASCII (no line breaks or control characters)", printable(text), (int) c, i + 1));
+                }
+            }
+        }
+
+        private static boolean isAsciiLetter(char c) {
+            return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+        }
+
+        /** The text with control and non-ASCII characters shown as U+XXXX, at most 60 characters. */
+        private static String printable(String text) {
+            if (text == null) {
+                return "null";
+            }
+            StringBuilder b = new StringBuilder();
+            for (int i = 0; i < text.length() && b.length() < 60; i++) {
+                char c = text.charAt(i);
+                b.append(c >= 0x20 && c <= 0x7E ? String.valueOf(c) : String.format(java.util.Locale.ROOT, "U+%04X", (int) c));
+            }
+            return b.toString();
         }
 
         public char letter() { return Character.toUpperCase(text.charAt(0)); }

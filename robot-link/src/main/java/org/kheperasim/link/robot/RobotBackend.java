@@ -27,6 +27,8 @@ import org.kheperasim.link.timing.PollStep;
  * nothing more is sent, so {@code D,0,0} is the last thing the robot hears.
  */
 public final class RobotBackend implements RobotPort {
+    private static final System.Logger LOG = System.getLogger(RobotBackend.class.getName());
+
     private final Session session;
     private final RobotSettings settings;
     private final Consumer<String> console;
@@ -243,7 +245,9 @@ public final class RobotBackend implements RobotPort {
                 sentSpeeds = pack(0, 0);
                 return true;
             } catch (SessionException e) {
-                // fall through: say it anyway, the robot may hear without being heard
+                // Say it anyway, below: the robot may hear without being heard.
+                LOG.log(System.Logger.Level.WARNING, "D,0,0 was not acknowledged (" + e.getMessage()
+                        + "); sending it once more without waiting");
             }
         }
         session.sendBlind(Command.SetSpeed.STOP);

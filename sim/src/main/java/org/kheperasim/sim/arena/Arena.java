@@ -30,7 +30,8 @@ public record Arena(String name, double width, double height, List<Pose> robots,
     public static final double ROBOT_RADIUS_MM = 27.5;
 
     /**
-     * @throws IllegalArgumentException if the name is not an identifier, the size is not positive,
+     * @throws IllegalArgumentException if the name is not an identifier, the size is not positive or
+     *                                  beyond {@link ArenaLimits},
      *                                  there is no robot, or two regions share a name
      * @throws NullPointerException     if a list or an element is null
      */
@@ -41,6 +42,7 @@ public record Arena(String name, double width, double height, List<Pose> robots,
         }
         width = Numbers.positive("arena width", width, "mm");
         height = Numbers.positive("arena height", height, "mm");
+        ArenaLimits.checkSize(width, height);
         robots = List.copyOf(robots);
         walls = List.copyOf(walls);
         lights = List.copyOf(lights);

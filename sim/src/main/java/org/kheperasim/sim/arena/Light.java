@@ -41,13 +41,13 @@ public record Light(double x, double y, double radius, double range, double inte
         range = Numbers.positive("light range", range, "mm");
         intensity = Numbers.finite("light intensity", intensity);
         if (intensity < 0) {
-            throw new IllegalArgumentException("light intensity is " + Numbers.format(intensity)
+            throw new IllegalArgumentException("light intensity is " + Numbers.brief(intensity)
                     + "; give 0 or more (1 is the standard lamp)");
         }
         directionDeg = Numbers.finite("light direction", directionDeg);
         spreadDeg = Numbers.finite("light spread", spreadDeg);
         if (!(spreadDeg > 0 && spreadDeg <= 360)) {
-            throw new IllegalArgumentException("light spread is " + Numbers.format(spreadDeg)
+            throw new IllegalArgumentException("light spread is " + Numbers.brief(spreadDeg)
                     + "; give a cone width in degrees greater than 0 and at most 360 (360 = all around)");
         }
     }

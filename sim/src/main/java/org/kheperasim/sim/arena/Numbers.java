@@ -17,6 +17,15 @@ final class Numbers {
     }
 
     /**
+     * A number as a message shows it: the plain form of {@link #format} when it is short, else
+     * the exponent form ({@code 1.0E308}), so that no message grows to hundreds of digits.
+     */
+    static String brief(double d) {
+        String plain = format(d);
+        return plain.length() <= 24 ? plain : Double.toString(d);
+    }
+
+    /**
      * Checks that {@code value} is finite and returns it with negative zero turned into zero, so
      * that a record compares equal to its own written-and-read-back copy.
      *
@@ -39,7 +48,7 @@ final class Numbers {
         finite(what, value);
         if (!(value > 0)) {
             throw new IllegalArgumentException(
-                    what + " is " + format(value) + "; it must be greater than 0 " + unit);
+                    what + " is " + brief(value) + "; it must be greater than 0 " + unit);
         }
         return value;
     }

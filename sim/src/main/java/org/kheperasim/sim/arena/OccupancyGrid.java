@@ -80,7 +80,7 @@ public final class OccupancyGrid {
 
     private void paint(Arena arena) {
         for (Wall w : arena.walls()) {
-            paintWall(w);
+            WallPainter.paint(this, w);
         }
         for (Light l : arena.lights()) {
             paintDisc(l.x(), l.y(), l.radius(), LIGHT);
@@ -326,55 +326,6 @@ public final class OccupancyGrid {
     }
 
     /**
-     * Paints the cells whose centre lies within half the thickness of the wall's centre line,
-     * plus every cell the centre line passes through, so that a wall thinner than a cell still
-     * leaves no gap.
-     */
-    private void paintWall(Wall w) {
-        double half = w.thickness() / 2;
-        int c0 = Math.max(0, col(Math.min(w.x1(), w.x2()) - half));
-        int c1 = Math.min(cols - 1, col(Math.max(w.x1(), w.x2()) + half));
-        int r0 = Math.max(0, row(Math.min(w.y1(), w.y2()) - half));
-        int r1 = Math.min(rows - 1, row(Math.max(w.y1(), w.y2()) + half));
-        for (int r = r0; r <= r1; r++) {
-            for (int c = c0; c <= c1; c++) {
-                if (distanceToSegment(cellCentreX(c), cellCentreY(r), w) <= half) {
-                    paintFloor(c, r, WALL);
-                }
-            }
-        }
-        paintCentreLine(w);
-    }
-
-    /** Paints every cell the wall's centre line passes through, column strip by column strip. */
-    private void paintCentreLine(Wall w) {
-        boolean forward = w.x1() <= w.x2();
-        double xa = forward ? w.x1() : w.x2();
-        double ya = forward ? w.y1() : w.y2();
-        double xb = forward ? w.x2() : w.x1();
-        double yb = forward ? w.y2() : w.y1();
-        int c0 = Math.max(0, col(xa));
-        int c1 = Math.min(cols - 1, col(xb));
-        for (int c = c0; c <= c1; c++) {
-            double ys;
-            double ye;
-            if (xa == xb) {
-                ys = ya;
-                ye = yb;
-            } else {
-                double slope = (yb - ya) / (xb - xa);
-                ys = ya + slope * (Math.max(xa, c * CELL_MM) - xa);
-                ye = ya + slope * (Math.min(xb, (c + 1) * CELL_MM) - xa);
-            }
-            int r0 = Math.max(0, row(Math.min(ys, ye)));
-            int r1 = Math.min(rows - 1, row(Math.max(ys, ye)));
-            for (int r = r0; r <= r1; r++) {
-                paintFloor(c, r, WALL);
-            }
-        }
-    }
-
-    /**
      * Paint a cap onto the floor cells of its disc (a cap that has moved).
      *
      * @param capIndex the cap's index
@@ -435,21 +386,12 @@ public final class OccupancyGrid {
         }
     }
 
-    private void paintFloor(int col, int row, int id) {
+    /** Sets a cell to {@code id} if it is floor; the cell must lie inside the grid. */
+    void paintFloor(int col, int row, int id) {
         int i = row * cols + col;
         if (cells[i] == FLOOR) {
             cells[i] = (short) id;
         }
     }
 
-    /** Distance from a point to the wall's centre-line segment, mm. */
-    private static double distanceToSegment(double px, double py, Wall w) {
-        double vx = w.x2() - w.x1();
-        double vy = w.y2() - w.y1();
-        double t = ((px - w.x1()) * vx + (py - w.y1()) * vy) / (vx * vx + vy * vy);
-        t = Math.max(0, Math.min(1, t));
-        double dx = px - (w.x1() + t * vx);
-        double dy = py - (w.y1() + t * vy);
-        return Math.sqrt(dx * dx + dy * dy);
-    }
 }

@@ -24,8 +24,8 @@ public record Wall(double x1, double y1, double x2, double y2, double thickness)
         y2 = Numbers.finite("wall y2", y2);
         thickness = Numbers.positive("wall thickness", thickness, "mm");
         if (x1 == x2 && y1 == y2) {
-            throw new IllegalArgumentException("wall has both ends at (" + Numbers.format(x1) + ", "
-                    + Numbers.format(y1) + "); give two different end points");
+            throw new IllegalArgumentException("wall has both ends at (" + Numbers.brief(x1) + ", "
+                    + Numbers.brief(y1) + "); give two different end points");
         }
     }
 }

@@ -4,6 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.kheperasim.link.tool.BundledControllers;
+import org.kheperasim.link.tool.CliNumbers;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Cap;
@@ -24,22 +26,24 @@ import picocli.CommandLine.Option;
         description = "Measure simulated seconds per wall second (one warm-up run, then the measured runs).")
 final class BenchCommand implements Callable<Integer> {
 
-    @Option(names = "--arena", defaultValue = "lab", description = "arena (default: ${DEFAULT-VALUE})")
+    @Option(names = "--arena", defaultValue = "lab", completionCandidates = BundledArenas.class,
+            description = "an arena file, or a bundled arena (${COMPLETION-CANDIDATES}) (default: ${DEFAULT-VALUE})")
     String arena;
 
-    @Option(names = "--controller", defaultValue = "Braitenberg", description = "controller (default: ${DEFAULT-VALUE})")
+    @Option(names = "--controller", defaultValue = "Braitenberg", completionCandidates = BundledControllers.class,
+            description = "a bundled controller (${COMPLETION-CANDIDATES}) or a class name (default: ${DEFAULT-VALUE})")
     String controller;
 
-    @Option(names = "--seconds", defaultValue = "600", description = "simulated seconds per run (default: ${DEFAULT-VALUE})")
+    @Option(names = "--seconds", defaultValue = "600", converter = CliNumbers.PositiveSeconds.class, description = "simulated seconds per run (default: ${DEFAULT-VALUE})")
     double seconds;
 
-    @Option(names = "--runs", defaultValue = "5", description = "measured runs (default: ${DEFAULT-VALUE})")
+    @Option(names = "--runs", defaultValue = "5", converter = CliNumbers.PositiveInt.class, description = "measured runs (default: ${DEFAULT-VALUE})")
     int runs;
 
-    @Option(names = "--seed", defaultValue = "1", description = "seed of the first run; each run adds one (default: ${DEFAULT-VALUE})")
+    @Option(names = "--seed", defaultValue = "1", converter = CliNumbers.AnyLong.class, description = "seed of the first run; each run adds one (default: ${DEFAULT-VALUE})")
     long seed;
 
-    @Option(names = "--add-caps", defaultValue = "0", paramLabel = "N",
+    @Option(names = "--add-caps", defaultValue = "0", paramLabel = "N", converter = CliNumbers.NonNegativeInt.class,
             description = "scatter N more caps over the arena's free floor, on an even lattice (default: ${DEFAULT-VALUE})")
     int addCaps;
 

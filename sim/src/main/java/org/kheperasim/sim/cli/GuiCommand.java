@@ -4,6 +4,10 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
+import org.kheperasim.link.tool.BundledControllers;
+import org.kheperasim.link.tool.CliNumbers;
+import org.kheperasim.link.tool.ExitCodes;
+import org.kheperasim.link.tool.ToolErrors;
 import org.kheperasim.sim.gui.GuiLauncher;
 import org.kheperasim.sim.gui.GuiOptions;
 import picocli.CommandLine.Command;
@@ -16,18 +20,20 @@ import picocli.CommandLine.Option;
 final class GuiCommand implements Callable<Integer> {
 
     @Option(names = "--arena", paramLabel = "FILE", defaultValue = "maze",
-            description = "an arena file, or a bundled arena (lab, maze, two-rooms; see list) (default: ${DEFAULT-VALUE})")
+            completionCandidates = BundledArenas.class,
+            description = "an arena file, or a bundled arena (${COMPLETION-CANDIDATES}) (default: ${DEFAULT-VALUE})")
     String arena;
 
     @Option(names = "--controller", paramLabel = "NAME", defaultValue = "WallFollower",
-            description = "a bundled controller or a class name on --classpath (default: ${DEFAULT-VALUE})")
+            completionCandidates = BundledControllers.class,
+            description = "a bundled controller (${COMPLETION-CANDIDATES}) or a class name on --classpath (default: ${DEFAULT-VALUE})")
     String controller;
 
     @Option(names = "--classpath", paramLabel = "DIR_OR_JAR", split = "${sys:path.separator}",
             description = "folders and jars with your compiled controller classes")
     List<Path> classpath = new ArrayList<>();
 
-    @Option(names = "--seed", paramLabel = "N", description = "the runs' seed (default: a new one each run, shown in the console)")
+    @Option(names = "--seed", paramLabel = "N", converter = CliNumbers.AnyLong.class, description = "the runs' seed (default: a new one each run, shown in the console)")
     Long seed;
 
     @Override
@@ -40,8 +46,8 @@ final class GuiCommand implements Callable<Integer> {
             GuiLauncher.launch(options);
             return 0;
         } catch (GuiLauncher.NoDisplayException e) {
-            System.err.println("khepera-sim: " + e.getMessage());
-            return 3;
+            System.err.println(ToolErrors.prefix("khepera-sim") + e.getMessage());
+            return ExitCodes.BAD_INPUT;
         }
     }
 }

@@ -1,5 +1,6 @@
 package org.kheperasim.sim.cli;
 
+import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.run.ControllerCatalog;
 import picocli.CommandLine.Command;
 
@@ -8,7 +9,7 @@ import picocli.CommandLine.Command;
 final class ListCommand implements Runnable {
     @Override
     public void run() {
-        System.out.println("arenas:      lab maze");
+        System.out.println("arenas:      " + String.join(" ", ArenaFormat.bundledNames()));
         System.out.println("controllers: " + String.join(" ", ControllerCatalog.bundled()));
     }
 }

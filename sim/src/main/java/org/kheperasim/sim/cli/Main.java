@@ -1,5 +1,7 @@
 package org.kheperasim.sim.cli;
 
+import org.kheperasim.link.tool.ToolErrors;
+import org.kheperasim.link.tool.ToolVersion;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 
@@ -7,7 +9,7 @@ import picocli.CommandLine.Command;
  * The simulator's entry point: {@code java -jar khepera-sim.jar <command>}. With no command it
  * opens the window with {@code maze} loaded and {@code WallFollower} chosen.
  */
-@Command(name = "khepera-sim", mixinStandardHelpOptions = true, version = "khepera-sim 0.1.0",
+@Command(name = "khepera-sim", mixinStandardHelpOptions = true, versionProvider = ToolVersion.class,
         description = "A deterministic Khepera robot simulator. Runs a controller class in an arena.",
         subcommands = {GuiCommand.class, GuiBenchCommand.class, RunCommand.class, BenchCommand.class, SettingsCommand.class,
             ListCommand.class, ServeCommand.class,
@@ -25,7 +27,7 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
 
     /** @return a command line ready to execute, with the project's error handling */
     public static CommandLine commandLine() {
-        return withErrorHandling(new CommandLine(new Main()));
+        return ToolErrors.install(new CommandLine(new Main()), "khepera-sim");
     }
 
     /**
@@ -44,7 +46,7 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
                 if (c != null && c.name().equals(args[0]) && type != CommandLine.HelpCommand.class) {
                     CommandLine top = new CommandLine(new Lean());
                     top.addSubcommand(c.name(), type);
-                    return withErrorHandling(top);
+                    return ToolErrors.install(top, "khepera-sim");
                 }
             }
         }
@@ -52,7 +54,7 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
     }
 
     /** The top-level command when only one subcommand is built. */
-    @Command(name = "khepera-sim", mixinStandardHelpOptions = true, version = "khepera-sim 0.1.0")
+    @Command(name = "khepera-sim", mixinStandardHelpOptions = true, versionProvider = ToolVersion.class)
     static final class Lean implements java.util.concurrent.Callable<Integer> {
         @Override
         public Integer call() {
@@ -61,17 +63,6 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
     }
 
     private static final Object[] SUBCOMMANDS = Main.class.getAnnotation(Command.class).subcommands();
-
-    private static CommandLine withErrorHandling(CommandLine cl) {
-        cl.setExecutionExceptionHandler((e, cmd, parsed) -> {
-            cmd.getErr().println("khepera-sim: " + e.getMessage());
-            if (e.getCause() != null && System.getenv("KHEPERA_DEBUG") != null) {
-                e.printStackTrace(cmd.getErr());
-            }
-            return 2;
-        });
-        return cl;
-    }
 
     /**
      * Runs the command line. The process exit status is the only way a script learns whether the

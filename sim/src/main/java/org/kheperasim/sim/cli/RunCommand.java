@@ -2,14 +2,16 @@ package org.kheperasim.sim.cli;
 
 import java.io.PrintStream;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import org.kheperasim.link.tool.CliNumbers;
+import org.kheperasim.link.tool.ControllerOptions;
+import org.kheperasim.link.tool.ExitCodes;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.host.ConsoleLine;
 import org.kheperasim.sim.host.ControllerHost;
 import org.kheperasim.sim.host.ControllerStatus;
+import org.kheperasim.sim.run.EditLog;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
 import picocli.CommandLine.Command;
@@ -19,27 +21,25 @@ import picocli.CommandLine.Option;
 /** {@code run}: one headless run, with a one-line result or a JSON object. */
 @Command(name = "run", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Run a controller in an arena headless and print the result.",
-            "Exit status: 0 when the controller ran to the end, 1 when it threw, hung, broke a rule (System.exit, a forbidden call) or ran out of memory, 2 for bad input."})
+            "A controller fails the run (exit status 1) when it throws, hangs, breaks a rule (System.exit, a"
+                    + " forbidden call: see docs/controller-rules.md) or runs out of memory.",
+            "With --trace the trace is written as the run goes (whole lines, at least every second), so a run"
+                    + " that is killed leaves a readable trace; on SIGTERM (kill, Ctrl-C) the run stops, the trace is"
+                    + " finished and the result line printed."})
 final class RunCommand implements Callable<Integer> {
+    /** Simulated seconds when --seconds is not given. */
+    static final double DEFAULT_SECONDS = 600;
 
-    @Option(names = "--arena", required = true, paramLabel = "FILE",
-            description = "an arena file, or a bundled arena (lab, maze, two-rooms; see list)")
+    @Option(names = "--arena", required = true, paramLabel = "FILE", completionCandidates = BundledArenas.class,
+            description = "an arena file, or a bundled arena (${COMPLETION-CANDIDATES}; see list)")
     String arena;
 
-    @Option(names = "--controller", required = true, paramLabel = "NAME",
-            description = "a bundled controller (WallFollower, Braitenberg, Template) or a class name on --classpath")
-    String controller;
+    @Mixin
+    ControllerOptions controllerOptions = new ControllerOptions();
 
-    @Option(names = "--classpath", paramLabel = "DIR_OR_JAR", split = "${sys:path.separator}",
-            description = "folders and jars with your compiled controller classes, as with java -cp")
-    List<Path> classpath = new ArrayList<>();
-
-    @Option(names = "--seed", paramLabel = "N", description = "the run's seed (default: a new one, printed)")
+    @Option(names = "--seed", paramLabel = "N", converter = CliNumbers.AnyLong.class,
+            description = "the run's seed (default: a new one, printed)")
     Long seed;
-
-    @Option(names = "--seconds", paramLabel = "T", defaultValue = "600",
-            description = "simulated seconds to run (default: ${DEFAULT-VALUE})")
-    double seconds;
 
     @Option(names = "--trace", paramLabel = "FILE", description = "write a trace of the run (text, one line per sample)")
     Path trace;
@@ -48,17 +48,15 @@ final class RunCommand implements Callable<Integer> {
             description = "apply the arena edits recorded in the window (run.edits) at their simulated times, replaying that run")
     Path edits;
 
-    @Option(names = "--sample-ms", paramLabel = "MS", defaultValue = "50",
-            description = "trace sample period, ms (default: ${DEFAULT-VALUE})")
+    @Option(names = "--sample-ms", paramLabel = "MS", defaultValue = "50", converter = CliNumbers.PositiveLong.class,
+            description = "trace sample period, whole ms (default: ${DEFAULT-VALUE})")
     long sampleMillis;
-
-
 
     @Mixin
     SettingsOptions settingsOptions = new SettingsOptions();
 
-    @Option(names = "--hang-timeout", paramLabel = "SECONDS", defaultValue = "5",
-            description = "real seconds without an API call after which a controller counts as hung (default: ${DEFAULT-VALUE})")
+    @Option(names = "--hang-timeout", paramLabel = "SECONDS", defaultValue = "5", converter = CliNumbers.PositiveSeconds.class,
+            description = "real seconds without an API call after which a controller counts as hung, > 0 (default: ${DEFAULT-VALUE})")
     double hangTimeout;
 
     @Option(names = "--json", description = "print one JSON object with the result (messages go to standard error)")
@@ -73,9 +71,9 @@ final class RunCommand implements Callable<Integer> {
         PrintStream info = json ? System.err : System.out;
         Simulation.Builder run = Simulation.builder()
                 .arena(arena)
-                .controller(controller)
-                .classpath(classpath)
-                .seconds(seconds)
+                .controller(controllerOptions.controller())
+                .classpath(controllerOptions.classpath())
+                .seconds(controllerOptions.seconds(DEFAULT_SECONDS))
                 .settings(settings)
                 .sampleMillis(sampleMillis)
                 .hostOptions(ControllerHost.Options.defaults().withHangTimeout((long) (hangTimeout * 1e9)))
@@ -93,21 +91,21 @@ final class RunCommand implements Callable<Integer> {
             run.trace(trace);
         }
         if (edits != null) {
-            run.edits(org.kheperasim.sim.run.EditLog.load(edits));
+            run.edits(EditLog.load(edits));
         }
         info.println("seed " + run.seed());
-        RunResult result = run.run();
-        if (json) {
-            System.out.println(toJson(result));
-        } else {
-            System.out.println(summary(result));
-        }
+        return StopOnSignal.run(run, hangTimeout, this::report);
+    }
+
+    private int report(RunResult result) {
+        System.out.println(json ? toJson(result) : summary(result));
+        System.out.flush();
         for (RunResult.RobotResult r : result.robots()) {
             if (r.status().failed()) {
-                return 1;
+                return ExitCodes.FAILED;
             }
         }
-        return 0;
+        return ExitCodes.OK;
     }
 
     static String summary(RunResult result) {

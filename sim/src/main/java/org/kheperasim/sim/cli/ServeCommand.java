@@ -7,6 +7,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import org.kheperasim.link.tool.CliNumbers;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
@@ -38,11 +39,11 @@ final class ServeCommand implements Callable<Integer> {
     String bind;
 
 
-    @Option(names = "--speed", paramLabel = "X", defaultValue = "1",
+    @Option(names = "--speed", paramLabel = "X", defaultValue = "1", converter = CliNumbers.PositiveDecimal.class,
             description = "simulated seconds per real second (default ${DEFAULT-VALUE}: the real robot's pace; reply timing scales too)")
     double speed;
 
-    @Option(names = "--seed", paramLabel = "N", description = "the seed of the robot's noise (default: a new one, printed)")
+    @Option(names = "--seed", paramLabel = "N", converter = CliNumbers.AnyLong.class, description = "the seed of the robot's noise (default: a new one, printed)")
     Long seed;
 
 
@@ -57,7 +58,7 @@ final class ServeCommand implements Callable<Integer> {
             description = "let a client go after SECONDS without a command, so none holds the robot forever; 0 = never (default: ${DEFAULT-VALUE})")
     double idleTimeout;
 
-    @Option(names = "--seconds", paramLabel = "T", description = "stop after T real seconds (default: run until Ctrl-C)")
+    @Option(names = "--seconds", paramLabel = "T", converter = CliNumbers.PositiveSeconds.class, description = "stop after T real seconds (default: run until Ctrl-C)")
     Double seconds;
 
     @Override

@@ -3,7 +3,6 @@ package org.kheperasim.sim.edit;
 import java.util.List;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.arena.ArenaFormatException;
 import org.kheperasim.sim.arena.Light;
 import org.kheperasim.sim.arena.Wall;
 import org.kheperasim.sim.engine.RobotView;
@@ -28,7 +27,7 @@ public final class ArenaCheck {
     public static String problem(Arena edited, Arena before, Arena running, List<RobotView> live) {
         try {
             ArenaFormat.parse(ArenaFormat.write(edited), "arena");
-        } catch (ArenaFormatException | IllegalArgumentException e) {
+        } catch (IllegalArgumentException e) { // ArenaFormatException is one
             String m = e.getMessage();
             return m.replaceFirst("^arena:\\d+: ", "");
         }

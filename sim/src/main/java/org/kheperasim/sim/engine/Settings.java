@@ -100,12 +100,12 @@ public final class Settings {
         String v = value.trim();
         switch (def.kind) {
             case NUMBER -> {
-                double d;
-                try {
-                    d = Double.parseDouble(v);
-                } catch (NumberFormatException e) {
-                    throw new IllegalArgumentException("setting " + key + "=" + value + ": not a number");
+                // Plain decimals only: Double.parseDouble would also take 0x1p10, 1d, NaN and Infinity.
+                if (!v.matches("[+-]?+(\\d++(\\.\\d*+)?+|\\.\\d++)([eE][+-]?+\\d++)?+")) {
+                    throw new IllegalArgumentException("setting " + key + "=" + value + ": not a decimal number;"
+                            + " write it like 12, -0.5 or 1.5e3");
                 }
+                double d = Double.parseDouble(v);
                 if (!(d >= def.min && d <= def.max)) {
                     throw new IllegalArgumentException("setting " + key + "=" + value + ": must lie in "
                             + fmt(def.min) + ".." + fmt(def.max) + " (" + def.meaning + ")");

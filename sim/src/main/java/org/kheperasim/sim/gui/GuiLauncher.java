@@ -7,6 +7,8 @@ import javax.swing.UIManager;
 
 /** Opens the simulator's window: the command line's entry point into the GUI. */
 public final class GuiLauncher {
+    private static final System.Logger LOG = System.getLogger(GuiLauncher.class.getName());
+
     private static volatile CompletableFuture<MainWindow> last = new CompletableFuture<>();
 
     private GuiLauncher() {
@@ -47,7 +49,7 @@ public final class GuiLauncher {
                 try {
                     UIManager.setLookAndFeel(UIManager.getCrossPlatformLookAndFeelClassName());
                 } catch (ReflectiveOperationException | javax.swing.UnsupportedLookAndFeelException e) {
-                    // keep the default look
+                    LOG.log(System.Logger.Level.DEBUG, "keeping the default look and feel: " + e);
                 }
                 MainWindow w = new MainWindow(options);
                 w.frame().setVisible(true);

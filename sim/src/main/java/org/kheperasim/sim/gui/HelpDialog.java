@@ -17,6 +17,8 @@ import javax.swing.ListSelectionModel;
 
 /** The manual inside the window: the {@code docs/} pages, copied into the jar under {@code help/}. */
 final class HelpDialog {
+    private static final System.Logger LOG = System.getLogger(HelpDialog.class.getName());
+
     /** The pages, in reading order. */
     static final List<String> PAGES = List.of("quick-start.md", "gui.md", "arena-format.md", "simulation-model.md");
 
@@ -28,6 +30,7 @@ final class HelpDialog {
         try (InputStream in = HelpDialog.class.getClassLoader().getResourceAsStream("help/" + page)) {
             return in == null ? null : new String(in.readAllBytes(), StandardCharsets.UTF_8);
         } catch (IOException e) {
+            LOG.log(System.Logger.Level.WARNING, "cannot read the help page " + page + " from the jar: " + e);
             return null;
         }
     }

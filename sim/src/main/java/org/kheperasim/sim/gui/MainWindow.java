@@ -71,6 +71,8 @@ import org.kheperasim.sim.run.Simulation;
  * snapshot on a Swing timer and sends it commands, so the engine never waits on the screen.
  */
 public final class MainWindow {
+    private static final System.Logger LOG = System.getLogger(MainWindow.class.getName());
+
     /** Speeds offered, simulated seconds per real second; the last is as fast as possible. */
     static final double[] SPEEDS = {0.25, 0.5, 1, 2, 4, PacedRunner.MAX_SPEED};
     /** Frame period while paced, ms: a little faster than 60 frames/s, so the screen keeps up. */
@@ -927,6 +929,7 @@ public final class MainWindow {
                         .map(f -> p.relativize(f).toString().replace(java.io.File.separatorChar, '.').replaceFirst("\\.class$", ""))
                         .findFirst().orElse("Robot");
             } catch (IOException e) {
+                LOG.log(System.Logger.Level.DEBUG, "cannot look for classes in " + p + ", guessing Robot: " + e);
                 return "Robot";
             }
         }

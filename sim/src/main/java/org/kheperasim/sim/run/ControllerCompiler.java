@@ -29,6 +29,8 @@ import org.kheperasim.api.Controller;
  * folder (a fresh class loader each time, so a recompiled class is picked up).
  */
 public final class ControllerCompiler {
+    private static final System.Logger LOG = System.getLogger(ControllerCompiler.class.getName());
+
     private static final Pattern PACKAGE = Pattern.compile("^\\s*package\\s+([\\w.]+)\\s*;", Pattern.MULTILINE);
 
     /**
@@ -122,7 +124,8 @@ public final class ControllerCompiler {
         try {
             entries.add(Path.of(Controller.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString());
         } catch (URISyntaxException | RuntimeException e) {
-            // fall back to java.class.path below
+            // Fall back to java.class.path below.
+            LOG.log(System.Logger.Level.DEBUG, "cannot locate the API classes' jar, using java.class.path: " + e);
         }
         for (String e : System.getProperty("java.class.path", "").split(File.pathSeparator)) {
             if (!e.isBlank()) {

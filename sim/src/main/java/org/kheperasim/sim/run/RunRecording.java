@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Locale;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.files.AtomicFiles;
 
 /**
  * A run recording: the folder that replays a run exactly, with the start arena, the stamped edits,
@@ -41,7 +42,7 @@ public final class RunRecording {
                 cmd.append(String.join(File.pathSeparator, classpath.stream().map(p -> p.toAbsolutePath().toString()).toList()));
             }
             settings.overrides().forEach((k, v) -> cmd.append(" --set ").append(k).append('=').append(v));
-            Files.writeString(dir.resolve("replay.txt"), "# Replays the run exactly; add --seconds T for how long (the window ran to "
+            AtomicFiles.write(dir.resolve("replay.txt"), "# Replays the run exactly; add --seconds T for how long (the window ran to "
                     + String.format(Locale.ROOT, "%.3f", reachedSeconds) + " s) and --trace FILE for the trace:\n" + cmd + "\n");
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write the recording in " + dir + ": " + e.getMessage(), e);

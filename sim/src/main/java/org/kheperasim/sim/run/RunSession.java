@@ -123,28 +123,6 @@ public final class RunSession implements AutoCloseable {
     }
 
     /**
-     * Run to {@code endNanos}, applying the stamped edits of {@code replay} at their times on the
-     * way (edits stamped after {@code endNanos} are left for a later call).
-     *
-     * @param endNanos simulated time, ns
-     * @param replay recorded edits, in time order
-     * @return true while the run can go on
-     */
-    public boolean runTo(long endNanos, EditLog replay) {
-        for (EditLog.Edit e : replay.edits()) {
-            if (e.timeNanos() < engine.timeNanos() || e.timeNanos() > endNanos) {
-                continue;
-            }
-            runTo(e.timeNanos());
-            if (engine.timeNanos() != e.timeNanos()) {
-                return false;
-            }
-            edit(e.arena());
-        }
-        return runTo(endNanos);
-    }
-
-    /**
      * Apply an arena edit now, between ticks, and record it with the simulated time.
      *
      * @param edited the edited arena (same size)

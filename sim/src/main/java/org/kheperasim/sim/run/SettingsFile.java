@@ -2,12 +2,12 @@ package org.kheperasim.sim.run;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.Map;
 import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.files.AtomicFiles;
+import org.kheperasim.sim.files.TextFiles;
 
 /**
  * Settings as a text file a person can read: {@code key=value} lines (only what differs from the
@@ -17,6 +17,8 @@ import org.kheperasim.sim.engine.Settings;
 public final class SettingsFile {
     /** File name extension, with the dot. */
     public static final String EXTENSION = ".settings";
+    /** Largest settings file, bytes. */
+    public static final long MAX_FILE_BYTES = 1L << 20;
 
     private SettingsFile() {
     }
@@ -48,11 +50,11 @@ public final class SettingsFile {
      * @param text a settings file's text
      * @param source how errors name it
      * @return the settings
-     * @throws IllegalArgumentException naming {@code source:line} and what is wrong
+     * @throws SettingsFileException naming {@code source:line}, what is wrong and the fix
      */
     public static Settings parse(String text, String source) {
         Settings s = Settings.defaults();
-        String[] lines = text.split("\\R");
+        String[] lines = (text.startsWith("\uFEFF") ? text.substring(1) : text).split("\\R");
         for (int i = 0; i < lines.length; i++) {
             String line = lines[i].strip();
             if (line.isEmpty() || line.startsWith("#")) {
@@ -61,33 +63,29 @@ public final class SettingsFile {
             try {
                 s = s.with(line);
             } catch (IllegalArgumentException e) {
-                throw new IllegalArgumentException(source + ":" + (i + 1) + ": " + e.getMessage(), e);
+                throw new SettingsFileException(source, i + 1, e.getMessage());
             }
         }
         return s;
     }
 
-    /** @param file a settings file @return the settings */
+    /**
+     * @param file a settings file
+     * @return the settings
+     * @throws SettingsFileException naming the file and line at fault
+     * @throws UncheckedIOException when the file cannot be read
+     */
     public static Settings load(Path file) {
-        try {
-            return parse(Files.readString(file, StandardCharsets.UTF_8), file.toString());
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot read settings " + file + ": " + e.getMessage(), e);
-        }
+        String source = file.toString();
+        return parse(TextFiles.readUtf8(file, MAX_FILE_BYTES, "settings file",
+                (line, what) -> new SettingsFileException(source, line, what)), source);
     }
 
-    /** @param settings what to save @param file where, atomically */
+    /** @param settings what to save @param file where, atomically ({@link AtomicFiles}) */
     public static void save(Settings settings, Path file) {
         try {
-            Path parent = file.toAbsolutePath().getParent();
-            Files.createDirectories(parent);
-            Path temp = Files.createTempFile(parent, file.getFileName().toString(), ".part");
-            Files.writeString(temp, write(settings), StandardCharsets.UTF_8);
-            try {
-                Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-            } catch (java.nio.file.AtomicMoveNotSupportedException e) {
-                Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING);
-            }
+            Files.createDirectories(file.toAbsolutePath().getParent());
+            AtomicFiles.write(file, write(settings));
         } catch (IOException e) {
             throw new UncheckedIOException("cannot save settings " + file + ": " + e.getMessage(), e);
         }

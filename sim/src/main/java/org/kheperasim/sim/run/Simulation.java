@@ -3,13 +3,13 @@ package org.kheperasim.sim.run;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.io.Writer;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
+import java.util.function.BooleanSupplier;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Engine;
@@ -17,6 +17,7 @@ import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SnapshotListener;
 import org.kheperasim.sim.host.ConsoleSink;
 import org.kheperasim.sim.host.ControllerHost;
+import org.kheperasim.sim.trace.LineFileWriter;
 
 /**
  * One headless run: an arena, a controller on every robot start of the arena, a seed, settings and
@@ -24,6 +25,9 @@ import org.kheperasim.sim.host.ControllerHost;
  * here, so they run the same thing.
  */
 public final class Simulation {
+    /** Simulated time between two looks at the stop request, ns. */
+    static final long CHUNK_NANOS = 100 * Engine.TICK_NANOS;
+
     private final Builder b;
 
     private Simulation(Builder b) {
@@ -55,6 +59,7 @@ public final class Simulation {
         private ControllerHost.Options hostOptions = ControllerHost.Options.defaults();
         private final List<Subscription> listeners = new ArrayList<>();
         private EditLog edits = new EditLog();
+        private BooleanSupplier stop = () -> false;
 
         /** @param arena the arena @return this */
         public Builder arena(Arena arena) {
@@ -100,7 +105,11 @@ public final class Simulation {
             return this;
         }
 
-        /** @param file write the trace there (atomically: a temporary file renamed at the end) @return this */
+        /**
+         * @param file write the trace there: under its final name, whole lines at least every wall-clock
+         *     second ({@link LineFileWriter}), so a run that is killed leaves a readable trace up to then
+         * @return this
+         */
         public Builder trace(Path file) {
             this.tracePath = file;
             return this;
@@ -114,8 +123,9 @@ public final class Simulation {
 
         /** @param millis trace sample period, whole ms @return this */
         public Builder sampleMillis(long millis) {
-            if (millis < 1) {
-                throw new IllegalArgumentException("trace sample period " + millis + " ms must be at least 1 ms");
+            if (millis < 1 || millis > 3_600_000) {
+                throw new IllegalArgumentException("trace sample period " + millis + " ms must lie in 1..3600000 ms"
+                        + " (one sample an hour at most)");
             }
             this.sampleMillis = millis;
             return this;
@@ -153,11 +163,23 @@ public final class Simulation {
 
         /**
          * @param edits arena edits to apply at their simulated times, as recorded by a run in the
-         *     window ({@link RunSession#edits()}); the run then replays that run exactly
+         *     window ({@link RunSession#edits()}); the run then replays that run exactly. Every edit must
+         *     fall within the run ({@link EditLog#checkWithin}), else {@link #run()} refuses it.
          * @return this
          */
         public Builder edits(EditLog edits) {
             this.edits = Objects.requireNonNull(edits);
+            return this;
+        }
+
+        /**
+         * @param stop asked between chunks of simulated time (every 100 ms); when it answers true the run
+         *     ends there, as if that were its end (e.g. on SIGTERM): the trace is finished and the result is
+         *     the run so far
+         * @return this
+         */
+        public Builder stopWhen(BooleanSupplier stop) {
+            this.stop = Objects.requireNonNull(stop);
             return this;
         }
 
@@ -186,51 +208,64 @@ public final class Simulation {
 
     private RunResult execute() {
         long seed = b.seed();
+        long endNanos = (long) StrictMath.rint(b.seconds * 1e9);
+        b.edits.checkWithin(endNanos);
         RunSession session = new RunSession(b.arena, b.controllerName, new ControllerCatalog(b.classpath), seed,
                 b.settings, b.console, b.hostOptions);
         for (Subscription l : b.listeners) {
             session.addListener(l.listener(), l.periodNanos());
         }
-        Path traceTemp = null;
         try {
             if (b.tracePath != null || b.traceWriter != null) {
                 Writer w = b.traceWriter;
                 if (w == null) {
                     Path parent = b.tracePath.toAbsolutePath().getParent();
                     Files.createDirectories(parent);
-                    traceTemp = Files.createTempFile(parent, b.tracePath.getFileName().toString(), ".part");
-                    w = Files.newBufferedWriter(traceTemp, StandardCharsets.UTF_8);
+                    w = LineFileWriter.open(b.tracePath);
                 }
                 session.trace(w, b.sampleMillis);
             }
         } catch (IOException e) {
+            session.close();
             throw new UncheckedIOException("cannot write the trace " + b.tracePath + ": " + e.getMessage(), e);
         }
 
-        long endNanos = (long) StrictMath.rint(b.seconds * 1e9);
         long wallStart = System.nanoTime();
         try {
-            session.runTo(endNanos, b.edits);
+            replay(session, endNanos);
         } finally {
             session.close();
-            if (traceTemp != null) {
-                moveIntoPlace(traceTemp, b.tracePath);
-            }
         }
         double wall = (System.nanoTime() - wallStart) / 1e9;
         return session.result(wall);
     }
 
-    private static void moveIntoPlace(Path temp, Path target) {
-        try {
-            try {
-                Files.move(temp, target, java.nio.file.StandardCopyOption.REPLACE_EXISTING,
-                        java.nio.file.StandardCopyOption.ATOMIC_MOVE);
-            } catch (java.nio.file.AtomicMoveNotSupportedException e) {
-                Files.move(temp, target, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+    /** Runs to the end, applying each recorded edit at its time; stops early when asked to. */
+    private void replay(RunSession session, long endNanos) {
+        for (EditLog.Edit e : b.edits.edits()) {
+            if (!advance(session, e.timeNanos())) {
+                return;
             }
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot move the trace into place at " + target + ": " + e.getMessage(), e);
+            session.edit(e.arena());
         }
+        advance(session, endNanos);
+    }
+
+    /**
+     * Runs to {@code target} in chunks of {@link #CHUNK_NANOS}, so that a request to stop (a
+     * signal) is seen soon; chunk boundaries never change what is computed.
+     *
+     * @return true when the run reached {@code target} and can go on
+     */
+    private boolean advance(RunSession session, long target) {
+        while (session.timeNanos() < target) {
+            if (b.stop.getAsBoolean()) {
+                return false;
+            }
+            if (!session.runTo(Math.min(target, session.timeNanos() + CHUNK_NANOS))) {
+                return false;
+            }
+        }
+        return session.timeNanos() == target;
     }
 }

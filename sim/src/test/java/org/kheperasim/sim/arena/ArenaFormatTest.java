@@ -32,13 +32,13 @@ class ArenaFormatTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"lab", "maze"})
+    @ValueSource(strings = {"lab", "maze", "two-rooms"})
     void bundledArenasRoundTrip(String name) {
         assertRoundTrip(ArenaFormat.loadBundled(name));
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"lab", "maze"})
+    @ValueSource(strings = {"lab", "maze", "two-rooms"})
     void repositoryFilesAreTheBundledOnes(String name) {
         Path file = Path.of(System.getProperty("kheperasim.repoRoot", ".."), "arenas", name + ".arena");
         assertEquals(ArenaFormat.loadBundled(name), ArenaFormat.load(file));
@@ -228,7 +228,7 @@ class ArenaFormatTest {
                 && e.getMessage().contains("path"), e.getMessage());
         assertThrows(IllegalArgumentException.class, () -> ArenaFormat.loadBundled("nowhere"));
         assertThrows(IllegalArgumentException.class, () -> ArenaFormat.loadBundled("../pom"));
-        assertEquals(List.of("lab", "maze"), ArenaFormat.bundledNames());
+        assertEquals(List.of("lab", "maze", "two-rooms"), ArenaFormat.bundledNames());
     }
 
     @Test

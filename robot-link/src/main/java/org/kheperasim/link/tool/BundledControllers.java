@@ -1,0 +1,12 @@
+package org.kheperasim.link.tool;
+
+import java.util.Iterator;
+import org.kheperasim.api.spi.ControllerNames;
+
+/** The bundled controllers' names, for {@code --help} ({@code ${COMPLETION-CANDIDATES}}) and shell completion. */
+public final class BundledControllers implements Iterable<String> {
+    @Override
+    public Iterator<String> iterator() {
+        return ControllerNames.bundled(BundledControllers.class.getClassLoader()).iterator();
+    }
+}

@@ -1,0 +1,7 @@
+/**
+ * Files a person reads and writes: one atomic save ({@link org.kheperasim.sim.files.AtomicFiles}) for
+ * every file the simulator saves, bounded strict UTF-8 reading ({@link org.kheperasim.sim.files.TextFiles}),
+ * and the common type of the readers' errors ({@link org.kheperasim.sim.files.InputFileException}), which
+ * always name the file and the line at fault.
+ */
+package org.kheperasim.sim.files;
