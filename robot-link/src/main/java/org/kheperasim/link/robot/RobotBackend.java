@@ -47,7 +47,7 @@ public final class RobotBackend implements RobotPort {
     private long foreignSeen;
     /** Boot banners already handled, and what the controller's counters carry over a reboot. */
     private long bootsSeen;
-    private boolean rebooted;
+    private long bootsAtCounters;
     private int offsetLeft;
     private int offsetRight;
     private volatile boolean objectPresent;
@@ -144,9 +144,11 @@ public final class RobotBackend implements RobotPort {
             case LIGHT -> light = session.exchange(new Command.ReadLight()).ints();
             case ENCODERS -> {
                 int[] v = session.exchange(new Command.ReadPositionCounters()).ints();
-                if (rebooted) {
-                    // The robot's counters restarted at 0: carry on from where the controller was.
-                    rebooted = false;
+                long boots = session.boots();
+                if (boots != bootsAtCounters) {
+                    // The robot rebooted since the counters were last read (perhaps during this very
+                    // exchange): they restarted at 0, so carry on from where the controller was.
+                    bootsAtCounters = boots;
                     offsetLeft = leftPosition - v[0];
                     offsetRight = rightPosition - v[1];
                 }
@@ -177,7 +179,6 @@ public final class RobotBackend implements RobotPort {
         long boots = session.boots();
         if (boots != bootsSeen) {
             bootsSeen = boots;
-            rebooted = true;
             console.accept("warning: the robot rebooted during the run (its boot banner arrived on "
                     + session.link().describe() + "): it had stopped its wheels and restarted its position counters"
                     + " at 0. The run goes on: the speeds are sent again, and the positions the controller reads"
