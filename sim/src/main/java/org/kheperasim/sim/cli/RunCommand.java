@@ -41,6 +41,10 @@ final class RunCommand implements Callable<Integer> {
             description = "the run's seed (default: a new one, printed)")
     Long seed;
 
+    @Option(names = "--trusted",
+            description = "run the controller uncontained: allow files, the network, reflection and System.exit (only for code you trust; see docs/controller-rules.md)")
+    boolean trusted;
+
     @Option(names = "--trace", paramLabel = "FILE", description = "write a trace of the run (text, one line per sample)")
     Path trace;
 
@@ -73,6 +77,7 @@ final class RunCommand implements Callable<Integer> {
                 .arena(arena)
                 .controller(controllerOptions.controller())
                 .classpath(controllerOptions.classpath())
+                .trusted(trusted)
                 .seconds(controllerOptions.seconds(DEFAULT_SECONDS))
                 .settings(settings)
                 .sampleMillis(sampleMillis)

@@ -112,6 +112,8 @@ public final class MainWindow {
     private double speed = 1;
     private Settings runSettings = Settings.defaults();
     private volatile PacedRunner runner;
+    /** Run the controller uncontained (Controller > Trust this controller); off by default. */
+    private boolean trusted;
     // "Serve this robot": a simulated robot answering the Khepera protocol over TCP, in real time.
     private volatile ServedRobot served;
     private ProtocolServer server;
@@ -401,7 +403,17 @@ public final class MainWindow {
         run.addSeparator();
         addAll(run, "serve");
         bar.add(run);
-        bar.add(menu("Controller", KeyEvent.VK_C, "loadClasses", "openJava", "reload"));
+        JMenu controllerMenu = menu("Controller", KeyEvent.VK_C, "loadClasses", "openJava", "reload");
+        controllerMenu.addSeparator();
+        JCheckBoxMenuItem trust = new JCheckBoxMenuItem("Trust this controller (allow files, network, reflection)", trusted);
+        trust.setToolTipText("uncontained: only for code you trust; see docs/controller-rules.md. Takes effect at the next Start.");
+        trust.addActionListener(e -> {
+            trusted = trust.isSelected();
+            console.note(trusted ? "the controller will run uncontained (trusted) from the next Start"
+                    : "the controller will run contained from the next Start");
+        });
+        controllerMenu.add(trust);
+        bar.add(controllerMenu);
         bar.add(menu("Settings", KeyEvent.VK_S, "settings"));
         bar.add(menu("Help", KeyEvent.VK_H, "quickStart", "manual"));
         return bar;
@@ -593,7 +605,7 @@ public final class MainWindow {
         long runSeed = seed != null ? seed : Simulation.randomSeed();
         RunSession session;
         try {
-            session = new RunSession(model.arena(), controllerName, new ControllerCatalog(classpath), runSeed, settings,
+            session = new RunSession(model.arena(), controllerName, new ControllerCatalog(classpath, trusted), runSeed, settings,
                     console, ControllerHost.Options.defaults());
         } catch (RuntimeException e) {
             console.error("cannot start " + controllerName + ": " + e.getMessage());

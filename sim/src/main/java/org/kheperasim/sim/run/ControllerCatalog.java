@@ -18,11 +18,23 @@ public final class ControllerCatalog {
     public static final String BUNDLED_PACKAGE = ControllerNames.BUNDLED_PACKAGE;
 
     private final List<Path> classpath;
+    private final boolean trusted;
 
     /** @param classpath folders and jars with the user's compiled classes (may be empty) */
     public ControllerCatalog(List<Path> classpath) {
+        this(classpath, false);
+    }
+
+    /**
+     * @param classpath folders and jars with the user's compiled classes (may be empty)
+     * @param trusted true to load them uncontained: calls to files, the network, reflection and so on
+     *     are allowed and {@code System.exit} is not caught (only for a controller the user trusts;
+     *     see docs/controller-rules.md)
+     */
+    public ControllerCatalog(List<Path> classpath, boolean trusted) {
         ControllerNames.checkClasspath(classpath);
         this.classpath = List.copyOf(classpath);
+        this.trusted = trusted;
     }
 
     /** @return the simple names of the bundled controllers */
@@ -39,7 +51,7 @@ public final class ControllerCatalog {
      * @throws ControllerException naming what was looked for and how to fix it
      */
     public Class<?> load(String name) {
-        ControllerClassLoader loader = new ControllerClassLoader(classpath, ControllerCatalog.class.getClassLoader());
+        ControllerClassLoader loader = new ControllerClassLoader(classpath, ControllerCatalog.class.getClassLoader(), !trusted);
         try {
             return ControllerNames.resolve(name, loader, bundled(), classpath, "khepera-sim.jar");
         } catch (ControllerPolicyError e) {

@@ -58,6 +58,7 @@ public final class Simulation {
         private ConsoleSink console = line -> { };
         private ControllerHost.Options hostOptions = ControllerHost.Options.defaults();
         private final List<Subscription> listeners = new ArrayList<>();
+        private boolean trusted;
         private EditLog edits = new EditLog();
         private BooleanSupplier stop = () -> false;
 
@@ -143,6 +144,16 @@ public final class Simulation {
             return this;
         }
 
+        /**
+         * @param trusted true to run the controller uncontained (files, network, reflection allowed;
+         *     see docs/controller-rules.md); false, the default, for untrusted code
+         * @return this
+         */
+        public Builder trusted(boolean trusted) {
+            this.trusted = trusted;
+            return this;
+        }
+
         /** @param listener also receives snapshots, every tick @return this */
         public Builder listener(SnapshotListener listener) {
             return listener(listener, 1);
@@ -210,7 +221,7 @@ public final class Simulation {
         long seed = b.seed();
         long endNanos = (long) StrictMath.rint(b.seconds * 1e9);
         b.edits.checkWithin(endNanos);
-        RunSession session = new RunSession(b.arena, b.controllerName, new ControllerCatalog(b.classpath), seed,
+        RunSession session = new RunSession(b.arena, b.controllerName, new ControllerCatalog(b.classpath, b.trusted), seed,
                 b.settings, b.console, b.hostOptions);
         for (Subscription l : b.listeners) {
             session.addListener(l.listener(), l.periodNanos());

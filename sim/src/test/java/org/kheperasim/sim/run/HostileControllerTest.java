@@ -54,6 +54,8 @@ class HostileControllerTest {
         {"Spinner", "if (!started) { started = true; new Thread(() -> { long n = 0; while (true) { n++; } }).start(); }"
             + " sleepMillis(100);"},
         {"Swallower", "while (true) { try { sleepMillis(10); } catch (Throwable t) { } }"},
+        {"TrustedWriter", "try { java.nio.file.Files.writeString(java.nio.file.Path.of(TARGET + \".trusted\"), \"x\"); }"
+            + " catch (Exception e) { } sleepMillis(100);"},
         {"Clockwatcher", "print(\"now \" + java.time.Instant.now()); sleepMillis(1000);"},
     };
 
@@ -119,6 +121,15 @@ class HostileControllerTest {
             assertTrue(e.getMessage().contains(c[0] + ".java:"), c[0] + " names the student's line: " + e.getMessage());
         }
         assertEquals("keep me", Files.readString(outside), "nothing outside was touched");
+    }
+
+    @Test
+    void aControllerTheUserTrustsRunsUncontained() throws IOException {
+        assertThrows(ControllerException.class, () -> run("TrustedWriter", 1), "contained by default");
+        RunResult r = Simulation.builder().arena("lab").classpath(List.of(classes)).controller("TrustedWriter").seed(1)
+                .seconds(1).trusted(true).run();
+        assertEquals(ControllerStatus.STOPPED, r.first().status());
+        assertEquals("x", Files.readString(Path.of(outside + ".trusted")), "a trusted controller may write files");
     }
 
     @Test
