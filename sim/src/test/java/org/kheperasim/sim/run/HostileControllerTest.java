@@ -179,8 +179,9 @@ class HostileControllerTest {
     @Test
     void inAWindowSessionTheFaultIsNamedAndTheWindowsRunGoesOn() throws Exception {
         int before = ManagementFactory.getThreadMXBean().getThreadCount();
-        for (String[] c : new String[][] {{"Exiter", "BROKE_RULE"}, {"WaitForever", "BROKE_RULE"},
-            {"Spinner", "RUNNING"}, {"Swallower", "RUNNING"}}) {
+        for (String[] c : new String[][] {{"Exiter", "BROKE_RULE"}, {"Halter", "BROKE_RULE"},
+            {"ExitByReference", "BROKE_RULE"}, {"WaitForever", "BROKE_RULE"}, {"Waiter", "RUNNING"},
+            {"Parker", "RUNNING"}, {"Spinner", "RUNNING"}, {"Swallower", "RUNNING"}}) {
             List<String> console = new ArrayList<>();
             RunSession s = new RunSession(org.kheperasim.sim.arena.ArenaFormat.loadBundled("lab"), c[0],
                     new ControllerCatalog(List.of(classes)), 1, org.kheperasim.sim.engine.Settings.defaults(),
@@ -198,11 +199,20 @@ class HostileControllerTest {
                 Thread.sleep(5);
             }
             assertEquals(c[1], s.status().name(), c[0] + " in the window's run: " + console);
+            if (c[1].equals("RUNNING")) {
+                assertEquals(3_000_000_000L, runner.latest().timeNanos(), c[0] + ": the window's run reached its pause, not stalled");
+            }
             assertTrue(runner.failure() == null, c[0] + " did not break the window's run: " + runner.failure());
             assertTrue(runner.stopAndWait(10_000), c[0] + ": the window can stop the run");
             s.close();
         }
         assertThreadsBackTo(before, "after the window's runs");
+        for (String refused : List.of("Writer", "Deleter", "Networker", "Reflector", "Intruder", "HandleBot")) {
+            assertThrows(ControllerException.class, () -> new RunSession(org.kheperasim.sim.arena.ArenaFormat.loadBundled("lab"),
+                    refused, new ControllerCatalog(List.of(classes)), 1, org.kheperasim.sim.engine.Settings.defaults(),
+                    line -> { }, org.kheperasim.sim.host.ControllerHost.Options.defaults()),
+                    refused + " is refused when the window starts it, as headless");
+        }
     }
 
     @Test
