@@ -22,7 +22,8 @@ import org.kheperasim.link.timing.LinkTiming;
  * three-digit light). The fake once measured 28.5 cycles/s at 38400 baud because its bench set
  * every proximity value to 1000: four-digit numbers make the longest replies.
  *
- * <p>A wall-clock measurement: a loaded machine can only lower it, so the best of three tries counts.
+ * <p>A wall-clock measurement: a loaded machine can only lower it, so the best of up to ten short
+ * windows counts.
  * Tagged {@code rate}, not {@code timing}: with every core saturated a rate is whatever the load
  * leaves, so CI's busy-machine step does not run it (the plain build does).
  */
@@ -40,19 +41,22 @@ class PollRateModelTest {
     void theModelPredictsThePollRateOnTheWire(int baud) throws Exception {
         PtyPair.assumeSocat();
         LinkTiming timing = LinkTiming.atBaud(baud);
+        double model = 1e9 / timing.pollCycleNanos(PROXIMITY, LIGHT, new int[] {0, 0});
+        // Load can only slow the loop down: the best of up to ten windows of about 40 cycles is
+        // the rate the wire allows; stop as soon as one agrees.
         double best = 0;
-        for (int attempt = 0; attempt < 3; attempt++) {
-            Path folder = java.nio.file.Files.createDirectories(dir.resolve("try" + attempt));
-            try (FakeRobotOnPty fake = FakeRobotOnPty.start(folder, timing);
-                    Session s = new Session(SerialLink.open(SerialSettings.khepera(fake.hostPath(), baud)), timing,
-                            Session.Options.defaults())) {
-                fake.robot().setProximity(PROXIMITY);
-                fake.robot().setLight(LIGHT);
-                s.open();
-                best = StrictMath.max(best, PollBench.measure(s, baud, baud < 20_000 ? 4000 : 2500).rateHz());
+        Path folder = java.nio.file.Files.createDirectories(dir.resolve("pty"));
+        try (FakeRobotOnPty fake = FakeRobotOnPty.start(folder, timing);
+                Session s = new Session(SerialLink.open(SerialSettings.khepera(fake.hostPath(), baud)), timing,
+                        Session.Options.defaults())) {
+            fake.robot().setProximity(PROXIMITY);
+            fake.robot().setLight(LIGHT);
+            s.open();
+            long window = StrictMath.max(400, (long) (40_000 / model));
+            for (int attempt = 0; attempt < 10 && StrictMath.abs(best / model - 1) > 0.05; attempt++) {
+                best = StrictMath.max(best, PollBench.measure(s, baud, window).rateHz());
             }
         }
-        double model = 1e9 / timing.pollCycleNanos(PROXIMITY, LIGHT, new int[] {0, 0});
         System.out.printf(Locale.ROOT, "%6d baud: fake robot over a pty %.1f cycles/s, model %.1f/s%n", baud, best, model);
         assertEquals(1, best / model, 0.10, "measured " + best + "/s vs model " + model + "/s");
     }
