@@ -84,10 +84,12 @@ final class WsuArenaBuilder {
         for (WsuObject o : objects) {
             switch (o.type()) {
                 case WsuObject.WALL -> {
+                    double x = o.x(); // in double: a damaged file's coordinates must not overflow
+                    double y = o.y();
                     if (o.theta() == 0) {
-                        bar(o.x(), o.y(), o.x() + WALL_SHORT_PX, o.y() + WALL_LONG_PX, o);
+                        bar(x, y, x + WALL_SHORT_PX, y + WALL_LONG_PX, o);
                     } else {
-                        bar(o.x(), o.y() - WALL_SHORT_PX, o.x() + WALL_LONG_PX, o.y(), o);
+                        bar(x, y - WALL_SHORT_PX, x + WALL_LONG_PX, y, o);
                     }
                 }
                 case WsuObject.CAP, WsuObject.BALL -> {

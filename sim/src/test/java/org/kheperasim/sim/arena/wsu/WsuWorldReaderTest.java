@@ -152,6 +152,15 @@ class WsuWorldReaderTest {
     }
 
     @Test
+    void extremeCoordinatesAreLeftOutNotOverflowed() {
+        Arena a = read(WsuWorldWriter.world(List.of(vertical(5, Integer.MAX_VALUE - 3, 100),
+                horizontal(6, 100, Integer.MIN_VALUE + 2), cap(7, Integer.MAX_VALUE, Integer.MIN_VALUE))));
+        assertEquals(BORDER, a.walls());
+        assertEquals(List.of(), a.caps());
+        assertEquals(3, warnings.size(), warnings.toString());
+    }
+
+    @Test
     void anObjectOfAnUnknownKindIsLeftOutWithAWarning() {
         Arena a = read(WsuWorldWriter.world(List.of(new Vertex(5, 7, 100, 100, 0), cap(6, 300, 300))));
         assertEquals(1, a.caps().size());
