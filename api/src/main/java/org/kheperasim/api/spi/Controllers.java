@@ -4,6 +4,11 @@ import java.lang.reflect.Constructor;
 import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Method;
 import java.lang.reflect.Modifier;
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.List;
+import java.util.ServiceConfigurationError;
+import java.util.ServiceLoader;
 import org.kheperasim.api.Controller;
 import org.kheperasim.api.CurrentRobotState;
 import org.kheperasim.api.MessagePasser;
@@ -11,6 +16,11 @@ import org.kheperasim.api.MessagePasser;
 /**
  * The controller contract, applied the same way by every backend: how a controller class is
  * checked, constructed and asked to stop.
+ *
+ * <p>A controller is a {@code Thread} subclass (the Appendix's style, or
+ * {@link org.kheperasim.api.Controller}). A class of another style, such as a WSU
+ * {@code RobotController}, is accepted when a {@link ControllerStyle} found in the class's own
+ * class loader claims it; the style wraps it into the thread the backend starts.
  */
 public final class Controllers {
     private Controllers() {
@@ -25,9 +35,8 @@ public final class Controllers {
     public static void check(Class<?> type) {
         String name = type.getName();
         if (!Thread.class.isAssignableFrom(type)) {
-            throw new ControllerException("Controller " + name + " does not extend Thread: a controller"
-                    + " is a Thread subclass (as in the Appendix: 'public class Robot extends Thread')"
-                    + " or extends org.kheperasim.api.Controller");
+            styleOf(type).check(type);
+            return;
         }
         if (Modifier.isAbstract(type.getModifiers())) {
             throw new ControllerException("Controller " + name + " is abstract: name a concrete subclass");
@@ -45,11 +54,15 @@ public final class Controllers {
      * @param type the controller class (see {@link #check})
      * @param state the robot's live state to hand it
      * @param messages its message channel
-     * @return the new, not yet started controller thread
+     * @return the new, not yet started controller thread (for a class of another
+     *     {@link ControllerStyle}, the thread that drives it)
      * @throws ControllerException when the class is unusable or its constructor throws
      */
     public static Thread instantiate(Class<?> type, CurrentRobotState state, MessagePasser messages) {
         check(type);
+        if (!Thread.class.isAssignableFrom(type)) {
+            return styleOf(type).instantiate(type, RobotPorts.of(state), messages);
+        }
         try {
             Constructor<?> classic = classicConstructor(type);
             if (classic != null) {
@@ -93,6 +106,43 @@ public final class Controllers {
         } catch (ReflectiveOperationException | RuntimeException e) {
             return false;
         }
+    }
+
+    /**
+     * The {@link ControllerStyle} that claims a class which does not extend {@code Thread}, looked
+     * up in the class's own loader so that the style and the class share their base classes.
+     *
+     * @throws ControllerException naming the class and every style it could have followed
+     */
+    private static ControllerStyle styleOf(Class<?> type) {
+        List<String> known = new ArrayList<>();
+        List<String> broken = new ArrayList<>();
+        ClassLoader loader = type.getClassLoader() != null ? type.getClassLoader() : ClassLoader.getSystemClassLoader();
+        Iterator<ControllerStyle> styles = ServiceLoader.load(ControllerStyle.class, loader).iterator();
+        while (true) {
+            ControllerStyle style;
+            try {
+                if (!styles.hasNext()) {
+                    break;
+                }
+                style = styles.next();
+            } catch (ServiceConfigurationError e) {
+                broken.add(String.valueOf(e.getMessage()));
+                continue;
+            }
+            if (style.claims(type)) {
+                return style;
+            }
+            known.add(style.describe());
+        }
+        StringBuilder ways = new StringBuilder("a Thread subclass (as in the Appendix: 'public class Robot extends"
+                + " Thread') or extends org.kheperasim.api.Controller");
+        for (String way : known) {
+            ways.append(", or ").append(way);
+        }
+        throw new ControllerException("Controller " + type.getName() + " does not extend Thread: a controller is "
+                + ways + (broken.isEmpty() ? "" : " (a controller style could not be loaded: "
+                + String.join("; ", broken) + ")"));
     }
 
     private static Constructor<?> classicConstructor(Class<?> type) {

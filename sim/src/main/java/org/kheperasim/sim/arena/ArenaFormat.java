@@ -99,10 +99,12 @@ public final class ArenaFormat {
      * Finds an arena the way a user names one on the command line: an existing file path first,
      * else a bundled arena's name.
      *
-     * @param nameOrPath a path to a {@code .arena} file, or a bundled name such as {@code lab}
+     * @param nameOrPath a path to a {@code .arena} file (or a WSU world file, see {@link ArenaFiles}),
+     *                   or a bundled name such as {@code lab}
      * @return the arena
      * @throws IllegalArgumentException if it is neither an existing file nor a bundled name
      * @throws ArenaFormatException     if the file is not a valid arena
+     * @throws org.kheperasim.sim.arena.wsu.WsuWorldException if a WSU world file is damaged
      */
     public static Arena resolve(String nameOrPath) {
         Path path = null;
@@ -112,7 +114,7 @@ public final class ArenaFormat {
             // Not a usable path: it can still be a bundled name.
         }
         if (path != null && Files.isRegularFile(path)) {
-            return load(path);
+            return ArenaFiles.load(path); // a text arena, or a WSU world file recognised by its content
         }
         String text = bundledText(nameOrPath);
         if (text != null) {

@@ -813,7 +813,7 @@ public final class MainWindow {
         }
         Arena a;
         try {
-            a = ArenaFormat.load(file);
+            a = org.kheperasim.sim.arena.ArenaFiles.load(file, console::note); // .arena text or a WSU world
         } catch (RuntimeException e) {
             console.error(e.getMessage());
             JOptionPane.showMessageDialog(frame, e.getMessage(), "Cannot open the arena", JOptionPane.ERROR_MESSAGE);
@@ -833,7 +833,8 @@ public final class MainWindow {
 
     private void save(boolean as) {
         Path target = arenaFile;
-        if (as || target == null) {
+        // A WSU world file is never overwritten with text: saving one asks for a new .arena name.
+        if (as || target == null || org.kheperasim.sim.arena.ArenaFiles.isWsuWorld(target)) {
             JFileChooser c = chooser("arena", "Arena files (.arena)");
             c.setSelectedFile(new java.io.File(model.arena().name() + ArenaFormat.EXTENSION));
             if (c.showSaveDialog(frame) != JFileChooser.APPROVE_OPTION) {

@@ -45,7 +45,7 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
     /** Names starting with these always come from the parent. */
     private static final List<String> SHARED_PREFIXES = List.of(
             "java.", "javax.", "jdk.", "sun.", "com.sun.",
-            "org.kheperasim.api.", "org.kheperasim.sim.", "org.kheperasim.link.",
+            "org.kheperasim.api.", "org.kheperasim.sim.", "org.kheperasim.link.", "edu.wsu.KheperaSimulator.",
             "org.objectweb.asm.", "picocli.", "org.junit.", "org.opentest4j.", "org.apiguardian.");
 
     private final List<Root> roots;

@@ -1,0 +1,8 @@
+/**
+ * World (map) files of the original WSU Khepera Simulator: {@link org.kheperasim.sim.arena.wsu.WsuWorld}
+ * reads one into an {@link org.kheperasim.sim.arena.Arena} without deserialising anything. The
+ * layers: {@code StreamInput} (bytes), {@code SerialStreamParser} (the serialization stream
+ * grammar), {@code WsuWorldObjects} (the Vector of Vertex objects), {@code WsuArenaBuilder} (pixels
+ * to millimetres, footprints, the border, clipping) and {@code RobotPlacement} (a free start).
+ */
+package org.kheperasim.sim.arena.wsu;

@@ -1,0 +1,256 @@
+package edu.wsu.KheperaSimulator;
+
+import org.kheperasim.api.ArmPosition;
+import org.kheperasim.api.GripperState;
+import org.kheperasim.api.spi.RobotPort;
+
+/**
+ * The robot as a WSU controller sees it, drawn from the backend's {@link RobotPort}: the
+ * simulated robot, or a real Khepera over its serial link. {@link RobotController}'s methods
+ * delegate here. Only the motor and wheel-position methods are public, as in the original; the
+ * rest is for {@code RobotController}.
+ *
+ * <p>Speeds are WSU units, −9..9, one Khepera speed unit (about 8 mm/s) each; a value outside
+ * −9..9 is ignored and that wheel keeps its speed. Wheel positions are encoder pulses (about
+ * 0.08 mm each), 0 at the start of the run.
+ *
+ * <p>A state made with the public constructor is not connected to a robot: it remembers the speeds
+ * it is given and reports wheel positions of 0.
+ */
+public class CurrentRobotState {
+    /** The backend behind this state; null when not connected to a robot. */
+    private final RobotPort port;
+    private final Odometer left = new Odometer();
+    private final Odometer right = new Odometer();
+    /** The speeds last accepted, WSU units. */
+    private int leftSpeed;
+    private int rightSpeed;
+
+    /** A state connected to no robot (the backends connect the one a controller gets). */
+    public CurrentRobotState() {
+        this(null);
+    }
+
+    /** @param port the backend, or null for a state connected to no robot */
+    CurrentRobotState(RobotPort port) {
+        this.port = port;
+    }
+
+    /**
+     * Set both wheel speeds. A speed outside −9..9 is ignored, and that wheel keeps its speed (the
+     * original's rule); when both are outside, nothing is sent.
+     *
+     * @param left left wheel, −9..9 WSU units (one Khepera speed unit, ≈ 8 mm/s, each); positive drives forward
+     * @param right right wheel, −9..9 WSU units
+     */
+    public void setMotorSpeeds(int left, int right) {
+        boolean leftOk = WsuUnits.validSpeed(left);
+        boolean rightOk = WsuUnits.validSpeed(right);
+        if (!leftOk && !rightOk) {
+            return;
+        }
+        synchronized (this) {
+            if (leftOk) {
+                leftSpeed = left;
+            }
+            if (rightOk) {
+                rightSpeed = right;
+            }
+            if (port != null) {
+                port.setSpeeds(WsuUnits.toKheperaSpeed(leftSpeed), WsuUnits.toKheperaSpeed(rightSpeed));
+            }
+        }
+    }
+
+    /**
+     * Set the left wheel's speed; the right wheel keeps its speed.
+     *
+     * @param speed −9..9 WSU units (≈ 8 mm/s each); a value outside is ignored
+     */
+    public void setLeftMotorSpeed(int speed) {
+        if (WsuUnits.validSpeed(speed)) {
+            synchronized (this) {
+                setMotorSpeeds(speed, rightSpeed);
+            }
+        }
+    }
+
+    /**
+     * Set the right wheel's speed; the left wheel keeps its speed.
+     *
+     * @param speed −9..9 WSU units (≈ 8 mm/s each); a value outside is ignored
+     */
+    public void setRightMotorSpeed(int speed) {
+        if (WsuUnits.validSpeed(speed)) {
+            synchronized (this) {
+                setMotorSpeeds(leftSpeed, speed);
+            }
+        }
+    }
+
+    /**
+     * @return the left wheel's position counter, encoder pulses (≈ 0.08 mm each) since the run
+     *     started; it grows driving forward and stands still while the robot is blocked
+     */
+    public long getLeftPosition() {
+        return port == null ? 0 : left.read(port.leftPosition());
+    }
+
+    /** @return the right wheel's position counter, encoder pulses (≈ 0.08 mm each) since the run started */
+    public long getRightPosition() {
+        return port == null ? 0 : right.read(port.rightPosition());
+    }
+
+    // ------------------------------------------------------------------ for RobotController
+
+    /** The run starts now: wheel positions count from here, and the wheels stand still. */
+    void startRun() {
+        RobotPort p = connected();
+        left.zero(p.leftPosition());
+        right.zero(p.rightPosition());
+        synchronized (this) {
+            leftSpeed = 0;
+            rightSpeed = 0;
+        }
+    }
+
+    /** Stop both wheels, whatever happens (the controller is ending, perhaps because it is being stopped). */
+    void stopQuietly() {
+        if (port == null) {
+            return;
+        }
+        try {
+            synchronized (this) {
+                leftSpeed = 0;
+                rightSpeed = 0;
+                port.setSpeeds(0, 0);
+            }
+        } catch (RuntimeException | Error e) {
+            // A backend that is stopping the controller refuses further calls; it stops the robot itself.
+        }
+    }
+
+    /** @return the left wheel's speed last accepted, WSU units */
+    synchronized int leftSpeed() {
+        return leftSpeed;
+    }
+
+    /** @return the right wheel's speed last accepted, WSU units */
+    synchronized int rightSpeed() {
+        return rightSpeed;
+    }
+
+    /** @param index 0..7 @return proximity, 0..1023, higher = nearer */
+    int distance(int index) {
+        return connected().proximity(sensor(index));
+    }
+
+    /** @param index 0..7 @return ambient light, 0..1023, lower = brighter (about 500 in the dark) */
+    int light(int index) {
+        return connected().ambientLight(sensor(index));
+    }
+
+    /** @param state {@link KSGripperStates#ARM_UP} or {@link KSGripperStates#ARM_DOWN}; others ignored */
+    void arm(int state) {
+        if (state == KSGripperStates.ARM_UP) {
+            connected().setArm(ArmPosition.UP);
+        } else if (state == KSGripperStates.ARM_DOWN) {
+            connected().setArm(ArmPosition.DOWN);
+        }
+    }
+
+    /** @return where the arm last came to rest (while it travels, where it left) */
+    int arm() {
+        return connected().armPosition() == ArmPosition.DOWN ? KSGripperStates.ARM_DOWN : KSGripperStates.ARM_UP;
+    }
+
+    /** @param state {@link KSGripperStates#GRIP_OPEN} or {@link KSGripperStates#GRIP_CLOSED}; others ignored */
+    void gripper(int state) {
+        if (state == KSGripperStates.GRIP_OPEN) {
+            connected().setFingers(GripperState.OPEN);
+        } else if (state == KSGripperStates.GRIP_CLOSED) {
+            connected().setFingers(GripperState.CLOSED);
+        }
+    }
+
+    /** @return the fingers' state */
+    int gripper() {
+        return connected().fingers() == GripperState.CLOSED ? KSGripperStates.GRIP_CLOSED : KSGripperStates.GRIP_OPEN;
+    }
+
+    /** @return whether something breaks the light barrier between the fingers */
+    boolean objectPresent() {
+        return connected().objectPresent();
+    }
+
+    /** @return whether the fingers are closed on something (closed, and the barrier broken) */
+    boolean objectHeld() {
+        RobotPort p = connected();
+        return p.fingers() == GripperState.CLOSED && p.objectPresent();
+    }
+
+    /** @return resistivity of what the fingers hold, 0..255 */
+    int resistivity() {
+        return connected().resistivity();
+    }
+
+    /**
+     * Sleep for robot time (simulated time in the simulator, wall time on the robot). An
+     * interruption ends the sleep early and is swallowed, as in the original.
+     *
+     * @param millis milliseconds; 0 or less does not sleep
+     */
+    void sleep(long millis) {
+        if (millis <= 0) {
+            return;
+        }
+        try {
+            connected().sleep(millis);
+        } catch (InterruptedException e) {
+            // The original swallowed interruptions; a halt is signalled by setFinished instead.
+        }
+    }
+
+    private RobotPort connected() {
+        if (port == null) {
+            throw new IllegalStateException("this CurrentRobotState is not connected to a robot: the simulator"
+                    + " or robot-link connects the one it gives a RobotController; read the robot from doWork(),"
+                    + " not from the constructor");
+        }
+        return port;
+    }
+
+    private static int sensor(int index) {
+        if (index < 0 || index > 7) {
+            throw new ArrayIndexOutOfBoundsException("sensor " + index + " does not exist: the Khepera's sensors"
+                    + " are numbered 0..7 (0 left, 1 left 45°, 2 front left, 3 front right, 4 right 45°, 5 right,"
+                    + " 6 rear right, 7 rear left)");
+        }
+        return index;
+    }
+
+    /**
+     * A wheel's counter as a {@code long} from 0 at the run's start: the robot's 32-bit counter is
+     * followed by its differences, so it never wraps.
+     */
+    private static final class Odometer {
+        private boolean zeroed;
+        private int last;
+        private long total;
+
+        synchronized void zero(int raw) {
+            zeroed = true;
+            last = raw;
+            total = 0;
+        }
+
+        synchronized long read(int raw) {
+            if (!zeroed) {
+                zero(raw);
+            }
+            total += raw - last; // int subtraction: right across the counter's wrap-around
+            last = raw;
+            return total;
+        }
+    }
+}
