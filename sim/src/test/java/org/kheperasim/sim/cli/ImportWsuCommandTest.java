@@ -105,7 +105,7 @@ class ImportWsuCommandTest {
 
         assertEquals(2, main("import-wsu", map.toString(), "-o", target.toString()));
 
-        assertTrue(err.startsWith("khepera-sim: " + map + ": byte 4: 0x6A is no tag"), err);
+        assertTrue(err.startsWith("khepera-sim: error: " + map + ": byte 4: 0x6A is no tag"), err);
         assertFalse(Files.exists(target));
     }
 

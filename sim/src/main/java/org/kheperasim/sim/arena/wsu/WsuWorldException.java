@@ -5,7 +5,7 @@ package org.kheperasim.sim.arena.wsu;
  * world at all. The message is {@code file: byte N: what is wrong}, ready to show a person; for a
  * problem with the world as a whole it is {@code file: what is wrong}.
  */
-public final class WsuWorldException extends RuntimeException {
+public final class WsuWorldException extends IllegalArgumentException {
 
     private static final long serialVersionUID = 1L;
 
