@@ -31,9 +31,10 @@ class ClientRulesTest {
     private static final Settings EXACT = Settings.defaults().withNoise(0);
 
     private static void waitUntil(String what, java.util.function.BooleanSupplier condition) throws InterruptedException {
-        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+        // Generous: on a loaded machine the served robot's thread may wait long for a core.
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
         while (!condition.getAsBoolean()) {
-            assertTrue(System.nanoTime() < end, "in 5 s: " + what);
+            assertTrue(System.nanoTime() < end, "in 30 s: " + what);
             Thread.sleep(5);
         }
     }
@@ -51,9 +52,7 @@ class ClientRulesTest {
             assertEquals("d", c.ask("D,10,10"));
             assertEquals("c", c.ask("C,100000,100000"));
             assertEquals("d", c.ask("D,10,10"));
-            Thread.sleep(200);
-            double x0 = s.robot.snapshot().robots().get(0).x();
-            assertTrue(x0 > 300, "it drives: x " + x0);
+            waitUntil("it drives", () -> s.robot.snapshot().robots().get(0).x() > 300);
             assertEquals(10, speedLeft(s));
             c.close();
             waitUntil("the robot stops when the client closes", () -> speedLeft(s) == 0
@@ -69,8 +68,7 @@ class ClientRulesTest {
             Socket rude = new Socket(InetAddress.getLoopbackAddress(), s.server.port());
             rude.getOutputStream().write("C,-50000,-50000\n".getBytes(StandardCharsets.US_ASCII));
             rude.setSoLinger(true, 0);
-            Thread.sleep(100);
-            assertTrue(speedLeft(s) < 0, "the position move runs: " + speedLeft(s));
+            waitUntil("the position move runs", () -> speedLeft(s) < 0);
             rude.close();
             waitUntil("the robot stops after a reset", () -> speedLeft(s) == 0);
             assertEquals(0, (int) s.robot.inspect(r -> r.onBoard().motionStatus()[1]), "and leaves position mode");
