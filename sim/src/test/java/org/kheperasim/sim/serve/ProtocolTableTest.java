@@ -95,6 +95,10 @@ class ProtocolTableTest {
             assertEquals("j", c.ask("J,10,64,10,64"));
             long start = System.nanoTime();
             long simStart = s.robot.timeNanos();
+            // The speed profile is watched in robot time (every 10 ms), which load cannot thin out.
+            java.util.concurrent.atomic.AtomicInteger fastest = new java.util.concurrent.atomic.AtomicInteger();
+            s.robot.addListener(snap -> fastest.accumulateAndGet(snap.robots().get(0).speedLeft(), Math::max),
+                    10_000_000L);
             assertEquals("c", c.ask("C,500,-500"));
             int[] k = values(c.ask("K"), "k", 6);
             assertEquals(0, k[0], "left not on target yet: " + Arrays.toString(k));
@@ -119,7 +123,8 @@ class ProtocolTableTest {
             double seconds = (s.robot.timeNanos() - simStart) / 1e9;
             assertTrue(seconds > 0.75 && seconds < 1.5, "the trapezoid takes about 0.9 s of robot time (the move is"
                     + " updated every 10 ms and counts as done within half a pulse): " + seconds);
-            assertEquals(10, maxSpeed, "the profile's maximum speed is reached and not exceeded");
+            assertTrue(maxSpeed <= 10, "E never reports more than the profile's maximum: " + maxSpeed);
+            assertEquals(10, fastest.get(), "the profile's maximum speed is reached and not exceeded");
             int[] h = values(c.ask("H"), "h", 2);
             assertEquals(500, h[0], 1);
             assertEquals(-500, h[1], 1);
