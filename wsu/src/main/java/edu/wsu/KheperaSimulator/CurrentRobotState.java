@@ -49,6 +49,8 @@ public class CurrentRobotState {
         if (!leftOk && !rightOk) {
             return;
         }
+        int l;
+        int r;
         synchronized (this) {
             if (leftOk) {
                 leftSpeed = left;
@@ -56,9 +58,13 @@ public class CurrentRobotState {
             if (rightOk) {
                 rightSpeed = right;
             }
-            if (port != null) {
-                port.setSpeeds(WsuUnits.toKheperaSpeed(leftSpeed), WsuUnits.toKheperaSpeed(rightSpeed));
-            }
+            l = leftSpeed;
+            r = rightSpeed;
+        }
+        // The robot is told outside the lock: in the simulator the call may give the turn to the
+        // controller's other threads, which must not find the lock taken.
+        if (port != null) {
+            port.setSpeeds(WsuUnits.toKheperaSpeed(l), WsuUnits.toKheperaSpeed(r));
         }
     }
 
@@ -69,9 +75,7 @@ public class CurrentRobotState {
      */
     public void setLeftMotorSpeed(int speed) {
         if (WsuUnits.validSpeed(speed)) {
-            synchronized (this) {
-                setMotorSpeeds(speed, rightSpeed);
-            }
+            setMotorSpeeds(speed, WsuUnits.INVALID_SPEED);
         }
     }
 
@@ -82,9 +86,7 @@ public class CurrentRobotState {
      */
     public void setRightMotorSpeed(int speed) {
         if (WsuUnits.validSpeed(speed)) {
-            synchronized (this) {
-                setMotorSpeeds(leftSpeed, speed);
-            }
+            setMotorSpeeds(WsuUnits.INVALID_SPEED, speed);
         }
     }
 
@@ -123,8 +125,8 @@ public class CurrentRobotState {
             synchronized (this) {
                 leftSpeed = 0;
                 rightSpeed = 0;
-                port.setSpeeds(0, 0);
             }
+            port.setSpeeds(0, 0);
         } catch (RuntimeException | Error e) {
             // A backend that is stopping the controller refuses further calls; it stops the robot itself.
         }

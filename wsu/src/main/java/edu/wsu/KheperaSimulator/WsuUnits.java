@@ -17,6 +17,8 @@ final class WsuUnits {
     static final int MIN_SPEED = -9;
     /** The fastest speed a WSU controller may ask for, WSU units. */
     static final int MAX_SPEED = 9;
+    /** A speed outside the range: the wheel it is given for keeps its speed. */
+    static final int INVALID_SPEED = Integer.MIN_VALUE;
     /** Khepera speed units (≈ 8 mm/s each) per WSU speed unit. */
     static final int KHEPERA_SPEED_PER_WSU_SPEED = 1;
 

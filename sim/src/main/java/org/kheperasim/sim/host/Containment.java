@@ -15,7 +15,8 @@ import java.util.concurrent.locks.LockSupport;
  * What the controller class loader puts in place of the calls that would let controller code end
  * the application, stall a run out of sight of the simulated clock, or read the wall clock:
  * {@code System.exit}, {@code Runtime.exit/halt}, {@code LockSupport.park*}, {@code Object.wait},
- * {@code Instant.now()} and the other {@code java.time} clocks, and {@code Thread.start}. Each has
+ * {@code Instant.now()} and the other {@code java.time} clocks (the thread calls are in
+ * {@link ThreadHooks}). Each has
  * the signature of the call it replaces (an instance method's receiver comes first).
  *
  * <p>Outside a run (no simulated clock on the thread) the ones that are harmless there do what the
@@ -58,7 +59,7 @@ public final class Containment {
         refuse("called Runtime.addShutdownHook");
     }
 
-    private static void refuse(String what) {
+    static void refuse(String what) {
         SimClock.Clock c = SimClock.current();
         if (c != null) {
             c.brokeRule(what);
@@ -102,38 +103,6 @@ public final class Containment {
         park();
     }
 
-    /** Replaces {@link Object#wait(long)}: on the controller's thread, simulated time passes. */
-    public static void waitFor(Object monitor, long millis) throws InterruptedException {
-        SimClock.Clock c = SimClock.current();
-        if (c == null || !c.onControllerThread()) {
-            monitor.wait(millis);
-            return;
-        }
-        if (!Thread.holdsLock(monitor)) {
-            throw new IllegalMonitorStateException("current thread is not owner");
-        }
-        if (millis == 0) {
-            waitForever(monitor);
-        }
-        c.sleepNanos(TimeUnit.MILLISECONDS.toNanos(millis));
-    }
-
-    /** Replaces {@link Object#wait(long, int)}. */
-    public static void waitFor(Object monitor, long millis, int nanos) throws InterruptedException {
-        waitFor(monitor, millis + (nanos > 0 ? 1 : 0));
-    }
-
-    /** Replaces {@link Object#wait()}: on the controller's thread nothing could ever notify it. */
-    public static void waitForever(Object monitor) throws InterruptedException {
-        SimClock.Clock c = SimClock.current();
-        if (c == null || !c.onControllerThread()) {
-            monitor.wait();
-            return;
-        }
-        refuse("called Object.wait() with no timeout; in the simulator only the controller's thread runs, so"
-                + " nothing could notify it (use Thread.sleep)");
-    }
-
     private static void sleepQuietly(long nanos) {
         if (nanos <= 0) {
             return;
@@ -144,15 +113,6 @@ public final class Containment {
             // Like park, an interrupt just ends the wait; the flag stays set.
             Thread.currentThread().interrupt();
         }
-    }
-
-    /** Replaces {@link Thread#start()}: a thread a controller starts belongs to its run. */
-    public static void start(Thread thread) {
-        SimClock.Clock c = SimClock.current();
-        if (c != null) {
-            c.adopt(thread);
-        }
-        thread.start();
     }
 
     // ------------------------------------------------------------------ the simulated wall clock

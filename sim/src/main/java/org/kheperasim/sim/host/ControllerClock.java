@@ -26,18 +26,21 @@ final class ControllerClock implements SimClock.Clock {
 
     /** The heap is looked at every 16 API calls (a few nanoseconds each, on average). */
     private static final int HEAP_LOOK_MASK = 15;
+    /** How often a thread joining another looks whether it has ended, ns of simulated time. */
+    private static final long JOIN_POLL_NANOS = 1_000_000L;
 
     private final ControllerHost host;
+    private final ControllerThreads threads;
     private final long apiCostNanos;
     private final int jitterMaxMicros;
     private long apiCalls;
     // Only the thread holding the turn touches these (the turn is volatile).
     private long now;
     private long limit;
-    private long wake;
 
-    ControllerClock(ControllerHost host, long apiCostNanos, int jitterMaxMicros) {
+    ControllerClock(ControllerHost host, ControllerThreads threads, long apiCostNanos, int jitterMaxMicros) {
         this.host = host;
+        this.threads = threads;
         this.apiCostNanos = apiCostNanos;
         this.jitterMaxMicros = jitterMaxMicros;
     }
@@ -47,9 +50,9 @@ final class ControllerClock implements SimClock.Clock {
         return now;
     }
 
-    /** @return when the controller next needs to run, ns */
+    /** @return when the controller next needs to run, ns: when its thread (or the first due of its threads) is due */
     long wake() {
-        return wake;
+        return threads.single() ? threads.main().wake : StrictMath.max(now, threads.earliest());
     }
 
     /** The engine grants the controller simulated time up to {@code limitNanos}. */
@@ -62,16 +65,20 @@ final class ControllerClock implements SimClock.Clock {
         return apiCalls;
     }
 
+    /** @return true on the thread of the controller's that holds the turn */
+    boolean onTurn() {
+        return Thread.currentThread() == threads.running().thread;
+    }
+
     /** Every API call starts here: the lockstep check. */
     void enter() {
-        Thread t = Thread.currentThread();
-        if (t != host.thread()) {
+        if (!onTurn()) {
             if (host.status() == ControllerStatus.NOT_STARTED) {
                 return; // the controller's constructor looking around: free, no time passes
             }
-            throw new IllegalStateException("the robot API was called from thread '" + t.getName() + "', not from"
-                    + " the controller's own thread; in the simulator only the controller thread may use it"
-                    + " (that keeps runs deterministic)");
+            throw new IllegalStateException("the robot API was called from thread '" + Thread.currentThread().getName()
+                    + "', which the controller's code did not start; in the simulator only the controller's"
+                    + " thread and the threads it starts may use it (that keeps runs deterministic)");
         }
         host.checkStop();
         if ((++apiCalls & HEAP_LOOK_MASK) == 0) {
@@ -96,24 +103,75 @@ final class ControllerClock implements SimClock.Clock {
         now += apiCostNanos;
     }
 
-    /** The controller's slice is used up: step the world on this thread until someone must run. */
+    /** The running thread's slice is used up: step the world on this thread until it runs again. */
     private void yieldTurn() {
-        wake = now;
+        threads.running().wake = now;
+        reschedule();
+    }
+
+    /** The running thread has set when it is due next: run whoever is due, and return when it runs again. */
+    private void reschedule() {
+        Participant me = threads.running();
+        if (!handOff(me)) {
+            host.lockstep().turn().await(me.seat);
+        }
+        host.checkStop();
+    }
+
+    /**
+     * Run the thread due next: {@code me} itself (true: it goes on at once), another of the
+     * controller's threads, or, when none is due in this slice, the world, stepped on this thread
+     * until some driver must run (false: the turn has been passed on).
+     */
+    private boolean handOff(Participant me) {
         jitter();
         Lockstep lockstep = host.lockstep();
-        RobotDriver next;
-        try {
-            next = lockstep.engine().advance();
-        } catch (RuntimeException | Error e) {
-            lockstep.engineFailed(e);
-            next = null;
+        while (true) {
+            Participant p = threads.pick(now, limit);
+            if (p == me) {
+                now = StrictMath.max(now, me.wake);
+                return true;
+            }
+            if (p != null) {
+                switchTo(p);
+                return false;
+            }
+            if (!threads.single() && threads.deadlocked()) {
+                host.deadlocked(threads.describeWaits());
+            }
+            RobotDriver next;
+            try {
+                next = lockstep.engine().advance();
+            } catch (RuntimeException | Error e) {
+                lockstep.engineFailed(e);
+                next = null;
+            }
+            if (next != host) {
+                lockstep.passTo(next);
+                return false;
+            }
         }
-        if (next == host) {
-            return;
+    }
+
+    /** The engine chose this controller: run its thread due first. Called by whoever holds the turn. */
+    void runNext() {
+        Participant p = threads.pick(now, limit);
+        if (p == null) {
+            host.lockstep().passTo(null);
+        } else {
+            switchTo(p);
         }
-        lockstep.passTo(next);
-        lockstep.turn().await(host.seat());
-        host.checkStop();
+    }
+
+    /** Give the turn to {@code p}, starting its thread the first time. Called by whoever holds the turn. */
+    void switchTo(Participant p) {
+        threads.run(p);
+        now = StrictMath.max(now, p.wake);
+        host.lockstep().turn().giveTo(p.seat);
+        if (!p.started) {
+            p.started = true;
+            p.thread.start();
+        }
     }
 
     /** Random real-time delays at hand-offs, for the determinism tests. */
@@ -125,7 +183,7 @@ final class ControllerClock implements SimClock.Clock {
 
     @Override
     public void sleepNanos(long nanos) throws InterruptedException {
-        if (Thread.currentThread() != host.thread()) {
+        if (!onTurn()) {
             TimeUnit.NANOSECONDS.sleep(nanos);
             return;
         }
@@ -134,15 +192,24 @@ final class ControllerClock implements SimClock.Clock {
             throw new InterruptedException("sleep interrupted");
         }
         apiCalls++;
-        now += StrictMath.max(nanos, apiCostNanos);
-        if (now >= limit) {
-            yieldTurn();
+        long d = StrictMath.max(nanos, apiCostNanos);
+        if (threads.single()) {
+            now += d;
+            if (now >= limit) {
+                yieldTurn();
+            }
+            return;
+        }
+        threads.running().wake = now + d;
+        reschedule();
+        if (Thread.interrupted()) {
+            throw new InterruptedException("sleep interrupted");
         }
     }
 
     @Override
     public long nanoTime() {
-        if (Thread.currentThread() != host.thread()) {
+        if (!onTurn()) {
             return System.nanoTime();
         }
         enter();
@@ -153,7 +220,7 @@ final class ControllerClock implements SimClock.Clock {
 
     @Override
     public long currentTimeMillis() {
-        if (Thread.currentThread() != host.thread()) {
+        if (!onTurn()) {
             return System.currentTimeMillis();
         }
         enter();
@@ -164,7 +231,7 @@ final class ControllerClock implements SimClock.Clock {
 
     @Override
     public void pause() {
-        if (Thread.currentThread() != host.thread()) {
+        if (!onTurn()) {
             Thread.onSpinWait();
             return;
         }
@@ -180,7 +247,17 @@ final class ControllerClock implements SimClock.Clock {
 
     @Override
     public boolean onControllerThread() {
-        return Thread.currentThread() == host.thread();
+        return onTurn();
+    }
+
+    /** @return true while the controller has threads besides the one running */
+    boolean othersAlive() {
+        for (Participant p : threads.all()) {
+            if (p != threads.running() && !p.done) {
+                return true;
+            }
+        }
+        return false;
     }
 
     @Override
@@ -189,12 +266,107 @@ final class ControllerClock implements SimClock.Clock {
     }
 
     @Override
-    public void adopt(Thread thread) {
-        host.adopt(thread);
+    public boolean adopt(Thread thread) {
+        if (host.constructing()) {
+            // Started by the controller's constructor: it first runs just after the controller's thread starts.
+            threads.addPending(thread);
+            return true;
+        }
+        if (!onTurn()) {
+            host.adoptStray(thread);
+            return false;
+        }
+        host.checkStop();
+        host.prepare(threads.add(thread, now));
+        return true;
+    }
+
+    // ------------------------------------------------------------------ monitors, waits, joins
+
+    /** {@code synchronized} entry in controller code: a monitor another thread of the controller owns blocks. */
+    void monitorEnter(Object monitor) {
+        Participant me = threads.running();
+        while (!threads.tryEnter(monitor, me)) {
+            me.lock = monitor;
+            me.wake = now;
+            try {
+                reschedule();
+            } finally {
+                me.lock = null;
+            }
+        }
+    }
+
+    void monitorExit(Object monitor) {
+        threads.exit(monitor, threads.running());
+    }
+
+    /**
+     * {@code monitor.wait(millis)} on the thread holding the turn: it lets go of the monitor and
+     * the others run until it is notified or {@code millis} of simulated time have passed.
+     */
+    void waitOn(Object monitor, long millis) throws InterruptedException {
+        host.checkStop();
+        if (Thread.interrupted()) {
+            throw new InterruptedException("wait interrupted");
+        }
+        apiCalls++;
+        Participant me = threads.running();
+        threads.beginWait(me, monitor, millis == 0 ? Long.MAX_VALUE : now + TimeUnit.MILLISECONDS.toNanos(millis));
+        me.seat.waitMonitor = monitor;
+        try {
+            if (!handOff(me)) {
+                awaitInWait(me, monitor);
+            }
+        } finally {
+            me.seat.waitMonitor = null;
+        }
+        threads.endWait(me);
+        host.checkStop();
+        if (Thread.interrupted()) {
+            throw new InterruptedException("wait interrupted");
+        }
+    }
+
+    /** Wait for the turn inside the monitor's real wait, so that the monitor is free meanwhile. */
+    private void awaitInWait(Participant me, Object monitor) {
+        Turn turn = host.lockstep().turn();
+        boolean interrupted = false;
+        while (!turn.heldBy(me.seat)) {
+            try {
+                monitor.wait();
+            } catch (InterruptedException e) {
+                interrupted = true;
+            }
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    void notifyWaiters(Object monitor, boolean everyone) {
+        threads.notify(monitor, everyone, now);
+    }
+
+    /** @return the controller's thread {@code t}, or null when it is no thread of this controller */
+    Participant participant(Thread t) {
+        return threads.of(t);
+    }
+
+    void interrupt(Participant p) {
+        threads.interrupted(p, now);
+    }
+
+    /** {@code p.join(millis)}: the caller sleeps a millisecond at a time until {@code p} has ended. */
+    void join(Participant p, long millis) throws InterruptedException {
+        long deadline = millis == 0 ? Long.MAX_VALUE : now + TimeUnit.MILLISECONDS.toNanos(millis);
+        while (!p.done && now < deadline) {
+            sleepNanos(StrictMath.min(JOIN_POLL_NANOS, deadline - now));
+        }
     }
 
     /** The controller has ended: it never needs to run again. */
     void ended() {
-        wake = Long.MAX_VALUE;
+        threads.main().wake = Long.MAX_VALUE;
     }
 }

@@ -48,8 +48,8 @@ public final class ControllerHost implements RobotDriver {
     private final String name;
     private final ConsoleSink console;
     private final ControllerClock clock;
+    private final ControllerThreads threads = new ControllerThreads();
     private final Thread controller;
-    private final Turn.Seat seat;
     private Lockstep lockstep;
     private volatile ControllerStatus status = ControllerStatus.NOT_STARTED;
     private volatile boolean stopRequested;
@@ -59,6 +59,8 @@ public final class ControllerHost implements RobotDriver {
     /** How the controller's life ends once it has unwound, when a fault decided it; else null. */
     private volatile ControllerStatus pendingEnd;
     private final java.util.List<Thread> strays = new java.util.ArrayList<>();
+    /** The thread constructing the controller, while it does; threads started then join the lockstep. */
+    private volatile Thread constructing;
 
     /**
      * Construct the controller (it does not start until the engine first runs it).
@@ -73,20 +75,26 @@ public final class ControllerHost implements RobotDriver {
         this.type = type;
         this.name = type.getSimpleName();
         this.console = console;
-        this.clock = new ControllerClock(this, robot.model().link().apiCostNanos(), options.jitterMaxMicros());
+        this.clock = new ControllerClock(this, threads, robot.model().link().apiCostNanos(), options.jitterMaxMicros());
         SimulatedRobotPort port = new SimulatedRobotPort(robot, clock, this);
-        this.seat = new Turn.Seat(null);
         // The clock is inheritable: binding it while the controller's Thread object is constructed
         // gives it to the controller thread, and only to it.
         SimClock.bind(clock);
+        constructing = Thread.currentThread();
         Thread created;
         try {
             created = Controllers.instantiate(type, new CurrentRobotState(port), new MessagePasser(port));
         } finally {
+            constructing = null;
             SimClock.unbind();
         }
         controller = created;
-        seat.seat(created);
+        threads.main(created);
+        for (Participant p : threads.all()) {
+            if (p.index > 0) {
+                prepare(p);
+            }
+        }
         controller.setDaemon(true);
         controller.setUncaughtExceptionHandler((t, e) -> ended(e));
     }
@@ -137,8 +145,9 @@ public final class ControllerHost implements RobotDriver {
         return controller;
     }
 
-    Turn.Seat seat() {
-        return seat;
+    /** @return the thread of this controller's that waits on {@code seat}, or null */
+    Participant participantAt(Turn.Seat seat) {
+        return threads.at(seat);
     }
 
     /** @return API calls made so far; read without synchronisation by the watchdog */
@@ -148,11 +157,10 @@ public final class ControllerHost implements RobotDriver {
 
     /** Give this host the turn, from whichever thread holds it: start the controller, or wake it. */
     void receiveTurn(Turn turn) {
-        turn.giveTo(seat);
         if (status == ControllerStatus.NOT_STARTED) {
             status = ControllerStatus.RUNNING;
-            controller.start();
         }
+        clock.runNext();
     }
 
     /**
@@ -183,17 +191,64 @@ public final class ControllerHost implements RobotDriver {
         }
     }
 
-    /** A thread the controller started: it ends with the run. */
-    void adopt(Thread t) {
+    /**
+     * A thread the controller started from a thread outside the lockstep (its window's event
+     * thread): it runs on the wall clock, and ends with the run.
+     */
+    void adoptStray(Thread t) {
+        prepareThread(t);
+        synchronized (strays) {
+            strays.add(t);
+        }
+    }
+
+    /** @return true on the thread constructing the controller, while it does */
+    boolean constructing() {
+        return Thread.currentThread() == constructing;
+    }
+
+    /** A thread the controller's code started: it takes part in the lockstep, and ends with the controller. */
+    void prepare(Participant p) {
+        prepareThread(p.thread);
+        p.thread.setUncaughtExceptionHandler((th, e) -> helperDied(p, e));
+    }
+
+    private void prepareThread(Thread t) {
         t.setDaemon(true);
         t.setUncaughtExceptionHandler((th, e) -> {
             if (!(e instanceof ControllerStoppedError)) {
                 say(ConsoleLine.Kind.ERROR, "a thread the controller started (" + th.getName() + ") threw " + e);
             }
         });
-        synchronized (strays) {
-            strays.add(t);
+    }
+
+    /** A thread the controller started threw: it ends (the controller goes on), and the turn goes back to the owner. */
+    private void helperDied(Participant p, Throwable e) {
+        if (!(e instanceof ControllerStoppedError)) {
+            say(ConsoleLine.Kind.ERROR, "thread " + p + " that the controller started threw " + e + "; that thread"
+                    + " ended, the controller goes on.\n" + studentTrace(e));
         }
+        Turn turn = lockstep.turn();
+        if (turn.heldBy(p.seat)) {
+            threads.ended(p);
+            lockstep.passTo(null);
+        }
+    }
+
+    /** The watchdog saw a thread the controller started end while it held the turn: its run() returned. */
+    void helperReturned(Participant p) {
+        threads.ended(p);
+    }
+
+    /** Every thread of the controller waits for another: nothing can ever run again. Called holding the turn. */
+    void deadlocked(String waits) {
+        if (status.ended() || pendingEnd != null) {
+            return;
+        }
+        say(ConsoleLine.Kind.ERROR, "controller " + name + " (" + type.getName() + ") is deadlocked: " + waits
+                + ". The controller was stopped and the robot's motors set to 0.");
+        announceStop();
+        finish(ControllerStatus.HUNG);
     }
 
     private java.util.List<Thread> straysNow() {
@@ -229,7 +284,7 @@ public final class ControllerHost implements RobotDriver {
         if (status == ControllerStatus.RUNNING) {
             announceStop();
             Controllers.requestStop(controller);
-            lockstep.passTo(this);
+            clock.switchTo(threads.main());
             lockstep.awaitOwner(STOP_GRACE_MILLIS * 1_000_000L);
             if (status == ControllerStatus.RUNNING) {
                 detached = true;
@@ -239,7 +294,49 @@ public final class ControllerHost implements RobotDriver {
                 finish(ControllerStatus.STOPPED);
             }
         }
+        endThreads();
         endStrays();
+    }
+
+    /** @return true when the controller has ended but threads it started still live: the owner ends them */
+    boolean threadsOutliveIt() {
+        if (!status.ended() || threads.single()) {
+            return false;
+        }
+        for (Participant p : threads.all()) {
+            if (p.index > 0 && !p.done) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /**
+     * The threads the controller started end with it: each in turn is given the turn, sees the stop
+     * and unwinds. Called by the run's owner, once the controller's own thread has ended.
+     */
+    void endThreads() {
+        if (threads.single()) {
+            return;
+        }
+        announceStop();
+        for (Participant p : threads.all()) {
+            if (p.done || (p.index == 0 && (detached || !p.thread.isAlive()))) {
+                continue;
+            }
+            if (!p.started || !p.thread.isAlive()) {
+                threads.ended(p);
+                continue;
+            }
+            clock.switchTo(p);
+            lockstep.awaitOwner(STOP_GRACE_MILLIS * 1_000_000L);
+            if (lockstep.takeBack(p.seat)) {
+                p.thread.interrupt();
+                say(ConsoleLine.Kind.ERROR, "thread " + p + " that the controller started did not end with it; it"
+                        + " was left behind. Does it catch Throwable, or loop inside a library call?");
+            }
+            threads.ended(p);
+        }
     }
 
     /** The threads the controller started end with it: they are interrupted and unwind at their next loop or call. */
@@ -281,17 +378,24 @@ public final class ControllerHost implements RobotDriver {
     }
 
     /** The watchdog saw no progress for the hang timeout while this controller held the turn. */
-    void hung(double realSeconds) {
+    void hung(Participant who, double realSeconds) {
+        String thread = who.index == 0 ? "" : " (in thread " + who + " that it started)";
         say(ConsoleLine.Kind.ERROR, String.format(Locale.ROOT,
-                "controller %s (%s) stopped making API calls at simulated time %.3f s: it ran for %.1f s of"
+                "controller %s (%s) stopped making API calls at simulated time %.3f s%s: it ran for %.1f s of"
                         + " real time without reading a sensor, setting a motor or sleeping. A loop that waits for"
                         + " something must read a sensor or call Thread.sleep inside it. The controller was"
                         + " stopped and the robot's motors set to 0.",
-                name, type.getName(), clock.now() / 1e9, realSeconds));
-        detached = true;
+                name, type.getName(), clock.now() / 1e9, thread, realSeconds));
         announceStop();
-        Controllers.requestStop(controller);
-        controller.interrupt();
+        if (who.index == 0) {
+            detached = true;
+            Controllers.requestStop(controller);
+            controller.interrupt();
+        } else {
+            // It unwinds at its next loop checkpoint; the controller's other threads end with it.
+            who.thread.interrupt();
+            threads.ended(who);
+        }
         finish(ControllerStatus.HUNG);
     }
 

@@ -78,6 +78,11 @@ public final class Lockstep {
                 if (failure != null) {
                     throw failure;
                 }
+                for (ControllerHost h : hosts) {
+                    if (h.threadsOutliveIt()) {
+                        h.endThreads();
+                    }
+                }
             }
         } finally {
             HeapWatch.unlisten(heapFull);
@@ -110,6 +115,15 @@ public final class Lockstep {
         } else {
             byDriver.get(next).receiveTurn(turn);
         }
+    }
+
+    /**
+     * The owner takes the turn back from a thread that still holds it after its grace period.
+     *
+     * @return true when {@code seat} held the turn
+     */
+    boolean takeBack(Turn.Seat seat) {
+        return turn.takeFrom(seat, owner);
     }
 
     /** The world threw while a controller's thread was stepping it: the owner rethrows it. */
@@ -146,11 +160,16 @@ public final class Lockstep {
             if (host == null) {
                 continue;
             }
+            Participant holder = host.participantAt(seat);
             // TERMINATED, not !isAlive(): a thread just handed its first turn may not have started yet.
-            if (host.thread().getState() == Thread.State.TERMINATED) {
+            if (holder.thread.getState() == Thread.State.TERMINATED) {
                 if (turn.takeFrom(seat, owner)) {
                     // Its run() returned while it held the turn.
-                    host.returned();
+                    if (holder.index == 0) {
+                        host.returned();
+                    } else {
+                        host.helperReturned(holder);
+                    }
                 }
                 return;
             }
@@ -160,7 +179,7 @@ public final class Lockstep {
                 progress = p;
                 progressAt = now;
             } else if (now - progressAt > hangTimeoutNanos && turn.takeFrom(seat, owner)) {
-                host.hung((now - progressAt) / 1e9);
+                host.hung(holder, (now - progressAt) / 1e9);
                 return;
             }
         }
@@ -168,7 +187,7 @@ public final class Lockstep {
 
     private ControllerHost hostAt(Turn.Seat seat) {
         for (ControllerHost h : hosts) {
-            if (h.seat() == seat) {
+            if (h.participantAt(seat) != null) {
                 return h;
             }
         }

@@ -43,8 +43,12 @@ public final class SimClock {
          */
         void brokeRule(String what);
 
-        /** A thread the controller started: it belongs to the run and ends with it. */
-        void adopt(Thread thread);
+        /**
+         * A thread the controller starts: it belongs to the run and ends with it.
+         *
+         * @return true when the run starts it itself, in the lockstep (the caller must not start it)
+         */
+        boolean adopt(Thread thread);
     }
 
     // Inheritable: the host binds the clock on the engine thread while it constructs the controller

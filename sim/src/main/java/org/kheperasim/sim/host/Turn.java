@@ -25,6 +25,8 @@ final class Turn {
     static final class Seat {
         private volatile Thread thread;
         private volatile boolean parked;
+        /** The monitor whose real {@code wait} the seat's thread waits in for its turn, or null. */
+        volatile Object waitMonitor;
 
         Seat(Thread thread) {
             this.thread = thread;
@@ -60,7 +62,13 @@ final class Turn {
     /** Give the turn to {@code next}, waking it if it parked waiting for it. */
     void giveTo(Seat next) {
         holder = next;
-        if (next.parked) {
+        Object monitor = next.waitMonitor;
+        if (monitor != null) {
+            // It waits inside the monitor's wait (which frees the monitor meanwhile): wake it there.
+            synchronized (monitor) {
+                monitor.notifyAll();
+            }
+        } else if (next.parked) {
             LockSupport.unpark(next.thread);
         }
     }
@@ -99,12 +107,18 @@ final class Turn {
                 SPINNERS.decrementAndGet();
             }
         }
+        boolean interrupted = false;
         while (holder != me) {
             me.parked = true;
             if (holder != me) {
                 LockSupport.park(this);
             }
             me.parked = false;
+            // An interrupt ends park at once: keep it for the thread's code, and park again.
+            interrupted |= Thread.interrupted();
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
         }
     }
 

@@ -157,6 +157,9 @@ class HostileControllerTest {
         assertEquals(ControllerStatus.STOPPED, swallower.result.first().status(), swallower.text());
         assertFalse(swallower.text().contains("left behind"), swallower.text());
         assertFalse(spinner.text().contains("left behind"), spinner.text());
+        // The thread it started runs in the lockstep: spinning without an API call, it hangs the controller.
+        assertEquals(ControllerStatus.HUNG, spinner.result.first().status(), spinner.text());
+        assertTrue(spinner.text().contains("that it started)"), "the hung thread is named: " + spinner.text());
         assertThreadsBackTo(before, "after the runs");
     }
 
@@ -181,7 +184,7 @@ class HostileControllerTest {
         int before = ManagementFactory.getThreadMXBean().getThreadCount();
         for (String[] c : new String[][] {{"Exiter", "BROKE_RULE"}, {"Halter", "BROKE_RULE"},
             {"ExitByReference", "BROKE_RULE"}, {"WaitForever", "BROKE_RULE"}, {"Waiter", "RUNNING"},
-            {"Parker", "RUNNING"}, {"Spinner", "RUNNING"}, {"Swallower", "RUNNING"}}) {
+            {"Parker", "RUNNING"}, {"Spinner", "HUNG"}, {"Swallower", "RUNNING"}}) {
             List<String> console = new ArrayList<>();
             RunSession s = new RunSession(org.kheperasim.sim.arena.ArenaFormat.loadBundled("lab"), c[0],
                     new ControllerCatalog(List.of(classes)), 1, org.kheperasim.sim.engine.Settings.defaults(),

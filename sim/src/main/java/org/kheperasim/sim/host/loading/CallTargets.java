@@ -30,6 +30,14 @@ final class CallTargets {
     /** Internal name of the class the containment hooks are in. */
     static final String CONTAINMENT = Type.getInternalName(org.kheperasim.sim.host.Containment.class);
 
+    /** Internal name of the class the thread hooks are in. */
+    static final String THREAD_HOOKS = Type.getInternalName(org.kheperasim.sim.host.ThreadHooks.class);
+
+    /** Instance methods of {@code Thread} (or a subclass) that {@link org.kheperasim.sim.host.ThreadHooks} replaces. */
+    private static final java.util.Map<String, String> THREAD_VIRTUALS = java.util.Map.of(
+            "start()V", "start", "join()V", "join", "join(J)V", "join", "join(JI)V", "join",
+            "isAlive()Z", "isAlive", "interrupt()V", "interrupt");
+
     /** Where a call goes instead. */
     /**
      * Static calls redirected to {@link org.kheperasim.sim.host.Containment}, by owner, name and
@@ -102,23 +110,27 @@ final class CallTargets {
             if (contain != null) {
                 return new Target(CONTAINMENT, contain, "(L" + owner + ";" + descriptor.substring(1));
             }
-            if (name.equals("wait") && !owner.startsWith("[")) {
-                String receiver = "(Ljava/lang/Object;";
-                switch (descriptor) {
-                    case "()V" -> {
-                        return new Target(CONTAINMENT, "waitForever", receiver + ")V");
-                    }
-                    case "(J)V", "(JI)V" -> {
-                        return new Target(CONTAINMENT, "waitFor", receiver + descriptor.substring(1));
-                    }
-                    default -> {
-                        return null;
-                    }
+            if (owner.startsWith("[")) {
+                return null;
+            }
+            String receiver = "(Ljava/lang/Object;";
+            switch (name + descriptor) {
+                case "wait()V" -> {
+                    return new Target(THREAD_HOOKS, "waitForever", receiver + ")V");
+                }
+                case "wait(J)V", "wait(JI)V" -> {
+                    return new Target(THREAD_HOOKS, "waitFor", receiver + descriptor.substring(1));
+                }
+                case "notify()V", "notifyAll()V" -> {
+                    return new Target(THREAD_HOOKS, name, receiver + ")V");
+                }
+                default -> {
+                    // a thread call, below
                 }
             }
-            if (name.equals("start") && descriptor.equals("()V")
-                    && (owner.equals(THREAD) || lookup.resolvesToThread(owner, name, descriptor))) {
-                return new Target(CONTAINMENT, "start", "(Ljava/lang/Thread;)V");
+            String hook = THREAD_VIRTUALS.get(name + descriptor);
+            if (hook != null && (owner.equals(THREAD) || lookup.resolvesToThread(owner, name, descriptor))) {
+                return new Target(THREAD_HOOKS, hook, "(Ljava/lang/Thread;" + descriptor.substring(1));
             }
         }
         return null;

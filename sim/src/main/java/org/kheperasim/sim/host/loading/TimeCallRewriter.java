@@ -151,6 +151,7 @@ public final class TimeCallRewriter {
         private boolean changed;
         private String className;
         private String source;
+        private int version;
 
         ClassRewriter(ClassVisitor next, HierarchyLookup lookup, boolean contained) {
             super(Opcodes.ASM9, next);
@@ -161,6 +162,7 @@ public final class TimeCallRewriter {
         @Override
         public void visit(int version, int access, String name, String signature, String superName, String[] interfaces) {
             className = name;
+            this.version = version;
             if (contained) {
                 check(-1, superName, null);
                 if (interfaces != null) {
@@ -192,8 +194,15 @@ public final class TimeCallRewriter {
         @Override
         public MethodVisitor visitMethod(int access, String name, String descriptor, String signature,
                 String[] exceptions) {
-            MethodVisitor next = super.visitMethod(access, name, descriptor, signature, exceptions);
-            return next == null ? null : new MethodRewriter(next);
+            if (!contained) {
+                MethodVisitor next = super.visitMethod(access, name, descriptor, signature, exceptions);
+                return next == null ? null : new MethodRewriter(next);
+            }
+            // Contained code's monitors join the lockstep: a synchronized method gets an explicit block.
+            int kept = MonitorRewriter.isRewrittenSynchronized(access, version) ? access & ~Opcodes.ACC_SYNCHRONIZED : access;
+            MethodVisitor next = super.visitMethod(kept, name, descriptor, signature, exceptions);
+            return next == null ? null
+                    : new MethodRewriter(new MonitorRewriter(next, access, className, version, () -> changed = true));
         }
 
         /** A loadable constant with every method handle to a replaced method pointed at its hook. */

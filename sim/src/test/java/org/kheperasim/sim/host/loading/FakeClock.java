@@ -62,8 +62,9 @@ final class FakeClock implements SimClock.Clock {
     }
 
     @Override
-    public void adopt(Thread thread) {
+    public boolean adopt(Thread thread) {
         adopted.add(thread);
+        return false;
     }
 
     /** The rules broken so far, as reported. */

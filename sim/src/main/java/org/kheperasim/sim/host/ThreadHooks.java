@@ -1,0 +1,139 @@
+package org.kheperasim.sim.host;
+
+/**
+ * What the controller class loader puts in place of the thread calls of contained controller code,
+ * so that the threads a controller starts take part in the lockstep on the simulated clock:
+ * {@code Thread.start}, {@code join}, {@code isAlive} and {@code interrupt}; {@code synchronized}
+ * blocks and methods; {@code Object.wait}, {@code notify} and {@code notifyAll}. Each has the
+ * signature of what it replaces (an instance method's receiver comes first).
+ *
+ * <p>On a thread of the controller that holds the turn they act on the controller's
+ * {@link ControllerThreads}; on any other thread (the Swing event thread of a controller's own
+ * window, code outside a run) they do what the original does.
+ */
+public final class ThreadHooks {
+    private ThreadHooks() {
+    }
+
+    /** @return the clock of the run when the calling thread is the controller's thread holding the turn, else null */
+    private static ControllerClock onTurn() {
+        return SimClock.current() instanceof ControllerClock c && c.onTurn() ? c : null;
+    }
+
+    /** Replaces {@link Thread#start()}: a thread a controller starts belongs to its run. */
+    public static void start(Thread thread) {
+        SimClock.Clock c = SimClock.current();
+        if (c != null && c.adopt(thread)) {
+            return;
+        }
+        thread.start();
+    }
+
+    /** Replaces {@link Thread#join()}. */
+    public static void join(Thread thread) throws InterruptedException {
+        join(thread, 0);
+    }
+
+    /** Replaces {@link Thread#join(long)}: on the simulated clock when the thread is one of the controller's. */
+    public static void join(Thread thread, long millis) throws InterruptedException {
+        ControllerClock c = onTurn();
+        Participant p = c == null ? null : c.participant(thread);
+        if (p == null) {
+            thread.join(millis);
+            return;
+        }
+        if (millis < 0) {
+            throw new IllegalArgumentException("timeout value is negative");
+        }
+        if (Thread.interrupted()) {
+            throw new InterruptedException("join interrupted");
+        }
+        c.join(p, millis);
+    }
+
+    /** Replaces {@link Thread#join(long, int)}. */
+    public static void join(Thread thread, long millis, int nanos) throws InterruptedException {
+        join(thread, millis + (nanos > 0 && millis < Long.MAX_VALUE ? 1 : 0));
+    }
+
+    /** Replaces {@link Thread#isAlive()}: a thread of the controller is alive from its start() until it ends. */
+    public static boolean isAlive(Thread thread) {
+        ControllerClock c = onTurn();
+        Participant p = c == null ? null : c.participant(thread);
+        return p == null ? thread.isAlive() : !p.done;
+    }
+
+    /** Replaces {@link Thread#interrupt()}: a thread of the controller that sleeps or waits wakes at once. */
+    public static void interrupt(Thread thread) {
+        thread.interrupt();
+        ControllerClock c = onTurn();
+        Participant p = c == null ? null : c.participant(thread);
+        if (p != null) {
+            c.interrupt(p);
+        }
+    }
+
+    /** Put before every {@code monitorenter} of controller code (and at the start of a synchronized method). */
+    public static void monitorEnter(Object monitor) {
+        ControllerClock c = onTurn();
+        if (c != null && monitor != null) {
+            c.monitorEnter(monitor);
+        }
+    }
+
+    /** Put before every {@code monitorexit} of controller code (and at each exit of a synchronized method). */
+    public static void monitorExit(Object monitor) {
+        ControllerClock c = onTurn();
+        if (c != null && monitor != null) {
+            c.monitorExit(monitor);
+        }
+    }
+
+    /** Replaces {@link Object#wait(long)}: simulated time passes, and the controller's other threads run. */
+    public static void waitFor(Object monitor, long millis) throws InterruptedException {
+        ControllerClock c = onTurn();
+        if (c == null) {
+            monitor.wait(millis);
+            return;
+        }
+        if (millis < 0) {
+            throw new IllegalArgumentException("timeout value is negative");
+        }
+        if (!Thread.holdsLock(monitor)) {
+            throw new IllegalMonitorStateException("current thread is not owner");
+        }
+        if (millis == 0 && !c.othersAlive()) {
+            Containment.refuse("called Object.wait() with no timeout, and no other thread of the controller could"
+                    + " notify it (use Thread.sleep)");
+        }
+        c.waitOn(monitor, millis);
+    }
+
+    /** Replaces {@link Object#wait(long, int)}. */
+    public static void waitFor(Object monitor, long millis, int nanos) throws InterruptedException {
+        waitFor(monitor, millis + (nanos > 0 && millis < Long.MAX_VALUE ? 1 : 0));
+    }
+
+    /** Replaces {@link Object#wait()}: only another thread of the controller can notify it. */
+    public static void waitForever(Object monitor) throws InterruptedException {
+        waitFor(monitor, 0);
+    }
+
+    /** Replaces {@link Object#notify()}. */
+    public static void notify(Object monitor) {
+        monitor.notify();
+        ControllerClock c = onTurn();
+        if (c != null) {
+            c.notifyWaiters(monitor, false);
+        }
+    }
+
+    /** Replaces {@link Object#notifyAll()}. */
+    public static void notifyAll(Object monitor) {
+        monitor.notifyAll();
+        ControllerClock c = onTurn();
+        if (c != null) {
+            c.notifyWaiters(monitor, true);
+        }
+    }
+}
