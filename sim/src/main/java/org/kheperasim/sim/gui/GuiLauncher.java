@@ -42,6 +42,7 @@ public final class GuiLauncher {
                     + ". Run headless with 'khepera-sim run --arena maze --controller WallFollower', or set DISPLAY to a running X server"
                     + " (for example start 'Xvfb :5 &' and use DISPLAY=:5)");
         }
+        ControllerWindowCloser.install();
         CompletableFuture<MainWindow> shown = last.isDone() ? new CompletableFuture<>() : last;
         last = shown;
         SwingUtilities.invokeLater(() -> {

@@ -260,6 +260,11 @@ final class ControllerClock implements SimClock.Clock {
         return false;
     }
 
+    /** A line from the controller's code for the run's console. */
+    void say(ConsoleLine.Kind kind, String text) {
+        host.say(kind, text);
+    }
+
     @Override
     public void brokeRule(String what) {
         host.brokeRule(what);

@@ -1,7 +1,5 @@
 package org.kheperasim.sim.host;
 
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
@@ -58,7 +56,7 @@ public final class ControllerHost implements RobotDriver {
     private volatile Throwable failure;
     /** How the controller's life ends once it has unwound, when a fault decided it; else null. */
     private volatile ControllerStatus pendingEnd;
-    private final java.util.List<Thread> strays = new java.util.ArrayList<>();
+    private final StrayThreads strays = new StrayThreads(this);
     /** The thread constructing the controller, while it does; threads started then join the lockstep. */
     private volatile Thread constructing;
 
@@ -178,7 +176,7 @@ public final class ControllerHost implements RobotDriver {
     }
 
     private void fault(ControllerStatus end, String message) {
-        synchronized (strays) {
+        synchronized (this) {
             if (pendingEnd != null || status.ended()) {
                 return;
             }
@@ -186,9 +184,7 @@ public final class ControllerHost implements RobotDriver {
         }
         say(ConsoleLine.Kind.ERROR, "controller " + name + " (" + type.getName() + ") " + message);
         announceStop();
-        for (Thread t : straysNow()) {
-            t.interrupt();
-        }
+        strays.interrupt();
     }
 
     /**
@@ -196,10 +192,7 @@ public final class ControllerHost implements RobotDriver {
      * thread): it runs on the wall clock, and ends with the run.
      */
     void adoptStray(Thread t) {
-        prepareThread(t);
-        synchronized (strays) {
-            strays.add(t);
-        }
+        strays.add(t);
     }
 
     /** @return true on the thread constructing the controller, while it does */
@@ -209,24 +202,18 @@ public final class ControllerHost implements RobotDriver {
 
     /** A thread the controller's code started: it takes part in the lockstep, and ends with the controller. */
     void prepare(Participant p) {
-        prepareThread(p.thread);
+        p.thread.setDaemon(true);
         p.thread.setUncaughtExceptionHandler((th, e) -> helperDied(p, e));
-    }
-
-    private void prepareThread(Thread t) {
-        t.setDaemon(true);
-        t.setUncaughtExceptionHandler((th, e) -> {
-            if (!(e instanceof ControllerStoppedError)) {
-                say(ConsoleLine.Kind.ERROR, "a thread the controller started (" + th.getName() + ") threw " + e);
-            }
-        });
     }
 
     /** A thread the controller started threw: it ends (the controller goes on), and the turn goes back to the owner. */
     private void helperDied(Participant p, Throwable e) {
-        if (!(e instanceof ControllerStoppedError)) {
+        if (ControllerFailures.isHeadless(e)) {
+            say(ConsoleLine.Kind.ERROR, "thread " + p + " that the controller started " + ControllerFailures.HEADLESS.substring(0,
+                    ControllerFailures.HEADLESS.indexOf(" The controller was stopped")) + " That thread ended; the controller goes on.");
+        } else if (!(e instanceof ControllerStoppedError)) {
             say(ConsoleLine.Kind.ERROR, "thread " + p + " that the controller started threw " + e + "; that thread"
-                    + " ended, the controller goes on.\n" + studentTrace(e));
+                    + " ended, the controller goes on.\n" + ControllerFailures.studentTrace(e));
         }
         Turn turn = lockstep.turn();
         if (turn.heldBy(p.seat)) {
@@ -249,17 +236,6 @@ public final class ControllerHost implements RobotDriver {
                 + ". The controller was stopped and the robot's motors set to 0.");
         announceStop();
         finish(ControllerStatus.HUNG);
-    }
-
-    private java.util.List<Thread> straysNow() {
-        synchronized (strays) {
-            return java.util.List.copyOf(strays);
-        }
-    }
-
-    /** @return the threads the controller started that are still alive */
-    public java.util.List<Thread> liveThreads() {
-        return straysNow().stream().filter(Thread::isAlive).toList();
     }
 
     /** Unwind the controller's thread when it has been asked to stop. */
@@ -295,7 +271,8 @@ public final class ControllerHost implements RobotDriver {
             }
         }
         endThreads();
-        endStrays();
+        stopRequested = true;
+        strays.end(STOP_GRACE_MILLIS);
     }
 
     /** @return true when the controller has ended but threads it started still live: the owner ends them */
@@ -336,39 +313,6 @@ public final class ControllerHost implements RobotDriver {
                         + " was left behind. Does it catch Throwable, or loop inside a library call?");
             }
             threads.ended(p);
-        }
-    }
-
-    /** The threads the controller started end with it: they are interrupted and unwind at their next loop or call. */
-    private void endStrays() {
-        stopRequested = true;
-        List<Thread> alive = liveThreads();
-        if (alive.isEmpty()) {
-            return;
-        }
-        // While they unwind, every loop checkpoint of theirs looks for the stop.
-        SimClock.stopRequested();
-        try {
-            joinStrays(alive);
-        } finally {
-            SimClock.stopSettled();
-        }
-    }
-
-    private void joinStrays(List<Thread> alive) {
-        long deadline = System.nanoTime() + STOP_GRACE_MILLIS * 1_000_000L;
-        for (Thread t : alive) {
-            t.interrupt();
-            try {
-                t.join(StrictMath.max(1, (deadline - System.nanoTime()) / 1_000_000L));
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                return;
-            }
-            if (t.isAlive()) {
-                say(ConsoleLine.Kind.ERROR, "a thread the controller started (" + t.getName() + ") did not end with"
-                        + " the run; it was left behind");
-            }
         }
     }
 
@@ -432,61 +376,30 @@ public final class ControllerHost implements RobotDriver {
                     + " the Java heap ran out (" + e.getMessage() + "); the controller was stopped and the robot's"
                     + " motors set to 0. Does it keep adding to a list or map it never empties?");
             finish(ControllerStatus.EXCEEDED_MEMORY);
-        } else if (isPolicyError(e)) {
+        } else if (ControllerFailures.isPolicyError(e)) {
             failure = e;
-            say(ConsoleLine.Kind.ERROR, rootMessage(e) + "; the controller was stopped.");
+            say(ConsoleLine.Kind.ERROR, ControllerFailures.rootMessage(e) + "; the controller was stopped.");
             finish(ControllerStatus.BROKE_RULE);
         } else if (e instanceof ControllerStoppedError) {
             finish(ControllerStatus.STOPPED);
+        } else if (ControllerFailures.isHeadless(e)) {
+            failure = e;
+            say(ConsoleLine.Kind.ERROR, "controller " + name + " (" + type.getName() + ") " + ControllerFailures.HEADLESS + "\n"
+                    + ControllerFailures.studentTrace(e));
+            finish(ControllerStatus.FAILED);
         } else {
             failure = e;
-            say(ConsoleLine.Kind.ERROR, "threw " + e + "; the robot was stopped.\n" + studentTrace(e));
+            say(ConsoleLine.Kind.ERROR, "threw " + e + "; the robot was stopped.\n" + ControllerFailures.studentTrace(e));
             finish(ControllerStatus.FAILED);
         }
         settleStop();
         lockstep.passTo(null);
     }
 
-    private static boolean isPolicyError(Throwable e) {
-        for (Throwable t = e; t != null; t = t.getCause()) {
-            if (t.getClass().getName().endsWith("ControllerPolicyError")) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    private static String rootMessage(Throwable e) {
-        for (Throwable t = e; t != null; t = t.getCause()) {
-            if (t.getClass().getName().endsWith("ControllerPolicyError")) {
-                return t.getMessage();
-            }
-        }
-        return String.valueOf(e.getMessage());
-    }
-
     private void settleStop() {
         if (stopAnnounced) {
             SimClock.stopSettled();
         }
-    }
-
-    /** The stack trace down to the first frame of the simulator's own code: the student's part. */
-    private static String studentTrace(Throwable e) {
-        StringWriter out = new StringWriter();
-        e.printStackTrace(new PrintWriter(out));
-        StringBuilder kept = new StringBuilder();
-        for (String line : out.toString().split("\\R")) {
-            String t = line.trim();
-            if (t.startsWith("at org.kheperasim.sim.") || t.startsWith("at java.base/java.lang.Thread.run")) {
-                break;
-            }
-            if (t.startsWith("at java.base/jdk.internal.reflect.")) {
-                continue;
-            }
-            kept.append(line).append('\n');
-        }
-        return kept.toString().stripTrailing();
     }
 
     /** A line for the console, stamped with the controller's simulated time. */

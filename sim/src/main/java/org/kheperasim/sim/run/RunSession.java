@@ -18,6 +18,7 @@ import org.kheperasim.sim.engine.SnapshotListener;
 import org.kheperasim.sim.engine.World;
 import org.kheperasim.sim.host.ConsoleSink;
 import org.kheperasim.sim.host.ControllerHost;
+import org.kheperasim.sim.host.ControllerWindows;
 import org.kheperasim.sim.host.ControllerStatus;
 import org.kheperasim.sim.host.Lockstep;
 import org.kheperasim.sim.trace.TraceWriter;
@@ -45,6 +46,9 @@ public final class RunSession implements AutoCloseable {
     private final EditLog edits = new EditLog();
     private TraceWriter trace;
     private long sampleNanos;
+    /** Closes the windows the controllers open, when the run ends (in the window mode). */
+    private final ControllerWindows windows = ControllerWindows.Installed.get();
+    private final Object windowsMark;
     private boolean closed;
 
     /**
@@ -66,6 +70,7 @@ public final class RunSession implements AutoCloseable {
         this.seed = seed;
         this.settings = settings;
         this.engine = new Engine(new World(arena), seed);
+        this.windowsMark = windows.mark();
         String cls = null;
         for (int i = 0; i < arena.robots().size(); i++) {
             Pose start = arena.robots().get(i);
@@ -193,6 +198,7 @@ public final class RunSession implements AutoCloseable {
             }
         } finally {
             lockstep.stopAll();
+            windows.closeSince(windowsMark);
             if (trace != null) {
                 trace.close();
             }

@@ -69,6 +69,21 @@ class WsuControllerSimTest {
                 public void close() throws Exception { }
             }
             """,
+            "WsuWindowed", """
+            import edu.wsu.KheperaSimulator.RobotController;
+
+            public class WsuWindowed extends RobotController {
+                public WsuWindowed() { }
+
+                public void doWork() throws Exception {
+                    setMotorSpeeds(4, 4);
+                    sleep(500);
+                    new javax.swing.JFrame("debug").setVisible(true);
+                }
+
+                public void close() throws Exception { }
+            }
+            """,
             "WsuCrasher", """
             import edu.wsu.KheperaSimulator.*;
 
@@ -134,5 +149,17 @@ class WsuControllerSimTest {
         assertTrue(r.first().failure().contains("java.io.IOException: student bug"), r.first().failure());
         assertTrue(console.stream().anyMatch(l -> l.text().contains("WsuCrasher.doWork")), console.toString());
         assertEquals(1.0, r.simulatedSeconds(), 0.1, "50 steps of 20 ms, then the run ended");
+    }
+
+    @Test
+    void aControllersOwnWindowInAHeadlessRunIsAClearMessageNotACrash() {
+        List<ConsoleLine> console = Collections.synchronizedList(new ArrayList<>());
+        RunResult r = run("WsuWindowed", 10, console);
+        assertEquals(ControllerStatus.FAILED, r.first().status(), console.toString());
+        String text = console.toString();
+        assertTrue(text.contains("opened a window, but this run has no display"), text);
+        assertTrue(text.contains("only in the simulator's window"), text);
+        assertTrue(text.contains("WsuWindowed.doWork"), "the student's line is shown: " + text);
+        assertEquals(0.5, r.simulatedSeconds(), 0.05, "it drove until it opened the window, then the run ended");
     }
 }

@@ -50,14 +50,6 @@ public final class TimeCallRewriter {
     static final String SIM_CLOCK = Type.getInternalName(SimClock.class);
 
 
-    /**
-     * The newest class file version this rewriter accepts: what both ASM 9.8 (up to Java 25) and
-     * the running JVM can read.
-     */
-    private static final int NEWEST_VERSION = Math.min(Opcodes.V25, 44 + Runtime.version().feature());
-
-    private static final int CLASS_FILE_MAGIC = 0xCAFEBABE;
-
     private TimeCallRewriter() {
     }
 
@@ -91,7 +83,7 @@ public final class TimeCallRewriter {
      * @throws ControllerPolicyError naming the first forbidden call and its source line
      */
     public static byte[] rewrite(byte[] classFile, HierarchyLookup lookup, boolean contained) {
-        checkHeader(classFile);
+        ClassFileHeader.check(classFile);
         ClassReader reader;
         ClassWriter writer;
         ClassRewriter rewriter;
@@ -119,24 +111,6 @@ public final class TimeCallRewriter {
             throw withCause(new ClassFormatError("class " + e.getClassName()
                     + " is too large once its calls are rewritten: split it into smaller classes"), e);
         }
-    }
-
-    /** Reject what is not a class file, or one too new to read, with a message a student can act on. */
-    private static void checkHeader(byte[] classFile) {
-        if (classFile.length < 8 || readInt(classFile, 0) != CLASS_FILE_MAGIC) {
-            throw new ClassFormatError("not a class file (it does not start with 0xCAFEBABE)");
-        }
-        int major = ((classFile[6] & 0xFF) << 8) | (classFile[7] & 0xFF);
-        if (major > NEWEST_VERSION) {
-            throw new UnsupportedClassVersionError("compiled for Java " + (major - 44) + " (class file version "
-                    + major + "), but the simulator loads classes up to Java " + (NEWEST_VERSION - 44)
-                    + ": compile it with --release 17");
-        }
-    }
-
-    private static int readInt(byte[] b, int offset) {
-        return ((b[offset] & 0xFF) << 24) | ((b[offset + 1] & 0xFF) << 16)
-                | ((b[offset + 2] & 0xFF) << 8) | (b[offset + 3] & 0xFF);
     }
 
     private static <T extends Throwable> T withCause(T error, Throwable cause) {
@@ -202,7 +176,8 @@ public final class TimeCallRewriter {
             int kept = MonitorRewriter.isRewrittenSynchronized(access, version) ? access & ~Opcodes.ACC_SYNCHRONIZED : access;
             MethodVisitor next = super.visitMethod(kept, name, descriptor, signature, exceptions);
             return next == null ? null
-                    : new MethodRewriter(new MonitorRewriter(next, access, className, version, () -> changed = true));
+                    : new MethodRewriter(new MonitorRewriter(new OutputRewriter(next, () -> changed = true), access,
+                            className, version, () -> changed = true));
         }
 
         /** A loadable constant with every method handle to a replaced method pointed at its hook. */

@@ -15,28 +15,28 @@ import java.util.Map;
  * writes back-references for every class description, field-type string and colour it has written
  * before, so the reader meets them as it meets them in real files.
  */
-final class WsuWorldWriter {
+public final class WsuWorldWriter {
     static final float HORIZONTAL = (float) (3 * Math.PI / 2);
 
     /** One object as the WSU simulator stores it: anchor top-left, px, y down. */
-    record Vertex(int id, int type, int x, int y, float theta) {
-        static Vertex vertical(int id, int x, int y) {
+    public record Vertex(int id, int type, int x, int y, float theta) {
+        public static Vertex vertical(int id, int x, int y) {
             return new Vertex(id, 1, x, y, 0);
         }
 
-        static Vertex horizontal(int id, int x, int y) {
+        public static Vertex horizontal(int id, int x, int y) {
             return new Vertex(id, 1, x, y, HORIZONTAL);
         }
 
-        static Vertex cap(int id, int x, int y) {
+        public static Vertex cap(int id, int x, int y) {
             return new Vertex(id, 2, x, y, 0);
         }
 
-        static Vertex ball(int id, int x, int y) {
+        public static Vertex ball(int id, int x, int y) {
             return new Vertex(id, 3, x, y, 0);
         }
 
-        static Vertex light(int id, int x, int y) {
+        public static Vertex light(int id, int x, int y) {
             return new Vertex(id, 4, x, y, 0);
         }
     }
@@ -73,7 +73,7 @@ final class WsuWorldWriter {
     }
 
     /** @return the world file's bytes */
-    static byte[] world(List<Vertex> vertices) {
+    public static byte[] world(List<Vertex> vertices) {
         return new WsuWorldWriter().write(vertices);
     }
 

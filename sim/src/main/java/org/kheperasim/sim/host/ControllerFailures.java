@@ -1,0 +1,61 @@
+package org.kheperasim.sim.host;
+
+import java.io.PrintWriter;
+import java.io.StringWriter;
+
+/** How a controller's failure is told to the student: which kind it is, and the part of its stack trace that is theirs. */
+final class ControllerFailures {
+    private ControllerFailures() {
+    }
+
+    static final String HEADLESS = "opened a window, but this run has no display (java.awt.HeadlessException):"
+            + " a controller's own windows open only in the simulator's window ('khepera-sim gui'), and close with"
+            + " its run. To run it headless too, open the window only when"
+            + " !java.awt.GraphicsEnvironment.isHeadless(). The controller was stopped and the robot's motors set to 0.";
+
+    static boolean isHeadless(Throwable e) {
+        for (Throwable t = e; t != null; t = t.getCause()) {
+            if (t.getClass().getName().equals("java.awt.HeadlessException")) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    static boolean isPolicyError(Throwable e) {
+        for (Throwable t = e; t != null; t = t.getCause()) {
+            if (t.getClass().getName().endsWith("ControllerPolicyError")) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    static String rootMessage(Throwable e) {
+        for (Throwable t = e; t != null; t = t.getCause()) {
+            if (t.getClass().getName().endsWith("ControllerPolicyError")) {
+                return t.getMessage();
+            }
+        }
+        return String.valueOf(e.getMessage());
+    }
+
+    /** The stack trace down to the first frame of the simulator's own code: the student's part. */
+    static String studentTrace(Throwable e) {
+        StringWriter out = new StringWriter();
+        e.printStackTrace(new PrintWriter(out));
+        StringBuilder kept = new StringBuilder();
+        for (String line : out.toString().split("\\R")) {
+            String t = line.trim();
+            if (t.startsWith("at org.kheperasim.sim.") || t.startsWith("at java.base/java.lang.Thread.run")) {
+                break;
+            }
+            if (t.startsWith("at java.base/jdk.internal.reflect.")) {
+                continue;
+            }
+            kept.append(line).append('\n');
+        }
+        return kept.toString().stripTrailing();
+    }
+
+}
