@@ -19,9 +19,13 @@ final class CapContacts {
     private double checkY;
     private double slack;
 
-    CapContacts(Caps caps, GripperModel gripper) {
+    /** The robot whose parts push: other robots block the caps it pushes. */
+    private final int robot;
+
+    CapContacts(Caps caps, GripperModel gripper, int robot) {
         this.caps = caps;
         this.gripper = gripper;
+        this.robot = robot;
     }
 
     /** @return how far any pushing part reaches from the robot's centre now, mm */
@@ -96,7 +100,7 @@ final class CapContacts {
                 continue;
             }
             for (int part = 0; part < parts; part++) {
-                if (overlap(part, px, py, pc, ps, i) > 0 && caps.reach(i, push[0], push[1], Caps.CHAIN - 1) < 1) {
+                if (overlap(part, px, py, pc, ps, i) > 0 && caps.reach(i, push[0], push[1], Caps.CHAIN - 1, robot) < 1) {
                     blocking = i;
                     return false;
                 }
@@ -129,7 +133,7 @@ final class CapContacts {
             }
             for (int part = 0; part < parts; part++) {
                 if (overlap(part, px, py, pc, ps, i) > 0) {
-                    caps.push(i, push[0], push[1], Caps.CHAIN - 1);
+                    caps.push(i, push[0], push[1], Caps.CHAIN - 1, robot);
                 }
             }
         }

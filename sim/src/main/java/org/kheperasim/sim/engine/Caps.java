@@ -32,13 +32,16 @@ final class Caps {
 
     private final OccupancyGrid grid;
     private final DistanceField field;
+    /** The robots: a cap cannot be pushed into one (but the one pushing it). */
+    private final Bodies bodies;
     private double[] x = new double[0];
     private double[] y = new double[0];
     private double[] r = new double[0];
     private int[] heldBy = new int[0];
     private int version;
 
-    Caps(OccupancyGrid grid, DistanceField field) {
+    Caps(OccupancyGrid grid, DistanceField field, Bodies bodies) {
+        this.bodies = bodies;
         this.grid = grid;
         this.field = field;
     }
@@ -140,10 +143,12 @@ final class Caps {
      * @param dx displacement, mm
      * @param dy displacement, mm
      * @param depth how many more caps may be shoved in a row behind this one
+     * @param pusher the robot pushing (the others block the cap), or -1
      * @return the fraction of the displacement it can travel, 0..1
      */
-    double reach(int i, double dx, double dy, int depth) {
-        double t = staticReach(i, dx, dy);
+    double reach(int i, double dx, double dy, int depth, int pusher) {
+        double t = StrictMath.min(staticReach(i, dx, dy),
+                bodies.freeFraction(pusher, x[i], y[i], r[i] + Khepera.BODY_RADIUS_MM, dx, dy));
         if (t == 0) {
             return 0;
         }
@@ -167,7 +172,7 @@ final class Caps {
             if (depth > 0 && d2 > 0) {
                 double d = Math.sqrt(d2);
                 double need = touch - d;
-                if (reach(j, ex / d * need, ey / d * need, depth - 1) >= 1) {
+                if (reach(j, ex / d * need, ey / d * need, depth - 1, pusher) >= 1) {
                     continue;
                 }
             }
@@ -182,8 +187,8 @@ final class Caps {
      *
      * @return the fraction travelled, 0..1
      */
-    double push(int i, double dx, double dy, int depth) {
-        double t = reach(i, dx, dy, depth);
+    double push(int i, double dx, double dy, int depth, int pusher) {
+        double t = reach(i, dx, dy, depth, pusher);
         if (t <= 0) {
             return 0;
         }
@@ -201,7 +206,7 @@ final class Caps {
                 if (d2 < touch * touch && d2 > 0) {
                     double d = Math.sqrt(d2);
                     double need = touch - d;
-                    push(j, ex / d * need, ey / d * need, depth - 1);
+                    push(j, ex / d * need, ey / d * need, depth - 1, pusher);
                 }
             }
         }

@@ -44,6 +44,9 @@ final class DriveBody {
     private double encoderLeft;
     private double encoderRight;
     private Contact contact = Contact.NONE;
+    /** The other robots, bodies to this one as walls are; and this robot's index among them. */
+    private final Bodies bodies;
+    private final int self;
     private boolean blocked;
     private int collisions;
     private double distance;
@@ -56,9 +59,11 @@ final class DriveBody {
     private double fullSin;
     private double chord = 1;
 
-    DriveBody(World world, double x, double y, double headingDeg, RobotModel.Motors motors, double readingNoise,
+    DriveBody(World world, int self, double x, double y, double headingDeg, RobotModel.Motors motors, double readingNoise,
             double calibrationLeft, double calibrationRight, CounterNoise noiseLeft, CounterNoise noiseRight) {
         this.field = world.field();
+        this.bodies = world.bodies();
+        this.self = self;
         this.mmPerPulse = motors.mmPerPulse();
         this.calibrationLeft = calibrationLeft;
         this.calibrationRight = calibrationRight;
@@ -72,6 +77,7 @@ final class DriveBody {
         this.cos = StrictMath.cos(h);
         this.sin = StrictMath.sin(h);
         this.clearance = clearanceAt(x, y);
+        bodies.add(self, x, y);
     }
 
     // ------------------------------------------------------------------ wheels and noise
@@ -200,6 +206,22 @@ final class DriveBody {
                 collisions++;
             }
         }
+        if (bodies.count() > 1) {
+            // Another robot stops this one as a wall does: it goes only as far as touching it.
+            double tx = nx - x;
+            double ty = ny - y;
+            double f = bodies.freeFraction(self, x, y, 2 * Khepera.BODY_RADIUS_MM, tx, ty);
+            if (f < 1) {
+                nx = x + f * tx;
+                ny = y + f * ty;
+                fraction *= f;
+                newClearance = clearanceAt(nx, ny);
+                if (!nowBlocked && !blocked) {
+                    collisions++;
+                }
+                nowBlocked = true;
+            }
+        }
         double c = cos * fullCos - sin * fullSin;
         double s = sin * fullCos + cos * fullSin;
         caps.clearBlocking();
@@ -228,8 +250,11 @@ final class DriveBody {
         turnAndMove(nx, ny, c, s);
         clearance = newClearance;
         count(common, diff, fraction);
+        int other = bodies.count() > 1 ? bodies.nearest(self, x, y, Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) : -1;
         if (clearance <= Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) {
             contact = sideOf(field.nearestObstacleX(x, y), field.nearestObstacleY(x, y));
+        } else if (other >= 0) {
+            contact = sideOf(bodies.x(other), bodies.y(other));
         } else if (caps.blocking() >= 0) {
             contact = sideOf(caps.blockingX(), caps.blockingY());
         } else {
@@ -264,6 +289,7 @@ final class DriveBody {
         y = ny;
         cos = c * n;
         sin = s * n;
+        bodies.moved(self, x, y);
     }
 
     private void count(double common, double diff, double fraction) {

@@ -39,9 +39,18 @@ final class ProximitySensing {
     private final double spikeRate;
     private final CounterNoise[] noise;
     private final RayHit hit = new RayHit();
+    /** The other robots: their bodies reflect the beams too. */
+    private final Bodies bodies;
+    private final int self;
+    /** Centres of the other robots within reach of a sample's beams, and how many. */
+    private double[] nearX = new double[4];
+    private double[] nearY = new double[4];
+    private int near;
 
-    ProximitySensing(World world, SensorPlacement placement, RobotModel model, Miscalibration calibration,
+    ProximitySensing(World world, int self, SensorPlacement placement, RobotModel model, Miscalibration calibration,
             CounterNoise[] noise) {
+        this.bodies = world.bodies();
+        this.self = self;
         this.grid = world.grid();
         this.field = world.field();
         this.caps = world.capSet();
@@ -55,7 +64,7 @@ final class ProximitySensing {
             raySin[r] = StrictMath.sin(StrictMath.toRadians(RAY_ANGLES_DEG[r]));
         }
         this.reflectance = p.reflectance();
-        this.maxReflectance = StrictMath.max(reflectance[1], StrictMath.max(reflectance[2], reflectance[3]));
+        this.maxReflectance = StrictMath.max(StrictMath.max(reflectance[1], reflectance[4]), StrictMath.max(reflectance[2], reflectance[3]));
         this.gain = calibration.proxGain;
         this.offset = calibration.proxOffset;
         for (int i = 0; i < IrSensor.COUNT; i++) {
@@ -84,7 +93,8 @@ final class ProximitySensing {
                 : caps.nearestSurface(robotX, robotY) - SensorPlacement.REACH_MM;
         // Nothing within range of any sensor: every beam is empty (the clearance estimate is within
         // NEAR_MM above the true one, and no sensor is farther than REACH_MM from the centre).
-        boolean open = capFree >= range
+        gatherRobots(robotX, robotY);
+        boolean open = capFree >= range && near == 0
                 && field.clearance(robotX, robotY) - DriveBody.NEAR_MM - SensorPlacement.REACH_MM >= range;
         if (!open) {
             placement.place(robotX, robotY, c, s);
@@ -102,6 +112,9 @@ final class ProximitySensing {
             double free = field.clearance(px, py);
             if (capFree < free) {
                 free = StrictMath.min(free, capsAhead(px, py, dx, dy));
+            }
+            if (near > 0) {
+                free = StrictMath.min(free, robotsFrom(px, py));
             }
             if (free < range) {
                 raw = beams(px, py, dx, dy, StrictMath.max(0, free - DriveBody.NEAR_MM));
@@ -139,9 +152,18 @@ final class ProximitySensing {
             }
             double rx = dx * rayCos[r] - dy * raySin[r];
             double ry = dy * rayCos[r] + dx * raySin[r];
-            double d = skip + grid.castRay(px + skip * rx, py + skip * ry, rx, ry, StrictMath.min(range, reach) - skip, hit);
+            double limit = StrictMath.min(range, reach);
+            double d = skip + grid.castRay(px + skip * rx, py + skip * ry, rx, ry, limit - skip, hit);
+            double reflect = d == Double.POSITIVE_INFINITY ? 0 : reflectanceOf(hit.id);
+            if (near > 0) {
+                double dr = robotAlong(px, py, rx, ry);
+                if (dr < d && dr <= limit) {
+                    d = dr;
+                    reflect = reflectance[ROBOT];
+                }
+            }
             if (d != Double.POSITIVE_INFINITY) {
-                double v = RAY_WEIGHTS[r] * reflectanceOf(hit.id) * profile.valueAt(d);
+                double v = RAY_WEIGHTS[r] * reflect * profile.valueAt(d);
                 if (v > raw) {
                     raw = v;
                 }
@@ -170,6 +192,62 @@ final class ProximitySensing {
             if (d < best) {
                 best = d;
             }
+        }
+        return best;
+    }
+
+    /** Index of another robot's body in the reflectance table. */
+    private static final int ROBOT = 4;
+
+    /** Note the other robots whose bodies a beam of this sample could reach. */
+    private void gatherRobots(double robotX, double robotY) {
+        near = 0;
+        if (bodies.count() < 2) {
+            return;
+        }
+        bodies.visit(self, robotX, robotY, SensorPlacement.REACH_MM + range + Khepera.BODY_RADIUS_MM, (k, dx, dy) -> {
+            double reachable = SensorPlacement.REACH_MM + range + Khepera.BODY_RADIUS_MM;
+            if (dx * dx + dy * dy >= reachable * reachable) {
+                return;
+            }
+            if (near == nearX.length) {
+                nearX = java.util.Arrays.copyOf(nearX, near * 2);
+                nearY = java.util.Arrays.copyOf(nearY, near * 2);
+            }
+            nearX[near] = robotX + dx;
+            nearY[near] = robotY + dy;
+            near++;
+        });
+    }
+
+    /** @return the distance from a sensor to the nearest of those robots' surfaces, mm */
+    private double robotsFrom(double px, double py) {
+        double best = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < near; k++) {
+            double ex = nearX[k] - px;
+            double ey = nearY[k] - py;
+            best = StrictMath.min(best, StrictMath.sqrt(ex * ex + ey * ey) - Khepera.BODY_RADIUS_MM);
+        }
+        return best;
+    }
+
+    /** @return how far a beam from (px, py) along the unit vector (rx, ry) goes before it meets one of those robots, mm */
+    private double robotAlong(double px, double py, double rx, double ry) {
+        double best = Double.POSITIVE_INFINITY;
+        double rr = Khepera.BODY_RADIUS_MM * Khepera.BODY_RADIUS_MM;
+        for (int k = 0; k < near; k++) {
+            double wx = nearX[k] - px;
+            double wy = nearY[k] - py;
+            double b = wx * rx + wy * ry;
+            double c = wx * wx + wy * wy - rr;
+            if (c <= 0) {
+                return 0;
+            }
+            double disc = b * b - c;
+            if (b <= 0 || disc < 0) {
+                continue;
+            }
+            best = StrictMath.min(best, b - StrictMath.sqrt(disc));
         }
         return best;
     }

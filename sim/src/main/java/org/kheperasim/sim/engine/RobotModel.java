@@ -59,7 +59,7 @@ public record RobotModel(Stepping stepping, Link link, Noise noise, Proximity pr
      * @param noiseAbs per-reading noise σ, counts
      * @param noiseRel per-reading noise σ relative to the signal
      * @param spikeRate probability of a spurious reading
-     * @param reflectance by occupancy id: floor, wall, light, cap
+     * @param reflectance by occupancy id: floor, wall, light, cap; then another robot's body
      * @param gain per-sensor gain
      * @param noiseScale per-sensor noise multiplier
      * @param dead per-sensor failure (reads 0)
@@ -134,7 +134,7 @@ public record RobotModel(Stepping stepping, Link link, Noise noise, Proximity pr
                         s.number("prox.gainSpread"), s.number("prox.noiseAbs"), s.number("prox.noiseRel"),
                         s.number("prox.spikeRate"),
                         new double[] {0, s.number("prox.reflect.wall"), s.number("prox.reflect.light"),
-                            s.number("prox.reflect.cap")},
+                            s.number("prox.reflect.cap"), s.number("prox.reflect.robot")},
                         proxGain, proxNoise, proxDead),
                 new Light(s.number("light.dark"), s.number("light.bright"), s.number("light.darkSpread"),
                         s.number("light.flickerRate"), s.number("light.flickerDepth"), s.number("light.noiseRel"),

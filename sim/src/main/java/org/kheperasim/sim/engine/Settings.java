@@ -41,6 +41,8 @@ public final class Settings {
         num("prox.reflect.wall", "1", 0, 10, "reflectance of walls relative to the white reference wall");
         num("prox.reflect.light", "1", 0, 10, "reflectance of light sources");
         num("prox.reflect.cap", "1", 0, 10, "reflectance of bottle caps");
+        num("prox.reflect.robot", "0.8", 0, 10, "reflectance of another robot's body (its dark plastic reflects less than"
+                + " the white reference wall)");
         num("light.dark", "480", 0, 1023, "ambient-light reading in darkness, counts (lower = brighter)");
         num("light.bright", "20", 0, 1023, "ambient-light reading right next to a lamp, counts");
         num("light.darkSpread", "10", 0, 1023, "per-robot spread of each sensor's darkness value, standard deviation, counts");

@@ -30,6 +30,9 @@ public final class SimRobot implements RobotLink.Robot {
     private final LightSensing light;
     private final GripperModel gripper;
     private final CapContacts capContacts;
+    private final Bodies bodies;
+    /** Another robot's surface farther than this from the centre is out of every sensor's reach, mm. */
+    private final double unseenMm;
     private final RobotLink link;
     private final OnBoardControl onBoard;
     private final Coverage coverage;
@@ -63,15 +66,17 @@ public final class SimRobot implements RobotLink.Robot {
         CounterNoise motorLeft = new CounterNoise(random.nextLong());
         CounterNoise motorRight = new CounterNoise(random.nextLong());
         Miscalibration calibration = new Miscalibration(model, systematic);
-        this.body = new DriveBody(world, start.x(), start.y(), start.headingDeg(), model.motors(),
+        this.body = new DriveBody(world, id, start.x(), start.y(), start.headingDeg(), model.motors(),
                 model.noise().reading(), calibration.calibrationLeft, calibration.calibrationRight, motorLeft, motorRight);
-        this.proximity = new ProximitySensing(world, placement, model, calibration, proxNoise);
+        this.proximity = new ProximitySensing(world, id, placement, model, calibration, proxNoise);
         this.light = new LightSensing(world, placement, model, calibration, lightNoise);
         this.gripper = new GripperModel(id, world, body, model.gripper());
-        this.capContacts = new CapContacts(world.capSet(), gripper);
+        this.capContacts = new CapContacts(world.capSet(), gripper, id);
         this.gripperPort = new GripperPort(gripper);
         this.onBoard = new OnBoardControl(this, body, gripper);
         this.coverage = new Coverage(world, start.x(), start.y());
+        this.bodies = world.bodies();
+        this.unseenMm = SensorPlacement.REACH_MM + model.proximity().profile().rangeMm() + 1;
         this.link = new RobotLink(model.link().timing(), this);
         body.preview(0, sense);
         link.prime();
@@ -119,11 +124,27 @@ public final class SimRobot implements RobotLink.Robot {
         if (body.still()) {
             return Long.MAX_VALUE;
         }
-        double free = StrictMath.min(body.freeTravelMm(),
+        double free = StrictMath.min(StrictMath.min(body.freeTravelMm(), othersFreeTravelMm()),
                 StrictMath.min(capContacts.freeTravelMm(body.x(), body.y()), coverage.freeTravelMm(body.x(), body.y())));
         double ticks = (free - 1e-6) / body.travelPerTickMm();
         return ticks >= 1 ? (long) StrictMath.min(ticks, 1e15) : 0;
     }
+
+    /**
+     * How far this robot may glide with the other robots in mind: while it glides they stay out of
+     * its sensors' reach and it out of theirs, so no beam could see a robot in between. Every robot
+     * that moves takes at most half the gap to its nearest neighbour, so two of them never close it.
+     */
+    private double othersFreeTravelMm() {
+        if (bodies.count() < 2) {
+            return Double.POSITIVE_INFINITY;
+        }
+        double gap = bodies.surface(id, body.x(), body.y(), LOOK_MM);
+        return (StrictMath.min(gap, LOOK_MM) - unseenMm) * 0.5;
+    }
+
+    /** How far it looks for other robots when it glides, mm. */
+    private static final double LOOK_MM = 400;
 
     /**
      * Move through {@code ticks} ticks ending at {@code endNanos}: a glide, which {@link #glideTicks}

@@ -20,13 +20,15 @@ public final class World {
     private int freeCells;
 
     private final Caps caps;
+    private final Bodies bodies;
 
     /** @param arena the arena to build the world from */
     public World(Arena arena) {
         this.arena = arena;
         this.grid = OccupancyGrid.of(arena);
         this.field = DistanceField.of(grid);
-        this.caps = new Caps(grid, field);
+        this.bodies = new Bodies(arena.width(), arena.height());
+        this.caps = new Caps(grid, field, bodies);
         caps.load(arena.caps());
         this.freeCells = countFree();
     }
@@ -88,6 +90,11 @@ public final class World {
     }
 
     /** @return the bottle caps */
+    /** @return where the robots' bodies are */
+    Bodies bodies() {
+        return bodies;
+    }
+
     Caps capSet() {
         return caps;
     }
