@@ -2,7 +2,11 @@ package org.kheperasim.sim.cli;
 
 import java.io.PrintStream;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
 import java.util.concurrent.Callable;
 import org.kheperasim.link.tool.CliNumbers;
 import org.kheperasim.link.tool.ControllerOptions;
@@ -63,6 +67,12 @@ final class RunCommand implements Callable<Integer> {
             description = "real seconds without an API call after which a controller counts as hung, > 0 (default: ${DEFAULT-VALUE})")
     double hangTimeout;
 
+    @Option(names = "--robot", paramLabel = "N:KEY=VALUE",
+            description = {"give robot N (0 for the arena's first robot line) its own controller or setting; repeatable:",
+                "--robot 1:controller=Braitenberg --robot 1:motor.left.calibration=0.8 (KEY is 'controller' or a"
+                        + " setting name from 'khepera-sim settings')"})
+    List<String> robotOptions = new ArrayList<>();
+
     @Option(names = "--json", description = "print one JSON object with the result (messages go to standard error)")
     boolean json;
 
@@ -89,6 +99,7 @@ final class RunCommand implements Callable<Integer> {
                         info.println(line.format());
                     }
                 });
+        robots(settings, run);
         if (seed != null) {
             run.seed(seed);
         }
@@ -100,6 +111,38 @@ final class RunCommand implements Callable<Integer> {
         }
         info.println("seed " + run.seed());
         return StopOnSignal.run(run, hangTimeout, this::report);
+    }
+
+    /** Apply the {@code --robot N:KEY=VALUE} options: a robot's own controller and settings. */
+    private void robots(Settings base, Simulation.Builder run) {
+        Map<Integer, String> controllers = new TreeMap<>();
+        Map<Integer, Settings> own = new TreeMap<>();
+        for (String o : robotOptions) {
+            int colon = o.indexOf(':');
+            int eq = o.indexOf('=', colon + 1);
+            int index;
+            try {
+                index = colon > 0 ? Integer.parseInt(o.substring(0, colon).strip()) : -1;
+            } catch (NumberFormatException e) {
+                index = -1;
+            }
+            if (index < 0 || eq < 0 || eq == colon + 1) {
+                throw new IllegalArgumentException("--robot '" + o + "': expected N:KEY=VALUE with N a robot's index from 0,"
+                        + " e.g. --robot 1:controller=Braitenberg or --robot 1:motor.left.calibration=0.8");
+            }
+            String key = o.substring(colon + 1, eq).strip();
+            String value = o.substring(eq + 1).strip();
+            if (key.equals("controller")) {
+                controllers.put(index, value);
+            } else {
+                own.put(index, own.getOrDefault(index, base).with(key, value));
+            }
+        }
+        java.util.Set<Integer> robots = new java.util.TreeSet<>(controllers.keySet());
+        robots.addAll(own.keySet());
+        for (int i : robots) {
+            run.robot(i, controllers.get(i), own.get(i));
+        }
     }
 
     private int report(RunResult result) {

@@ -48,6 +48,7 @@ public final class RunSession implements AutoCloseable {
     private long sampleNanos;
     /** Closes the windows the controllers open, when the run ends (in the window mode). */
     private final ControllerWindows windows = ControllerWindows.Installed.get();
+    private final List<RobotSetup> setups;
     private final Object windowsMark;
     private boolean closed;
 
@@ -65,19 +66,41 @@ public final class RunSession implements AutoCloseable {
      */
     public RunSession(Arena arena, String controllerName, ControllerCatalog catalog, long seed, Settings settings,
             ConsoleSink console, ControllerHost.Options hostOptions) {
+        this(arena, java.util.Collections.nCopies(Objects.requireNonNull(arena, "no arena given").robots().size(),
+                new RobotSetup(Objects.requireNonNull(controllerName, "no controller given"), settings)),
+                catalog, seed, console, hostOptions);
+    }
+
+    /**
+     * Set up a run whose robots each have their own controller and settings.
+     *
+     * @param arena the arena
+     * @param setups one per robot of the arena, in order
+     * @param catalog where controller classes come from
+     * @param seed the run's seed
+     * @param console where controller messages and errors go
+     * @param hostOptions hang timeout and test jitter
+     */
+    public RunSession(Arena arena, List<RobotSetup> setups, ControllerCatalog catalog, long seed, ConsoleSink console,
+            ControllerHost.Options hostOptions) {
         this.arena = Objects.requireNonNull(arena, "no arena given");
-        Objects.requireNonNull(controllerName, "no controller given");
+        if (setups.size() != arena.robots().size()) {
+            throw new IllegalArgumentException("the arena " + arena.name() + " has " + arena.robots().size()
+                    + " robots, but " + setups.size() + " robot setups were given");
+        }
+        this.setups = List.copyOf(setups);
         this.seed = seed;
-        this.settings = settings;
+        this.settings = setups.get(0).settings();
         this.engine = new Engine(new World(arena), seed);
         this.windowsMark = windows.mark();
         String cls = null;
         for (int i = 0; i < arena.robots().size(); i++) {
             Pose start = arena.robots().get(i);
-            Class<?> type = catalog.load(controllerName);
-            cls = type.getName();
+            RobotSetup setup = setups.get(i);
+            Class<?> type = catalog.load(setup.controller());
+            cls = cls == null ? type.getName() : cls;
             String name = arena.robots().size() == 1 ? type.getSimpleName() : type.getSimpleName() + "#" + i;
-            SimRobot robot = engine.addRobot(name, start, settings);
+            SimRobot robot = engine.addRobot(name, start, setup.settings());
             ControllerHost host = new ControllerHost(robot, type, console, hostOptions);
             engine.attach(robot, host, r -> host.status().name().toLowerCase(Locale.ROOT));
             hosts.add(host);
@@ -100,6 +123,12 @@ public final class RunSession implements AutoCloseable {
         header.put("controller", controllerClass);
         header.put("settings", settings.describe());
         header.put("sample-ms", Long.toString(sampleMillis));
+        if (setups.stream().distinct().count() > 1) {
+            // Robots with controllers or settings of their own: each is named (one robot's run keeps the old header).
+            for (int i = 0; i < setups.size(); i++) {
+                header.put("robot-" + i, hosts.get(i).type().getName() + " settings " + setups.get(i).settings().describe());
+            }
+        }
         trace = new TraceWriter(out, header);
         sampleNanos = sampleMillis * Engine.TICK_NANOS;
         engine.addListener(trace, sampleNanos);

@@ -61,6 +61,26 @@ public final class Simulation {
         private boolean trusted;
         private EditLog edits = new EditLog();
         private BooleanSupplier stop = () -> false;
+        private final java.util.Map<Integer, String> robotOverrides = new java.util.TreeMap<>();
+        private final java.util.Map<Integer, Settings> robotSettingOverrides = new java.util.TreeMap<>();
+
+        /** @return one setup per robot of the arena: the run's, but where a robot has its own */
+        List<RobotSetup> setups() {
+            int n = arena.robots().size();
+            for (int i : robotOverrides.keySet()) {
+                if (i < 0 || i >= n) {
+                    throw new IllegalArgumentException("robot " + i + " was given a controller or settings, but the arena "
+                            + arena.name() + " has robots 0.." + (n - 1));
+                }
+            }
+            List<RobotSetup> out = new ArrayList<>();
+            for (int i = 0; i < n; i++) {
+                String c = robotOverrides.get(i);
+                Settings s = robotSettingOverrides.get(i);
+                out.add(new RobotSetup(c != null ? c : controllerName, s != null ? s : settings));
+            }
+            return out;
+        }
 
         /** @param arena the arena @return this */
         public Builder arena(Arena arena) {
@@ -76,6 +96,21 @@ public final class Simulation {
         /** @param name a bundled controller or a class on the classpath @return this */
         public Builder controller(String name) {
             this.controllerName = name;
+            return this;
+        }
+
+        /**
+         * Give one robot of the arena its own controller and settings (the others keep
+         * {@link #controller} and {@link #settings}).
+         *
+         * @param index the robot, 0 for the arena's first {@code robot} line
+         * @param controller its controller, or null to keep the run's
+         * @param robotSettings its settings, or null to keep the run's
+         * @return this
+         */
+        public Builder robot(int index, String controller, Settings robotSettings) {
+            robotOverrides.put(index, controller);
+            robotSettingOverrides.put(index, robotSettings);
             return this;
         }
 
@@ -221,8 +256,8 @@ public final class Simulation {
         long seed = b.seed();
         long endNanos = (long) StrictMath.rint(b.seconds * 1e9);
         b.edits.checkWithin(endNanos);
-        RunSession session = new RunSession(b.arena, b.controllerName, new ControllerCatalog(b.classpath, b.trusted), seed,
-                b.settings, b.console, b.hostOptions);
+        RunSession session = new RunSession(b.arena, b.setups(), new ControllerCatalog(b.classpath, b.trusted), seed,
+                b.console, b.hostOptions);
         for (Subscription l : b.listeners) {
             session.addListener(l.listener(), l.periodNanos());
         }
