@@ -47,11 +47,23 @@ final class BenchCommand implements Callable<Integer> {
             description = "scatter N more caps over the arena's free floor, on an even lattice (default: ${DEFAULT-VALUE})")
     int addCaps;
 
+    @Option(names = "--robots", defaultValue = "0", paramLabel = "N", converter = CliNumbers.NonNegativeInt.class,
+            description = "instead of --arena: a walled square made for N robots, one per 200 mm cell, all running the"
+                    + " controller (default: the arena's own robots)")
+    int robots;
+
     private Arena scenario;
 
     @Override
     public Integer call() {
-        scenario = withCaps(ArenaFormat.resolve(arena), addCaps);
+        if (robots > org.kheperasim.sim.arena.ArenaLimits.MAX_ROBOTS) {
+            throw new IllegalArgumentException("--robots " + robots + ": at most "
+                    + org.kheperasim.sim.arena.ArenaLimits.MAX_ROBOTS + " robots");
+        }
+        scenario = withCaps(robots > 0 ? Swarm.arena(robots) : ArenaFormat.resolve(arena), addCaps);
+        if (robots > 0) {
+            arena = scenario.name();
+        }
         System.out.printf(Locale.ROOT, "benchmark: %s in %s with %d caps, %.0f simulated s per run, %d runs after a warm-up,"
                 + " %d cores, %s%n", controller, arena, scenario.caps().size(), seconds, runs,
                 Runtime.getRuntime().availableProcessors(),
@@ -68,11 +80,16 @@ final class BenchCommand implements Callable<Integer> {
         sorted.sort(null);
         System.out.printf(Locale.ROOT, "median: %,.0f simulated seconds per wall second (min %,.0f, max %,.0f)%n",
                 sorted.get(sorted.size() / 2), sorted.get(0), sorted.get(sorted.size() - 1));
+        Swarm.printSetUpAndMemory(() -> run(seed + runs, 0.001));
         return 0;
     }
 
     private RunResult run(long runSeed) {
-        return Simulation.builder().arena(scenario).controller(controller).seconds(seconds).seed(runSeed).run();
+        return run(runSeed, seconds);
+    }
+
+    private RunResult run(long runSeed, double runSeconds) {
+        return Simulation.builder().arena(scenario).controller(controller).seconds(runSeconds).seed(runSeed).run();
     }
 
     /**

@@ -6,7 +6,7 @@ import java.util.concurrent.locks.LockSupport;
  * The turn: exactly one thread of a run, its holder, runs at any moment: the run's owner or one
  * controller thread. The holder passes the turn by naming the next holder's {@link Seat}; a thread
  * waiting for the turn spins for a short while (only where there are spare cores), then parks until
- * it is handed the turn. This class is the whole hand-off protocol; who gets the turn next is the
+ * it is handed the turn (it spins only when its turn typically comes back soon). This class is the whole hand-off protocol; who gets the turn next is the
  * engine's decision (see {@link Lockstep}).
  */
 final class Turn {
@@ -16,6 +16,8 @@ final class Turn {
      * cost a millisecond on a virtual machine.
      */
     private static final long SPIN_NANOS = Long.getLong("kheperasim.spinMicros", 5_000) * 1000;
+    /** A thread spins only when its turn typically comes back within this much real time. */
+    private static final long SPIN_WORTH_NANOS = Long.getLong("kheperasim.spinWorthMicros", 100) * 1000;
     /** Threads may spin while they leave a core for the holder: cores − 1 at most. */
     private static final int MAX_SPINNERS = Runtime.getRuntime().availableProcessors() - 1;
     /** Threads spinning now, across every run in this JVM. */
@@ -25,6 +27,13 @@ final class Turn {
     static final class Seat {
         private volatile Thread thread;
         private volatile boolean parked;
+        /**
+         * How long this seat's thread typically waits for its turn, real ns (a moving average):
+         * spinning pays only when the turn comes back soon, as between a lone controller and the
+         * engine; with many controllers, or a busy machine, the wait is long and the thread parks at
+         * once instead of burning a core the holder could use.
+         */
+        long typicalWaitNanos;
         /** The monitor whose real {@code wait} the seat's thread waits in for its turn, or null. */
         volatile Object waitMonitor;
 
@@ -96,11 +105,11 @@ final class Turn {
         if (holder == me) {
             return;
         }
-        if (reserveSpin()) {
+        long start = System.nanoTime();
+        if (me.typicalWaitNanos < SPIN_WORTH_NANOS && reserveSpin()) {
             try {
-                long spinStart = System.nanoTime();
                 int spins = 0;
-                while (holder != me && spinning(++spins, spinStart)) {
+                while (holder != me && spinning(++spins, start)) {
                     // spin
                 }
             } finally {
@@ -120,6 +129,7 @@ final class Turn {
         if (interrupted) {
             Thread.currentThread().interrupt();
         }
+        me.typicalWaitNanos += (System.nanoTime() - start - me.typicalWaitNanos) / 8;
     }
 
     /** @return true when this thread may spin (a core is free for it); it must then release the slot */
