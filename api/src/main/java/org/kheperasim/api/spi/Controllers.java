@@ -12,6 +12,7 @@ import java.util.ServiceLoader;
 import org.kheperasim.api.Controller;
 import org.kheperasim.api.CurrentRobotState;
 import org.kheperasim.api.MessagePasser;
+import org.kheperasim.api.StepController;
 
 /**
  * The controller contract, applied the same way by every backend: how a controller class is
@@ -34,6 +35,16 @@ public final class Controllers {
      */
     public static void check(Class<?> type) {
         String name = type.getName();
+        if (isStep(type)) {
+            if (Modifier.isAbstract(type.getModifiers())) {
+                throw new ControllerException("Controller " + name + " is abstract: name a concrete subclass");
+            }
+            if (classicConstructor(type) == null && noArgConstructor(type) == null) {
+                throw new ControllerException("Step controller " + name + " has no constructor with no parameters (or "
+                        + type.getSimpleName() + "(CurrentRobotState, MessagePasser)): add one");
+            }
+            return;
+        }
         if (!Thread.class.isAssignableFrom(type)) {
             styleOf(type).check(type);
             return;
@@ -60,6 +71,9 @@ public final class Controllers {
      */
     public static Thread instantiate(Class<?> type, CurrentRobotState state, MessagePasser messages) {
         check(type);
+        if (isStep(type)) {
+            return new StepRunner(instantiateStep(type, state, messages), RobotPorts.of(state));
+        }
         if (!Thread.class.isAssignableFrom(type)) {
             return styleOf(type).instantiate(type, RobotPorts.of(state), messages);
         }
@@ -72,6 +86,47 @@ public final class Controllers {
             ControllerBinding.bind(new ControllerBinding(state, messages));
             try {
                 return (Thread) noArg.newInstance();
+            } finally {
+                ControllerBinding.bind(null);
+            }
+        } catch (InvocationTargetException e) {
+            Throwable cause = e.getCause();
+            throw new ControllerException("The constructor of controller " + type.getName() + " threw "
+                    + cause + "; fix the constructor (see the cause below)", cause);
+        } catch (ReflectiveOperationException e) {
+            throw new ControllerException("Controller " + type.getName() + " could not be created: " + e
+                    + "; make the class and its constructor public", e);
+        }
+    }
+
+    /**
+     * @param type a loaded class
+     * @return true for a {@link StepController}: a backend may step it inline instead of starting
+     *     the thread {@link #instantiate} wraps it in
+     */
+    public static boolean isStep(Class<?> type) {
+        return StepController.class.isAssignableFrom(type);
+    }
+
+    /**
+     * Construct a step controller, to be stepped inline by the backend.
+     *
+     * @param type a {@link StepController} class (see {@link #check})
+     * @param state the robot's live state to hand it
+     * @param messages its message channel
+     * @return the controller
+     * @throws ControllerException when the class is unusable or its constructor throws
+     */
+    public static StepController instantiateStep(Class<?> type, CurrentRobotState state, MessagePasser messages) {
+        check(type);
+        try {
+            Constructor<?> classic = classicConstructor(type);
+            if (classic != null) {
+                return (StepController) classic.newInstance(state, messages);
+            }
+            ControllerBinding.bind(new ControllerBinding(state, messages));
+            try {
+                return (StepController) noArgConstructor(type).newInstance();
             } finally {
                 ControllerBinding.bind(null);
             }
@@ -136,7 +191,7 @@ public final class Controllers {
             known.add(style.describe());
         }
         StringBuilder ways = new StringBuilder("a Thread subclass (as in the Appendix: 'public class Robot extends"
-                + " Thread') or extends org.kheperasim.api.Controller");
+                + " Thread'), or extends org.kheperasim.api.Controller or org.kheperasim.api.StepController");
         for (String way : known) {
             ways.append(", or ").append(way);
         }

@@ -97,6 +97,30 @@ class RobotRunPtyTest {
     }
 
     @Test
+    void aStepControllerRunsOnTheRealRobotSteppedEveryPeriodAndEndsWithTheRobotStopped() throws Exception {
+        try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null)) {
+            FakeKhepera robot = fake.robot();
+            Class<?> step = new ControllerLoader(List.of()).load("StepBraitenberg");
+            RobotRun.Result r = run(fake, step, RobotSettings.defaults(), 2000, rb -> {
+                try {
+                    Thread.sleep(700);          // nothing in sight: cruising at (6, 6)
+                    rb.setProximity(0, 0, 700, 0, 0, 0, 0, 0);
+                    Thread.sleep(700);          // something ahead on the left: a later step spins right (4, -4)
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            });
+            assertEquals(RobotRun.End.TIME_UP, r.end(), r.detail());
+            List<String> d = robot.received().stream().filter(l -> l.startsWith("D")).toList();
+            int cruise = d.indexOf("D,6,6");
+            int spin = d.indexOf("D,4,-4");
+            assertTrue(cruise >= 0 && cruise < spin, "the steps' speeds reached the robot, in order: " + d);
+            assertTrue(r.pollRateHz() > 5, "the sensors were polled for the steps: " + r.pollRateHz());
+            assertStoppedLast(robot);
+        }
+    }
+
+    @Test
     void garbageDroppedLateAndBannerFaultsAreSurvived() throws Exception {
         try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null)) {
             FakeKhepera robot = fake.robot();

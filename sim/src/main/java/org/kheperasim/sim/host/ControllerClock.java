@@ -16,7 +16,7 @@ import org.kheperasim.sim.engine.RobotDriver;
  * friends onto this clock (through {@link SimClock}); calls from any other thread fall through to
  * the real ones.
  */
-final class ControllerClock implements SimClock.Clock {
+final class ControllerClock implements SimClock.Clock, PortClock {
     /**
      * Robot time starts at the Appendix controller's creation date, 2001-07-27T11:06:00Z, so
      * currentTimeMillis looks plausible (a literal: parsing the date would load the java.time
@@ -46,7 +46,8 @@ final class ControllerClock implements SimClock.Clock {
     }
 
     /** @return the controller's simulated time now, ns */
-    long now() {
+    @Override
+    public long now() {
         return now;
     }
 
@@ -71,7 +72,8 @@ final class ControllerClock implements SimClock.Clock {
     }
 
     /** Every API call starts here: the lockstep check. */
-    void enter() {
+    @Override
+    public void enter() {
         if (!onTurn()) {
             if (host.status() == ControllerStatus.NOT_STARTED) {
                 return; // the controller's constructor looking around: free, no time passes
@@ -99,7 +101,8 @@ final class ControllerClock implements SimClock.Clock {
     }
 
     /** Every API call ends here: it costs its simulated time. */
-    void leave() {
+    @Override
+    public void leave() {
         now += apiCostNanos;
     }
 
@@ -141,7 +144,7 @@ final class ControllerClock implements SimClock.Clock {
             }
             RobotDriver next;
             try {
-                next = lockstep.engine().advance();
+                next = lockstep.advance();
             } catch (RuntimeException | Error e) {
                 lockstep.engineFailed(e);
                 next = null;
@@ -261,7 +264,8 @@ final class ControllerClock implements SimClock.Clock {
     }
 
     /** A line from the controller's code for the run's console. */
-    void say(ConsoleLine.Kind kind, String text) {
+    @Override
+    public void say(ConsoleLine.Kind kind, String text) {
         host.say(kind, text);
     }
 

@@ -19,7 +19,7 @@ import org.kheperasim.sim.engine.SimRobot;
  * <p>A controller that runs for {@code hangTimeout} of real time without an API call is reported by
  * name with the simulated time, and stopped; the engine never hangs on it.
  */
-public final class ControllerHost implements RobotDriver {
+public final class ControllerHost implements HostedController {
 
     /** Tuning of a host that is not part of the simulation's result. */
     public record Options(long hangTimeoutNanos, int jitterMaxMicros) {
@@ -74,7 +74,7 @@ public final class ControllerHost implements RobotDriver {
         this.name = type.getSimpleName();
         this.console = console;
         this.clock = new ControllerClock(this, threads, robot.model().link().apiCostNanos(), options.jitterMaxMicros());
-        SimulatedRobotPort port = new SimulatedRobotPort(robot, clock, this);
+        SimulatedRobotPort port = new SimulatedRobotPort(robot, clock);
         // The clock is inheritable: binding it while the controller's Thread object is constructed
         // gives it to the controller thread, and only to it.
         SimClock.bind(clock);

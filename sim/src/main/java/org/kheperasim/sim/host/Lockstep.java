@@ -26,6 +26,7 @@ public final class Lockstep {
 
     private final Engine engine;
     private final List<ControllerHost> hosts;
+    private final List<StepHost> steps;
     private final Map<RobotDriver, ControllerHost> byDriver = new IdentityHashMap<>();
     private final long hangTimeoutNanos;
     private final Turn.Seat owner = new Turn.Seat(null);
@@ -38,7 +39,18 @@ public final class Lockstep {
      * @param hangTimeoutNanos real time without progress after which a controller is hung
      */
     public Lockstep(Engine engine, List<ControllerHost> hosts, long hangTimeoutNanos) {
+        this(engine, hosts, List.of(), hangTimeoutNanos);
+    }
+
+    /**
+     * @param engine the engine whose drivers are the hosts
+     * @param hosts the thread-style controller hosts attached to it
+     * @param steps the step controllers attached to it, stepped inline by whoever holds the turn
+     * @param hangTimeoutNanos real time without progress after which a controller is hung
+     */
+    public Lockstep(Engine engine, List<ControllerHost> hosts, List<StepHost> steps, long hangTimeoutNanos) {
         this.engine = engine;
+        this.steps = List.copyOf(steps);
         this.hosts = new ArrayList<>(hosts);
         this.hangTimeoutNanos = hangTimeoutNanos;
         for (ControllerHost h : hosts) {
@@ -68,7 +80,7 @@ public final class Lockstep {
         HeapWatch.listen(heapFull);
         try {
             while (true) {
-                RobotDriver next = engine.advance();
+                RobotDriver next = advance();
                 if (next == null) {
                     return;
                 }
@@ -97,10 +109,28 @@ public final class Lockstep {
         }
     };
 
+    /**
+     * Advance the world until a thread-style controller must run: the step controllers that fall
+     * due on the way are stepped here, inline, by whoever holds the turn.
+     *
+     * @return the controller to hand the turn to, or null when the run is over
+     */
+    RobotDriver advance() {
+        RobotDriver next = engine.advance();
+        while (next instanceof StepHost step) {
+            step.step();
+            next = engine.advance();
+        }
+        return next;
+    }
+
     /** Stop every controller (at the end of a run); returns when they have unwound or been left behind. */
     public void stopAll() {
         for (ControllerHost h : hosts) {
             h.stop();
+        }
+        for (StepHost s : steps) {
+            s.stop();
         }
     }
 

@@ -13,13 +13,11 @@ import org.kheperasim.sim.engine.SimRobot;
  */
 final class SimulatedRobotPort implements RobotPort {
     private final SimRobot robot;
-    private final ControllerClock clock;
-    private final ControllerHost host;
+    private final PortClock clock;
 
-    SimulatedRobotPort(SimRobot robot, ControllerClock clock, ControllerHost host) {
+    SimulatedRobotPort(SimRobot robot, PortClock clock) {
         this.robot = robot;
         this.clock = clock;
-        this.host = host;
     }
 
     @Override
@@ -149,7 +147,7 @@ final class SimulatedRobotPort implements RobotPort {
     @Override
     public void message(String text) {
         clock.enter();
-        host.say(ConsoleLine.Kind.MESSAGE, text);
+        clock.say(ConsoleLine.Kind.MESSAGE, text);
         clock.leave();
     }
 }

@@ -17,7 +17,10 @@ import org.kheperasim.sim.engine.Snapshot;
 import org.kheperasim.sim.engine.SnapshotListener;
 import org.kheperasim.sim.engine.World;
 import org.kheperasim.sim.host.ConsoleSink;
+import org.kheperasim.api.spi.Controllers;
 import org.kheperasim.sim.host.ControllerHost;
+import org.kheperasim.sim.host.HostedController;
+import org.kheperasim.sim.host.StepHost;
 import org.kheperasim.sim.host.ControllerWindows;
 import org.kheperasim.sim.host.ControllerStatus;
 import org.kheperasim.sim.host.Lockstep;
@@ -39,7 +42,9 @@ public final class RunSession implements AutoCloseable {
     private final long seed;
     private final Settings settings;
     private final Engine engine;
-    private final List<ControllerHost> hosts = new ArrayList<>();
+    private final List<HostedController> hosts = new ArrayList<>();
+    private final List<ControllerHost> threadHosts = new ArrayList<>();
+    private final List<StepHost> stepHosts = new ArrayList<>();
     private final List<SimRobot> robots = new ArrayList<>();
     private final Lockstep lockstep;
     private final String controllerClass;
@@ -101,13 +106,22 @@ public final class RunSession implements AutoCloseable {
             cls = cls == null ? type.getName() : cls;
             String name = arena.robots().size() == 1 ? type.getSimpleName() : type.getSimpleName() + "#" + i;
             SimRobot robot = engine.addRobot(name, start, setup.settings());
-            ControllerHost host = new ControllerHost(robot, type, console, hostOptions);
+            HostedController host;
+            if (Controllers.isStep(type)) {
+                StepHost step = new StepHost(robot, type, console, hostOptions);
+                stepHosts.add(step);
+                host = step;
+            } else {
+                ControllerHost thread = new ControllerHost(robot, type, console, hostOptions);
+                threadHosts.add(thread);
+                host = thread;
+            }
             engine.attach(robot, host, r -> host.status().name().toLowerCase(Locale.ROOT));
             hosts.add(host);
             robots.add(robot);
         }
         this.controllerClass = cls;
-        this.lockstep = new Lockstep(engine, hosts, hostOptions.hangTimeoutNanos());
+        this.lockstep = new Lockstep(engine, threadHosts, stepHosts, hostOptions.hangTimeoutNanos());
     }
 
     /**
@@ -207,7 +221,7 @@ public final class RunSession implements AutoCloseable {
     }
 
     /** @return the controller hosts, in robot order */
-    public List<ControllerHost> hosts() {
+    public List<HostedController> hosts() {
         return List.copyOf(hosts);
     }
 
@@ -247,7 +261,7 @@ public final class RunSession implements AutoCloseable {
         List<RunResult.RobotResult> results = new ArrayList<>();
         for (int i = 0; i < robots.size(); i++) {
             SimRobot r = robots.get(i);
-            ControllerHost h = hosts.get(i);
+            HostedController h = hosts.get(i);
             results.add(new RunResult.RobotResult(r.name(), r.x(), r.y(), r.headingDeg(), r.distanceTravelledMm(),
                     r.collisions(), r.visitedPercent(), h.status(),
                     h.failure() == null ? null : h.failure().toString(), r.regionsEntered()));

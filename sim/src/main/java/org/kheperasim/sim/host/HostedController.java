@@ -1,0 +1,18 @@
+package org.kheperasim.sim.host;
+
+import org.kheperasim.sim.engine.RobotDriver;
+
+/** A robot's controller as the run sees it, whichever way it runs: in a thread of its own, or stepped inline. */
+public interface HostedController extends RobotDriver {
+    /** @return the controller's simple class name */
+    String name();
+
+    /** @return the controller class */
+    Class<?> type();
+
+    /** @return where the controller is in its life */
+    ControllerStatus status();
+
+    /** @return what the controller threw, or null */
+    Throwable failure();
+}

@@ -1,0 +1,212 @@
+package org.kheperasim.sim.host;
+
+import java.util.concurrent.TimeUnit;
+import org.kheperasim.api.CurrentRobotState;
+import org.kheperasim.api.MessagePasser;
+import org.kheperasim.api.StepController;
+import org.kheperasim.api.spi.Controllers;
+import org.kheperasim.sim.engine.SimRobot;
+
+/**
+ * A {@link StepController} in a run: the engine's turn holder calls its {@code step()} inline, once
+ * per period, with no thread of the controller's and no hand-over, which is what makes swarms fast.
+ * Its API calls cost the same simulated time and see the same serial-link timing as a thread-style
+ * controller's; the next step comes one period after this one's last call.
+ *
+ * <p>A step that throws fails the controller (reported with the student's lines, the robot
+ * stopped); one that sleeps breaks the step contract; one that runs for the hang timeout of real
+ * time without returning is stopped at its next loop by the {@link StepWatchdog}.
+ */
+public final class StepHost implements HostedController, PortClock {
+    private final SimRobot robot;
+    private final Class<?> type;
+    private final String name;
+    private final ConsoleSink console;
+    private final StepController controller;
+    private final long periodNanos;
+    private final long apiCostNanos;
+    private final long hangTimeoutNanos;
+    private final StepClock clock = new StepClock(this);
+    private ControllerStatus status = ControllerStatus.NOT_STARTED;
+    private Throwable failure;
+    private long wake;
+    private long now;
+    private volatile boolean stepping;
+    private volatile long stepStartedAt;
+    private volatile boolean hung;
+    /** The rule the step broke, or null. */
+    private String broke;
+
+    /**
+     * @param robot the robot it drives
+     * @param type a step controller class, loaded through a controller class loader
+     * @param console where its messages and errors go
+     * @param options the hang timeout
+     */
+    public StepHost(SimRobot robot, Class<?> type, ConsoleSink console, ControllerHost.Options options) {
+        this.robot = robot;
+        this.type = type;
+        this.name = type.getSimpleName();
+        this.console = console;
+        this.apiCostNanos = robot.model().link().apiCostNanos();
+        this.hangTimeoutNanos = options.hangTimeoutNanos();
+        SimulatedRobotPort port = new SimulatedRobotPort(robot, this);
+        this.controller = Controllers.instantiateStep(type, new CurrentRobotState(port), new MessagePasser(port));
+        this.periodNanos = TimeUnit.MILLISECONDS.toNanos(controller.period());
+    }
+
+    @Override
+    public String name() {
+        return name;
+    }
+
+    @Override
+    public Class<?> type() {
+        return type;
+    }
+
+    @Override
+    public ControllerStatus status() {
+        return status;
+    }
+
+    @Override
+    public Throwable failure() {
+        return failure;
+    }
+
+    @Override
+    public long wakeNanos() {
+        return status.ended() ? Long.MAX_VALUE : wake;
+    }
+
+    @Override
+    public void grant(long limitNanos) {
+        // A step runs whole: its calls may reach past the tick, as a thread-style controller's last call may.
+    }
+
+    /** Run one step (the first time, setup and a step), on the thread holding the turn. */
+    void step() {
+        now = StrictMath.max(now, wake);
+        SimClock.Clock outer = SimClock.current();
+        SimClock.bind(clock);
+        stepStartedAt = System.nanoTime();
+        stepping = true;
+        StepWatchdog.watch(this);
+        try {
+            if (status == ControllerStatus.NOT_STARTED) {
+                status = ControllerStatus.RUNNING;
+                controller.begin();
+            }
+            controller.stepOnce();
+            wake = now + periodNanos;
+        } catch (ControllerStoppedError e) {
+            end(broke != null ? ControllerStatus.BROKE_RULE : hung ? ControllerStatus.HUNG : ControllerStatus.STOPPED);
+        } catch (OutOfMemoryError e) {
+            HeapWatch.ranOut();
+            failure = e;
+            say(ConsoleLine.Kind.ERROR, "controller " + name + " allocated without bound: the Java heap ran out; the"
+                    + " controller was stopped and the robot's motors set to 0");
+            end(ControllerStatus.EXCEEDED_MEMORY);
+        } catch (RuntimeException | Error e) {
+            failure = e;
+            say(ConsoleLine.Kind.ERROR, "threw " + e + " in step(); the robot was stopped.\n" + ControllerFailures.studentTrace(e));
+            end(ControllerStatus.FAILED);
+        } finally {
+            stepping = false;
+            StepWatchdog.unwatch(this);
+            if (outer == null) {
+                SimClock.unbind();
+            } else {
+                SimClock.bind(outer);
+            }
+        }
+    }
+
+    /** The watchdog's look: a step running for the hang timeout is stopped at its next loop checkpoint. */
+    boolean overdue(long nowNanos) {
+        if (stepping && !hung && nowNanos - stepStartedAt > hangTimeoutNanos) {
+            // Told before the step is stopped, so the message comes before the run's end.
+            say(ConsoleLine.Kind.ERROR, String.format(java.util.Locale.ROOT, "controller %s (%s): step() did not return"
+                    + " for %.1f s of real time at simulated time %.3f s; a step must read the sensors, set the motors and"
+                    + " return (no loops that wait). The controller was stopped and the robot's motors set to 0.",
+                    name, type.getName(), (nowNanos - stepStartedAt) / 1e9, now / 1e9));
+            hung = true;
+            SimClock.stopRequested();
+            return true;
+        }
+        return false;
+    }
+
+    /** The step broke a rule (see {@link Containment}): it is stopped with a named fault. */
+    void brokeRule(String what) {
+        if (broke == null) {
+            broke = what;
+            say(ConsoleLine.Kind.ERROR, "controller " + name + " (" + type.getName() + ") " + what
+                    + "; the controller was stopped and the robot's motors set to 0");
+        }
+    }
+
+    /** Checked at every loop back-edge of the step's code. */
+    void checkpoint() {
+        if (hung) {
+            throw new ControllerStoppedError("controller " + name + " hung in step()");
+        }
+    }
+
+    private void end(ControllerStatus end) {
+        if (hung) {
+            SimClock.stopSettled();
+        }
+        status = end;
+        robot.emergencyStop();
+    }
+
+    /** The run is over: the controller stops where it is (as a thread-style one does at its next call; no cleanup runs). */
+    void stop() {
+        if (status != ControllerStatus.RUNNING) {
+            if (status == ControllerStatus.NOT_STARTED) {
+                status = ControllerStatus.STOPPED;
+            }
+            return;
+        }
+        status = ControllerStatus.STOPPED;
+        robot.emergencyStop();
+    }
+
+    // ------------------------------------------------------------------ the port's clock
+
+    @Override
+    public void enter() {
+        if (status == ControllerStatus.NOT_STARTED && !stepping) {
+            return; // the constructor looking around: free, no time passes
+        }
+        if (!stepping) {
+            throw new IllegalStateException("the robot API of step controller " + name + " was called outside step()"
+                    + " (from thread '" + Thread.currentThread().getName() + "'); use it only in setup(), step() and cleanup()");
+        }
+        checkpoint();
+    }
+
+    @Override
+    public void leave() {
+        now += apiCostNanos;
+    }
+
+    @Override
+    public long now() {
+        return now;
+    }
+
+    @Override
+    public void sleepNanos(long nanos) {
+        throw new IllegalStateException("step controller " + name + " slept in step(): a step must return instead"
+                + " (the next step comes " + periodNanos / 1_000_000 + " ms after this one; change periodMillis() to"
+                + " step less often)");
+    }
+
+    @Override
+    public void say(ConsoleLine.Kind kind, String text) {
+        console.accept(new ConsoleLine(now, name, kind, text));
+    }
+}
