@@ -3,6 +3,8 @@ package org.kheperasim.sim.cli;
 import java.io.PrintStream;
 import java.net.InetAddress;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
@@ -14,6 +16,7 @@ import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.run.Simulation;
 import org.kheperasim.sim.serve.ProtocolServer;
 import org.kheperasim.sim.serve.PtyBridge;
+import org.kheperasim.sim.serve.ServedArena;
 import org.kheperasim.sim.serve.ServedRobot;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -22,12 +25,13 @@ import picocli.CommandLine.Option;
 /** {@code serve}: a simulated robot that answers the Khepera protocol over TCP (and a pty). */
 @Command(name = "serve", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Serve a simulated Khepera over its own serial protocol, so any Khepera client drives it.",
-            "Runs in real time until Ctrl-C (or --seconds). One client at a time; the robot stops when it leaves.",
+            "Runs in real time until Ctrl-C (or --seconds). One client at a time per robot; a robot stops when its client leaves.",
+            "An arena with several robots serves each on its own port (and pty PATH-1, PATH-2, ...); they meet in one arena.",
             "Example: java -jar khepera-link.jar run --port tcp://127.0.0.1:4000 --controller WallFollower"})
 final class ServeCommand implements Callable<Integer> {
 
     @Option(names = "--arena", required = true, paramLabel = "FILE",
-            description = "an arena file, or a bundled arena: lab, maze, two-rooms; the robot starts at its first pose")
+            description = "an arena file, or a bundled arena: lab, maze, two-rooms; each of its robots is served on its own port (port, port+1, ...)")
     String arena;
 
     @Option(names = "--port", paramLabel = "N", defaultValue = "" + ProtocolServer.DEFAULT_PORT,
@@ -68,48 +72,69 @@ final class ServeCommand implements Callable<Integer> {
         Arena a = ArenaFormat.resolve(arena);
         InetAddress address = bind == null ? InetAddress.getLoopbackAddress() : InetAddress.getByName(bind);
         PrintStream out = System.out;
-        ServedRobot robot = new ServedRobot(a, settings, runSeed, speed);
-        ProtocolServer server;
+        if (!(idleTimeout >= 0 && idleTimeout <= 86_400)) {
+            throw new IllegalArgumentException("--idle-timeout " + idleTimeout + " must lie in 0..86400 seconds (0 = never)");
+        }
+        ServedArena world = new ServedArena(a, settings, runSeed, speed);
+        List<ServedRobot> robots = world.robots();
+        List<ProtocolServer> servers = new ArrayList<>();
+        List<PtyBridge> bridges = new ArrayList<>();
         try {
-            if (!(idleTimeout >= 0 && idleTimeout <= 86_400)) {
-                throw new IllegalArgumentException("--idle-timeout " + idleTimeout + " must lie in 0..86400 seconds (0 = never)");
+            for (int i = 0; i < robots.size(); i++) {
+                ProtocolServer server = ProtocolServer.start(robots.get(i), address, port == 0 ? 0 : port + i)
+                        .idleTimeout((long) (idleTimeout * 1000));
+                String who = robots.size() == 1 ? "" : "robot " + i + ": ";
+                server.addListener(e -> out.println(who + e.text()));
+                servers.add(server);
             }
-            server = ProtocolServer.start(robot, address, port).idleTimeout((long) (idleTimeout * 1000));
         } catch (Exception e) {
-            robot.close();
+            servers.forEach(ProtocolServer::close);
+            world.close();
             throw e;
         }
-        server.addListener(e -> out.println(e.text()));
         CountDownLatch stopped = new CountDownLatch(1);
-        PtyBridge bridge = null;
         Thread hook = new Thread(() -> {
-            server.close();
-            robot.close();
+            servers.forEach(ProtocolServer::close);
+            world.close();
             stopped.countDown();
         }, "serve-shutdown");
         Runtime.getRuntime().addShutdownHook(hook);
         try {
             out.println("seed " + runSeed);
-            out.printf(Locale.ROOT, "serving a simulated Khepera in arena %s at %s (%d baud timing, speed x%s)%n",
-                    a.name(), server.url(), robot.timing().baud(), fmt(speed));
-            if (server.isExposed()) {
-                out.println("WARNING: listening on " + server.bindAddress().getHostAddress() + ":" + server.port()
-                        + ": any computer that can reach this one can drive the robot. There is no password.");
+            if (robots.size() == 1) {
+                out.printf(Locale.ROOT, "serving a simulated Khepera in arena %s at %s (%d baud timing, speed x%s)%n",
+                        a.name(), servers.get(0).url(), robots.get(0).timing().baud(), fmt(speed));
+            } else {
+                out.printf(Locale.ROOT, "serving %d simulated Kheperas that meet in arena %s (%d baud timing, speed x%s),"
+                        + " each on its own port:%n", robots.size(), a.name(), robots.get(0).timing().baud(), fmt(speed));
+                for (int i = 0; i < robots.size(); i++) {
+                    out.printf(Locale.ROOT, "robot %d at %s, starting at (%.0f, %.0f) mm%n", i, servers.get(i).url(),
+                            a.robots().get(i).x(), a.robots().get(i).y());
+                }
             }
-            out.println("connect: java -jar robot-link/target/khepera-link.jar run --port " + server.url()
+            if (servers.get(0).isExposed()) {
+                out.println("WARNING: listening on " + servers.get(0).bindAddress().getHostAddress() + ": any computer that"
+                        + " can reach this one can drive the robots. There is no password.");
+            }
+            out.println("connect: java -jar robot-link/target/khepera-link.jar run --port " + servers.get(0).url()
                     + " --controller WallFollower");
             if (pty != null) {
                 if (PtyBridge.socatInstalled()) {
-                    bridge = PtyBridge.start(pty, server.port(), out::println);
-                    out.println("pty: " + pty + " (socat: " + String.join(" ", bridge.commandLine()) + ")");
+                    for (int i = 0; i < servers.size(); i++) {
+                        java.nio.file.Path path = i == 0 ? pty : pty.resolveSibling(pty.getFileName() + "-" + i);
+                        PtyBridge bridge = PtyBridge.start(path, servers.get(i).port(), out::println);
+                        bridges.add(bridge);
+                        out.println((servers.size() == 1 ? "" : "robot " + i + " ") + "pty: " + path + " (socat: "
+                                + String.join(" ", bridge.commandLine()) + ")");
+                    }
                     out.println("connect: java -jar robot-link/target/khepera-link.jar run --port " + pty
                             + " --controller WallFollower");
                 } else {
                     out.println("socat is not installed, so no pty was made. Install it, or run yourself:");
-                    out.println("  " + String.join(" ", PtyBridge.command(pty, server.port())));
+                    out.println("  " + String.join(" ", PtyBridge.command(pty, servers.get(0).port())));
                 }
             }
-            out.println("Ctrl-C stops the server (the robot stops first).");
+            out.println("Ctrl-C stops the server (the robots stop first).");
             out.flush();
             if (seconds != null) {
                 stopped.await((long) (seconds * 1000), TimeUnit.MILLISECONDS);
@@ -117,18 +142,19 @@ final class ServeCommand implements Callable<Integer> {
                 stopped.await();
             }
         } finally {
-            if (bridge != null) {
-                bridge.close();
+            for (PtyBridge b : bridges) {
+                b.close();
             }
-            server.close();
-            robot.close();
+            servers.forEach(ProtocolServer::close);
+            world.close();
             try {
                 Runtime.getRuntime().removeShutdownHook(hook);
             } catch (IllegalStateException shuttingDown) {
                 // The hook is running: it closes the same things.
             }
         }
-        out.println("server stopped after " + server.commandsAnswered() + " commands");
+        long answered = servers.stream().mapToLong(ProtocolServer::commandsAnswered).sum();
+        out.println("server stopped after " + answered + " commands");
         return 0;
     }
 

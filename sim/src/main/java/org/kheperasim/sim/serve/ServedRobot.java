@@ -1,7 +1,6 @@
 package org.kheperasim.sim.serve;
 
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
 import org.kheperasim.api.GripperState;
 import org.kheperasim.api.IrSensor;
@@ -10,23 +9,15 @@ import org.kheperasim.link.protocol.KheperaProtocol;
 import org.kheperasim.link.protocol.TurretCommand;
 import org.kheperasim.link.timing.LinkTiming;
 import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.engine.Engine;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
 import org.kheperasim.sim.engine.Snapshot;
 import org.kheperasim.sim.engine.SnapshotListener;
-import org.kheperasim.sim.engine.World;
 
 /**
- * One simulated Khepera that answers the robot's serial protocol: an engine with one robot and no
- * controller (the client is the controller), run in real time by its own thread.
- *
- * <p>Time: a client is a real program with a real clock, so the simulation tracks the wall clock:
- * every {@link #TICK_PERIOD_NANOS} the engine thread runs the engine up to
- * {@code (wall time since start) × speed}. Commands are applied between ticks under one lock, so a
- * command sees the world at one instant. {@code speed} 1 is the real robot's pace; a larger factor
- * runs simulated time faster than the wall clock (the protocol server divides its reply pacing by the
- * same factor).
+ * One simulated Khepera that answers the robot's serial protocol: a robot of a {@link ServedArena}
+ * with no controller (the client is the controller). A lone robot is served by
+ * {@link #ServedRobot(Arena, Settings, long, double)}, which makes an arena of its own for it.
  *
  * <p>What each command does is in {@link #execute(Command)} and docs/protocol-server.md.
  */
@@ -44,71 +35,58 @@ public final class ServedRobot implements AutoCloseable {
     /** What {@code T,1,H,0} reads with the fingers closed (0 when open). */
     public static final int FINGERS_CLOSED_POSITION = 255;
 
-    private final Arena arena;
-    private final Settings settings;
-    private final Engine engine;
+    private final ServedArena world;
     private final SimRobot robot;
-    private final double speed;
     private final LinkTiming timing;
-    private final ReentrantLock lock = new ReentrantLock();
+    private final ReentrantLock lock;
     private final int[] bus = new int[256];
     private final int[] speedPid = {3800, 800, 100};
     private final int[] positionPid = {3000, 20, 4000};
     private final int[] values = new int[IrSensor.COUNT];
-    private Thread ticker;
-    private volatile boolean running;
-    private volatile long wallStart;
-    private volatile long leadNanos;
-    private volatile long lastCommandNanos;
 
     /**
+     * Serve the arena's first robot alone.
+     *
      * @param arena the arena; its first robot pose is where the robot starts
      * @param settings sensor, motor and link settings ({@code link.baud} sets the reply pacing)
      * @param seed the seed of the robot's noise
      * @param speed simulated seconds per wall-clock second, 1 for real time (0.1..100)
      */
     public ServedRobot(Arena arena, Settings settings, long seed, double speed) {
-        if (!(speed >= 0.1 && speed <= 100)) {
-            throw new IllegalArgumentException("speed " + speed + " must lie in 0.1..100 (1 = real time)");
-        }
-        if (arena.robots().isEmpty()) {
-            throw new IllegalArgumentException("arena " + arena.name() + " has no robot start pose; add a 'robot' line");
-        }
-        this.arena = arena;
-        this.settings = settings;
-        this.speed = speed;
-        this.engine = new Engine(new World(arena), seed);
-        this.robot = engine.addRobot("served", arena.robots().get(0), settings);
-        robot.onBoard().servedDirectly();
+        this(new ServedArena(arena, settings, seed, speed, 1), 0);
+    }
+
+    private ServedRobot(ServedArena world, int index) {
+        this(world, world.simRobot(index));
+    }
+
+    /** A robot of a served arena. */
+    ServedRobot(ServedArena world, SimRobot robot) {
+        this.world = world;
+        this.robot = robot;
+        this.lock = world.lock();
         this.timing = robot.link();
+    }
+
+    /** @return the arena this robot is served in */
+    public ServedArena world() {
+        return world;
     }
 
     /**
      * Add a snapshot listener (a window, a recorder). Call before {@link #start()}; it is called on
-     * the engine thread, holding the robot's lock: keep it short.
+     * the engine thread, holding the lock: keep it short.
      *
      * @param listener receives snapshots
      * @param periodNanos how often, a whole number of 1 ms ticks
      */
     public void addListener(SnapshotListener listener, long periodNanos) {
-        lock.lock();
-        try {
-            engine.addListener(listener, periodNanos);
-        } finally {
-            lock.unlock();
-        }
+        world.addListener(listener, periodNanos);
     }
 
-    /** Start the engine thread: simulated time starts now. */
-    public synchronized void start() {
-        if (ticker != null) {
-            throw new IllegalStateException("the served robot is already running");
-        }
-        running = true;
-        wallStart = System.nanoTime();
-        ticker = new Thread(this::tickLoop, "served-robot-engine");
-        ticker.setDaemon(true);
-        ticker.start();
+    /** Start the arena's engine thread (once for all its robots): simulated time starts now. */
+    public void start() {
+        world.start();
     }
 
     /**
@@ -121,33 +99,7 @@ public final class ServedRobot implements AutoCloseable {
      * @param leadNanos the most simulated time the robot may run ahead of the client, ns; 0 = off
      */
     public void followClient(long leadNanos) {
-        if (leadNanos < 0) {
-            throw new IllegalArgumentException("lead " + leadNanos + " ns must not be negative (0 = off)");
-        }
-        this.leadNanos = leadNanos;
-    }
-
-    private void tickLoop() {
-        while (running) {
-            long now = System.nanoTime();
-            long target = (long) ((now - wallStart) * speed);
-            long lead = leadNanos;
-            if (lead > 0 && target > lastCommandNanos + lead) {
-                // The client is late: hold the robot's time, and resume the pacing from here.
-                target = lastCommandNanos + lead;
-                wallStart = now - (long) (target / speed);
-            }
-            target -= target % Engine.TICK_NANOS;
-            lock.lock();
-            try {
-                if (target > engine.timeNanos()) {
-                    engine.runUntil(target);
-                }
-            } finally {
-                lock.unlock();
-            }
-            LockSupport.parkNanos(TICK_PERIOD_NANOS);
-        }
+        world.followClient(leadNanos);
     }
 
     /**
@@ -159,7 +111,7 @@ public final class ServedRobot implements AutoCloseable {
     public String execute(Command command) {
         lock.lock();
         try {
-            lastCommandNanos = engine.timeNanos();
+            world.commandSeen();
             return answer(command);
         } finally {
             lock.unlock();
@@ -184,7 +136,7 @@ public final class ServedRobot implements AutoCloseable {
         } else if (command instanceof Command.ReadSpeed c) {
             return c.reply(robot.speedLeft(), robot.speedRight()).encode();
         } else if (command instanceof Command.MoveToPosition c) {
-            robot.onBoard().moveToPositions(engine.timeNanos(), c.left(), c.right());
+            robot.onBoard().moveToPositions(world.timeHeld(), c.left(), c.right());
             return c.reply().encode();
         } else if (command instanceof Command.SetPositionProfile c) {
             robot.onBoard().positionProfile(c.maxSpeedLeft(), c.accelerationLeft(), c.maxSpeedRight(), c.accelerationRight());
@@ -229,10 +181,10 @@ public final class ServedRobot implements AutoCloseable {
         }
         TurretCommand body = c.body();
         if (body instanceof TurretCommand.Fingers f) {
-            robot.onBoard().moveFingers(engine.timeNanos(), f.close() ? GripperState.CLOSED : GripperState.OPEN);
+            robot.onBoard().moveFingers(world.timeHeld(), f.close() ? GripperState.CLOSED : GripperState.OPEN);
             return c.reply().encode();
         } else if (body instanceof TurretCommand.Arm a) {
-            robot.onBoard().moveArm(engine.timeNanos(), a.position());
+            robot.onBoard().moveArm(world.timeHeld(), a.position());
             return c.reply().encode();
         } else if (body instanceof TurretCommand.Resistivity) {
             return c.reply(robot.gripper().resistivity()).encode();
@@ -269,12 +221,7 @@ public final class ServedRobot implements AutoCloseable {
 
     /** @return the world now (taken under the lock, between ticks) */
     public Snapshot snapshot() {
-        lock.lock();
-        try {
-            return engine.snapshot();
-        } finally {
-            lock.unlock();
-        }
+        return world.snapshot();
     }
 
     /**
@@ -295,17 +242,12 @@ public final class ServedRobot implements AutoCloseable {
 
     /** @return simulated time now, ns */
     public long timeNanos() {
-        lock.lock();
-        try {
-            return engine.timeNanos();
-        } finally {
-            lock.unlock();
-        }
+        return world.timeNanos();
     }
 
     /** @return simulated seconds per wall-clock second */
     public double speed() {
-        return speed;
+        return world.speed();
     }
 
     /** @return the link timing replies are paced by (the settings' baud and turnaround) */
@@ -315,30 +257,22 @@ public final class ServedRobot implements AutoCloseable {
 
     /** @return the arena served */
     public Arena arena() {
-        return arena;
+        return world.arena();
     }
 
     /** @return the settings the robot was built with */
     public Settings settings() {
-        return settings;
+        return world.settings();
     }
 
     /** @return the run's seed */
     public long seed() {
-        return engine.seed();
+        return world.seed();
     }
 
-    /** Stop the engine thread. */
+    /** Stop the arena's engine thread (for all its robots). */
     @Override
-    public synchronized void close() {
-        running = false;
-        if (ticker != null) {
-            ticker.interrupt();
-            try {
-                ticker.join(TimeUnit.SECONDS.toMillis(5));
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }
+    public void close() {
+        world.close();
     }
 }
