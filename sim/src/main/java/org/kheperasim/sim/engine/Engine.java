@@ -29,6 +29,7 @@ public final class Engine {
     private final List<RobotDriver> drivers = new ArrayList<>();
     private final List<Function<SimRobot, String>> driverStatus = new ArrayList<>();
     private final List<Subscription> listeners = new ArrayList<>();
+    private final Motion motion;
     private long tick;
     private long endNanos = Long.MAX_VALUE;
     private boolean inTick;
@@ -46,6 +47,7 @@ public final class Engine {
         this.world = world;
         this.seed = seed;
         this.seeds = new SplittableRandom(seed);
+        this.motion = new Motion(robots, world.bodies());
     }
 
     /**
@@ -172,11 +174,7 @@ public final class Engine {
             }
             publish();
             long n = quietTicks();
-
-            for (int i = 0; i < robots.size(); i++) {
-                SimRobot r = robots.get(i);
-                r.move(n, (tick + n) * TICK_NANOS, n > 1);
-            }
+            motion.move(tick, n);
             tick += n;
             inTick = false;
         }
@@ -184,9 +182,9 @@ public final class Engine {
 
     /**
      * How many ticks the world can move through at once: up to the next tick at which anything is
-     * due (a command, a poll sample, a noise redraw, a controller's wake-up, a snapshot, the end)
-     * and no farther than every robot can glide; at least one. A single tick is stepped with contact
-     * handling; a longer stretch is glided (see {@link SimRobot#glideTicks}).
+     * due (a command, a noise redraw, a position-move update, a controller's wake-up, a snapshot,
+     * the end); at least one. Each robot then moves through the stretch as cheaply as it can (see
+     * {@link Motion}).
      */
     private long quietTicks() {
         long limit = ceilTicks(endNanos) - tick;
@@ -204,12 +202,10 @@ public final class Engine {
             limit = StrictMath.min(limit, (tick / p + 1) * p - tick);
         }
         for (int i = 0; i < robots.size() && limit > 1; i++) {
-            SimRobot r = robots.get(i);
-            long due = r.nextDueNanos();
+            long due = robots.get(i).nextDueNanos();
             if (due != Long.MAX_VALUE) {
                 limit = StrictMath.min(limit, ceilTicks(due) - tick);
             }
-            limit = StrictMath.min(limit, r.glideTicks());
         }
         return StrictMath.max(1, limit);
     }

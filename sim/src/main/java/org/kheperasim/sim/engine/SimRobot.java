@@ -143,6 +143,16 @@ public final class SimRobot implements RobotLink.Robot {
         return (StrictMath.min(gap, LOOK_MM) - unseenMm) * 0.5;
     }
 
+    /** @return how far the centre travels in one tick at most at the present wheel speeds, mm */
+    double travelPerTickMm() {
+        return body.travelPerTickMm();
+    }
+
+    /** @return another robot's surface farther than this from the centre is out of every sensor's reach, mm */
+    double unseenMm() {
+        return unseenMm;
+    }
+
     /** How far it looks for other robots when it glides, mm. */
     private static final double LOOK_MM = 400;
 

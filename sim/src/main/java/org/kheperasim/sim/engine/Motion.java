@@ -1,0 +1,117 @@
+package org.kheperasim.sim.engine;
+
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Moves every robot through a stretch of ticks with nothing due (no command, controller, noise
+ * redraw or snapshot), each as cheaply as it can:
+ *
+ * <ul>
+ *   <li>a robot that no other robot can reach during the stretch (neither touch nor see, nor be
+ *       seen, even if both drive straight at each other) moves on its own: it glides as far as its
+ *       own clearance allows, and steps a tick with contact handling where it must, its poll
+ *       samples taken on the way (exactly what a lone robot does);</li>
+ *   <li>robots that may meet move together, a tick at a time, in robot order, so each sees the
+ *       others where they are at that tick.</li>
+ * </ul>
+ * So a robot near a wall no longer makes a far-away one step every tick, and the cost of a swarm
+ * grows with the robots that are near each other, not with all of them.
+ */
+final class Motion {
+    /** How far a robot looks for others that could reach it, mm. */
+    private static final double LOOK_MM = 400;
+
+    private final List<SimRobot> robots;
+    private final Bodies bodies;
+    private final List<SimRobot> together = new ArrayList<>();
+
+    Motion(List<SimRobot> robots, Bodies bodies) {
+        this.robots = robots;
+        this.bodies = bodies;
+    }
+
+    /**
+     * Move every robot through ticks {@code start .. start + n - 1}; the caller has begun tick
+     * {@code start} for every robot.
+     */
+    void move(long start, long n) {
+        if (robots.size() == 1) {
+            alone(robots.get(0), start, n);
+            return;
+        }
+        double fastest = 0;
+        for (int i = 0; i < robots.size(); i++) {
+            fastest = StrictMath.max(fastest, robots.get(i).travelPerTickMm());
+        }
+        together.clear();
+        for (int i = 0; i < robots.size(); i++) {
+            SimRobot r = robots.get(i);
+            if (onItsOwn(r, n, fastest)) {
+                alone(r, start, n);
+            } else {
+                together.add(r);
+            }
+        }
+        if (together.isEmpty()) {
+            return;
+        }
+        for (long k = 0; k < n; k++) {
+            long t = start + k;
+            if (k > 0) {
+                for (int i = 0; i < together.size(); i++) {
+                    together.get(i).beginTick(t * Engine.TICK_NANOS);
+                }
+            }
+            for (int i = 0; i < together.size(); i++) {
+                SimRobot r = together.get(i);
+                r.move(1, (t + 1) * Engine.TICK_NANOS, false);
+            }
+        }
+    }
+
+    /**
+     * A robot on its own through the stretch: glides as far as it can, steps where it must,
+     * beginning each glide or step as a tick of its own.
+     */
+    private static void alone(SimRobot r, long start, long n) {
+        long t = start;
+        long end = start + n;
+        while (t < end) {
+            if (t > start) {
+                r.beginTick(t * Engine.TICK_NANOS);
+            }
+            long k = StrictMath.min(end - t, r.glideTicks());
+            long due = r.nextDueNanos();
+            if (due != Long.MAX_VALUE) {
+                // Something of its own falls due on the way (its tick begins there).
+                k = StrictMath.min(k, -Math.floorDiv(-due, Engine.TICK_NANOS) - t);
+            }
+            k = StrictMath.max(1, k);
+            r.move(k, (t + k) * Engine.TICK_NANOS, k > 1);
+            t += k;
+        }
+    }
+
+    /**
+     * @return true when no other robot can come within sight or touch of {@code r} (nor it of
+     *     theirs) in {@code n} ticks, whatever they do: each drives at most its present speed
+     */
+    private boolean onItsOwn(SimRobot r, long n, double fastest) {
+        double reach = r.travelPerTickMm() * n;
+        double margin = r.unseenMm() + Khepera.BODY_RADIUS_MM;
+        if (LOOK_MM - reach - fastest * n < margin) {
+            return false;
+        }
+        double[] worst = {Double.POSITIVE_INFINITY};
+        bodies.visit(r.id(), r.x(), r.y(), LOOK_MM, (k, dx, dy) -> {
+            SimRobot o = robots.get(k);
+            double room = StrictMath.sqrt(dx * dx + dy * dy) - reach - o.travelPerTickMm() * n
+                    - StrictMath.max(margin, o.unseenMm() + Khepera.BODY_RADIUS_MM);
+            if (room < worst[0]) {
+                worst[0] = room;
+            }
+        });
+        return worst[0] >= 0;
+    }
+}
