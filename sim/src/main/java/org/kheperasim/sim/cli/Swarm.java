@@ -49,7 +49,10 @@ final class Swarm {
                 peak += pool.getPeakUsage().getUsed();
             }
         }
+        System.gc();
+        long live = ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed();
         System.out.printf(Locale.ROOT, "set-up of a run (construction, 1 ms simulated, teardown): %.3f s; peak heap in use"
-                + " (sum of the pools' peaks, an upper bound): %,d MB%n", setUp, peak >> 20);
+                + " (sum of the pools' peaks, garbage included: an upper bound): %,d MB; live after a full collection:"
+                + " %,d MB; heap limit %,d MB (-Xmx)%n", setUp, peak >> 20, live >> 20, Runtime.getRuntime().maxMemory() >> 20);
     }
 }
