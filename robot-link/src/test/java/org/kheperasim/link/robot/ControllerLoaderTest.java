@@ -19,7 +19,8 @@ class ControllerLoaderTest {
 
     @Test
     void bundledNamesAreTheSimulators() {
-        assertEquals(List.of("WallFollower", "Braitenberg", "Template", "CapGatherer"), ControllerLoader.bundled());
+        assertEquals(List.of("WallFollower", "Braitenberg", "Template", "CapGatherer", "StepBraitenberg", "Aggregation"),
+                ControllerLoader.bundled());
         assertEquals("org.kheperasim.controllers.Braitenberg", new ControllerLoader(List.of()).load("Braitenberg").getName());
     }
 
