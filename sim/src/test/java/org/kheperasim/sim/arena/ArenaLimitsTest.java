@@ -42,8 +42,9 @@ class ArenaLimitsTest {
                 bad("cap too large", HEAD + "cap 900 900 radius 51\n", 4, "cap radius is 51; it may be at most 50 mm"),
                 bad("number too long", HEAD + "cap 900 " + "9".repeat(1001) + "\n", 4, "longer than 1000 characters"),
                 bad("name too long", HEAD + "name " + "n".repeat(101) + "\n", 4, "at most 100 letters"),
-                bad("too many robots", HEAD + repeat(32, i -> "robot " + (40 + 60 * (i % 15)) + " " + (100 + 60 * (i / 15)) + " 0\n"),
-                        4 + 31, "too many robots: an arena may have at most 32"),
+                bad("too many robots", "khepera-arena 1\nsize 2100 2100\n"
+                        + repeat(1025, i -> "robot " + (40 + 60 * (i % 33)) + " " + (40 + 60 * (i / 33)) + " 0\n"),
+                        2 + 1025, "too many robots: an arena may have at most 1024"),
                 bad("too many caps", HEAD + repeat(1001, i -> "cap 900 900\n"), 4 + 1000, "too many caps: an arena may have at most 1000"),
                 bad("too many lights", HEAD + repeat(257, i -> "light 900 900\n"), 4 + 256, "too many lights"),
                 bad("too many regions", HEAD + repeat(1001, i -> "region r" + i + " 0 0 10 10\n"), 4 + 1000, "too many regions"),
