@@ -23,7 +23,8 @@ public class Template extends Thread {
     private volatile boolean active;
 
     // TODO: add your own fields here, e.g. thresholds.
-    private int wallThreshold = 600;   // proximity 0..1023, higher = nearer; ~600 is about 20 mm
+    private int wallThreshold = 500;   // proximity 0..1023, higher = nearer; ~500 is about 25 mm
+    private int sideThreshold = 700;   // a side sensor this high: something right beside the robot
 
     /** The simulator (or the robot link) creates the controller with the robot's state. */
     public Template(CurrentRobotState data, MessagePasser mp) {
@@ -44,14 +45,45 @@ public class Template extends Thread {
         gripper = currentData.getGripper();
         messagePasser.sendMessage("Template started");
 
+        int lastTravel = 0;   // wheel pulses at the last check
+        int stalled = 0;      // checks in a row that the wheels turned but the robot did not move
         while (active) {
-            // TODO: replace this with your behaviour. This one drives forward and turns right
-            // on the spot while something is close in front.
-            if (sensors[2].getDistValue() > wallThreshold || sensors[3].getDistValue() > wallThreshold) {
+            // TODO: replace this with your behaviour. This one drives forward, turns on the spot
+            // away from whatever is close ahead, veers away from what is close beside it, and backs
+            // out when it finds itself stuck.
+            int left = Math.max(sensors[1].getDistValue(), sensors[2].getDistValue());    // front-left and 45° left
+            int right = Math.max(sensors[3].getDistValue(), sensors[4].getDistValue());   // front-right and 45° right
+            int travel = motorState.getLeftPosition() + motorState.getRightPosition();
+            boolean forward = false;
+            if (stalled >= 10) {
+                // Half a second of driving forward without moving: something the sensors miss (a
+                // thin wall end, a lamp) holds the robot. Back off and turn; every robot needs this.
+                motorState.setMotorSpeeds(-3, -3);
+                sleepTime(500);
                 motorState.setMotorSpeeds(3, -3);
+                sleepTime(400);
+                stalled = 0;
+                travel = motorState.getLeftPosition() + motorState.getRightPosition();
+            } else if (left > wallThreshold || right > wallThreshold) {
+                // Something close ahead: turn on the spot, away from the nearer side.
+                if (left >= right) {
+                    motorState.setMotorSpeeds(3, -3);
+                } else {
+                    motorState.setMotorSpeeds(-3, 3);
+                }
+            } else if (sensors[0].getDistValue() > sideThreshold) {
+                motorState.setMotorSpeeds(5, 2);   // close on the left: veer right
+                forward = true;
+            } else if (sensors[5].getDistValue() > sideThreshold) {
+                motorState.setMotorSpeeds(2, 5);   // close on the right: veer left
+                forward = true;
             } else {
-                motorState.setMotorSpeeds(5, 5);
+                motorState.setMotorSpeeds(5, 5);   // nothing near: straight ahead at 40 mm/s
+                forward = true;
             }
+            // Driving forward, the wheels move about 50 pulses per 50 ms; under 10, they are held.
+            stalled = forward && travel - lastTravel < 10 ? stalled + 1 : 0;
+            lastTravel = travel;
             sleepTime(50);   // decide 20 times a second
         }
         motorState.setMotorSpeeds(0, 0);
