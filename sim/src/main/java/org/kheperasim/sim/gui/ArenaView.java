@@ -24,6 +24,9 @@ import org.kheperasim.sim.engine.Snapshot;
 final class ArenaView extends JComponent {
     private final EditorModel model;
     private final EditGestures gestures;
+    /** The robot the panels show: a click on a robot of the run selects it. */
+    private final RobotSelection selection;
+    private boolean clickedRobot;
     private final Supplier<Snapshot> snapshot;
     private final Supplier<List<float[]>> trails;
     private final ViewTransform view = new ViewTransform();
@@ -40,7 +43,9 @@ final class ArenaView extends JComponent {
     private BufferedImage background;
     private String backgroundKey;
 
-    ArenaView(EditorModel model, EditGestures gestures, Supplier<Snapshot> snapshot, Supplier<List<float[]>> trails) {
+    ArenaView(EditorModel model, EditGestures gestures, Supplier<Snapshot> snapshot, Supplier<List<float[]>> trails,
+            RobotSelection selection) {
+        this.selection = selection;
         this.model = model;
         this.gestures = gestures;
         this.snapshot = snapshot;
@@ -53,7 +58,13 @@ final class ArenaView extends JComponent {
             @Override
             public void mousePressed(MouseEvent e) {
                 requestFocusInWindow();
-                if (SwingUtilities.isLeftMouseButton(e) && !e.isAltDown()) {
+                int clicked = SwingUtilities.isLeftMouseButton(e) && !e.isShiftDown() && !e.isControlDown()
+                        ? RobotSelection.robotAt(snapshot.get(), view.ax(e.getX()), view.ay(e.getY())) : -1;
+                if (clicked >= 0) {
+                    // A robot of the run: the sensor panel and the plot follow it (no edit starts).
+                    selection.select(clicked);
+                    clickedRobot = true;
+                } else if (SwingUtilities.isLeftMouseButton(e) && !e.isAltDown()) {
                     gestures.press(view.ax(e.getX()), view.ay(e.getY()), e.isShiftDown() || e.isControlDown(), 6 / view.scale());
                 } else {
                     panning = true;
@@ -67,6 +78,9 @@ final class ArenaView extends JComponent {
             @Override
             public void mouseDragged(MouseEvent e) {
                 track(e);
+                if (clickedRobot) {
+                    return;
+                }
                 if (panning) {
                     view.pan(e.getX() - panX, e.getY() - panY);
                     panX = e.getX();
@@ -79,6 +93,10 @@ final class ArenaView extends JComponent {
 
             @Override
             public void mouseReleased(MouseEvent e) {
+                if (clickedRobot) {
+                    clickedRobot = false;
+                    return;
+                }
                 if (panning) {
                     panning = false;
                     setCursor(Cursor.getDefaultCursor());
@@ -171,8 +189,10 @@ final class ArenaView extends JComponent {
                 backgroundKey = key;
             }
             g2.drawImage(background, 0, 0, null);
-            ArenaRenderer.drawDynamic(g2, view, shown, snapshot.get(),
+            Snapshot now = snapshot.get();
+            ArenaRenderer.drawDynamic(g2, view, shown, now,
                     new ArenaRenderer.Overlay(model.selection(), gestures.band(), gestures.refusedAt(), t), options);
+            ArenaRenderer.drawRobotLabels(g2, view, now, selection.index());
         } finally {
             g2.dispose();
         }

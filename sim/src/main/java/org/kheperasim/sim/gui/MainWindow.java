@@ -92,6 +92,7 @@ public final class MainWindow {
     private final PlotPanel plot = new PlotPanel();
     private final ArenaView arenaView;
     private final SensorPanel sensorPanel;
+    private final RobotSelection robotSelection = new RobotSelection();
     private final JLabel message = new JLabel(" ");
     private final JLabel position = new JLabel(" ");
     private final JLabel clock = new JLabel(" ");
@@ -137,8 +138,13 @@ public final class MainWindow {
         controllerName = options.controller();
         classpath = new ArrayList<>(options.classpath());
         seed = options.seed();
-        arenaView = new ArenaView(model, gestures, this::snapshot, this::trails);
-        sensorPanel = new SensorPanel(this::firstRobot);
+        arenaView = new ArenaView(model, gestures, this::snapshot, this::trails, robotSelection);
+        sensorPanel = new SensorPanel(() -> robotSelection.in(snapshot()));
+        robotSelection.onChange(() -> javax.swing.SwingUtilities.invokeLater(() -> {
+            plot.clear();
+            sensorPanel.repaint();
+            arenaView.repaint();
+        }));
         model.onChange(arenaView::repaint);
         model.onChange(this::updateActions);
         model.onRefusal(m -> {
@@ -199,9 +205,9 @@ public final class MainWindow {
         return r == null ? null : r.latest();
     }
 
-    private RobotView firstRobot() {
-        Snapshot s = snapshot();
-        return s == null || s.robots().isEmpty() ? null : s.robots().get(0);
+    /** @return the robot the sensor panel shows (tests) */
+    RobotView shownRobot() {
+        return robotSelection.in(snapshot());
     }
 
     private List<float[]> trails() {
@@ -227,7 +233,7 @@ public final class MainWindow {
         console.drain();
         Snapshot s = snapshot();
         if (s != lastPainted) {
-            plot.sample(s);
+            plot.sample(s, robotSelection.index());
             sensorPanel.repaint();
             lastPainted = s;
         }

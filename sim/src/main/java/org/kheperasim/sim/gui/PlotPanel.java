@@ -65,8 +65,11 @@ final class PlotPanel extends JPanel {
         add(canvas, BorderLayout.CENTER);
     }
 
-    /** @param s the latest snapshot; added if simulated time moved on */
-    void sample(Snapshot s) {
+    /**
+     * @param s the latest snapshot; added if simulated time moved on
+     * @param robot the robot whose sensors are plotted
+     */
+    void sample(Snapshot s, int robot) {
         if (s == null || s.robots().isEmpty()) {
             return;
         }
@@ -78,7 +81,7 @@ final class PlotPanel extends JPanel {
             return;
         }
         lastTime = t;
-        RobotView r = s.robots().get(0);
+        RobotView r = s.robots().get(robot >= 0 && robot < s.robots().size() ? robot : 0);
         int at = (start + count) % CAPACITY;
         times[at] = t;
         for (int i = 0; i < 8; i++) {

@@ -110,7 +110,8 @@ public final class SensorRenderer {
         if (r != null) {
             g.drawString(String.format(Locale.ROOT, "speed   L %4d   R %4d  (units of 8 mm/s)", r.speedLeft(), r.speedRight()), 10, (float) y);
             g.drawString(String.format(Locale.ROOT, "encoder L %7d R %7d  pulses", r.encoderLeft(), r.encoderRight()), 10, (float) y + 16);
-            g.drawString(String.format(Locale.ROOT, "pose (%.1f, %.1f) mm  %.1f deg", r.x(), r.y(), r.headingDeg()), 10, (float) y + 32);
+            g.drawString(String.format(Locale.ROOT, "pose (%.1f, %.1f) mm  %.1f deg  robot %d", r.x(), r.y(), r.headingDeg(),
+                    r.id()), 10, (float) y + 32);
             g.drawString("contact " + r.contact().name().toLowerCase(Locale.ROOT) + "  collisions " + r.collisions()
                     + "  " + r.controller(), 10, (float) y + 48);
         } else {

@@ -1,0 +1,87 @@
+package org.kheperasim.sim.gui;
+
+import java.awt.Point;
+import java.awt.Robot;
+import java.awt.event.InputEvent;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
+import javax.swing.SwingUtilities;
+import org.kheperasim.sim.cli.Main;
+import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.engine.Snapshot;
+
+/**
+ * Runs in a child JVM under Xvfb (see {@link RobotSelectionTest}): a run of two robots in the
+ * window; a click on the second robot makes the sensor panel show it. Arguments: output folder,
+ * arena file.
+ */
+public final class RobotSelectionDriver {
+    private RobotSelectionDriver() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        Path out = Path.of(args[0]);
+        int code = Main.commandLine().execute("gui", "--arena", args[1], "--controller", "Braitenberg", "--seed", "3");
+        if (code != 0) {
+            fail("the gui command returned " + code);
+        }
+        MainWindow w = GuiLauncher.lastLaunched().get(20, TimeUnit.SECONDS);
+        Robot robot = new Robot();
+        robot.setAutoDelay(15);
+        robot.waitForIdle();
+        SwingUtilities.invokeAndWait(() -> w.action("start").actionPerformed(null));
+        long deadline = System.nanoTime() + 60_000_000_000L;
+        Snapshot s = null;
+        while (System.nanoTime() < deadline) {
+            s = w.runner() == null ? null : w.runner().latest();
+            if (s != null && s.timeSeconds() >= 2) {
+                break;
+            }
+            Thread.sleep(20);
+        }
+        SwingUtilities.invokeAndWait(() -> w.action("pause").actionPerformed(null));
+        Thread.sleep(300);
+        robot.waitForIdle();
+        RobotView before = onEdt(w::shownRobot);
+        if (before == null || before.id() != 0) {
+            fail("the sensor panel should show robot 0 at first, shows " + before);
+        }
+        GuiE2EDriver.shot(robot, w, out.resolve("robots-1-first-selected.png"));
+        Snapshot paused = w.runner().latest();
+        RobotView second = paused.robots().get(1);
+        Point p = onEdt(() -> {
+            Point o = w.arenaComponent().getLocationOnScreen();
+            return new Point(o.x + (int) StrictMath.round(w.view().sx(second.x())),
+                    o.y + (int) StrictMath.round(w.view().sy(second.y())));
+        });
+        robot.mouseMove(p.x, p.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        robot.waitForIdle();
+        Thread.sleep(300);
+        RobotView after = onEdt(w::shownRobot);
+        if (after == null || after.id() != 1) {
+            fail("a click on robot 1 at " + second.x() + ", " + second.y() + " should select it; the panel shows " + after);
+        }
+        int edits = onEdt(() -> w.model().arena().robots().size());
+        GuiE2EDriver.shot(robot, w, out.resolve("robots-2-second-selected.png"));
+        System.out.printf(Locale.ROOT, "panel showed robot 0 at (%.1f, %.1f), now robot 1 at (%.1f, %.1f); arena still has %d robots%n",
+                before.x(), before.y(), after.x(), after.y(), edits);
+        System.out.println("SELECTION OK");
+        SwingUtilities.invokeAndWait(() -> w.action("close").actionPerformed(null));
+        System.exit(0);
+    }
+
+    private static <T> T onEdt(java.util.function.Supplier<T> s) throws Exception {
+        AtomicReference<T> ref = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> ref.set(s.get()));
+        return ref.get();
+    }
+
+    private static void fail(String why) {
+        System.out.println("FAIL: " + why);
+        System.exit(1);
+    }
+}
