@@ -30,7 +30,6 @@ import org.kheperasim.sim.arena.Wall;
 import org.kheperasim.sim.engine.CapView;
 import org.kheperasim.sim.engine.GripperTurret;
 import org.kheperasim.sim.engine.GripperView;
-import org.kheperasim.sim.engine.Khepera;
 import org.kheperasim.sim.engine.RobotView;
 import org.kheperasim.sim.engine.Snapshot;
 
@@ -214,29 +213,6 @@ public final class ArenaRenderer {
             }
         }
         drawOverlay(g, view, arena, overlay);
-    }
-
-    /**
-     * With several robots, label each with its index and ring the one the panels show.
-     *
-     * @param selected the selected robot's index
-     */
-    static void drawRobotLabels(Graphics2D g, ViewTransform view, Snapshot snapshot, int selected) {
-        if (snapshot == null || snapshot.robots().size() < 2) {
-            return;
-        }
-        g.setFont(g.getFont().deriveFont(Font.BOLD, 11f));
-        for (RobotView r : snapshot.robots()) {
-            double radius = view.len(Khepera.BODY_RADIUS_MM);
-            if (r.id() == selected) {
-                g.setColor(new Color(0x1E6FFF));
-                g.setStroke(new BasicStroke(2.5f));
-                g.draw(new java.awt.geom.Ellipse2D.Double(view.sx(r.x()) - radius - 4, view.sy(r.y()) - radius - 4,
-                        2 * radius + 8, 2 * radius + 8));
-            }
-            g.setColor(new Color(0x202830));
-            g.drawString(Integer.toString(r.id()), (float) (view.sx(r.x()) + radius + 3), (float) (view.sy(r.y()) - radius));
-        }
     }
 
     private static void drawGrid(Graphics2D g, ViewTransform view, Arena arena) {

@@ -192,7 +192,7 @@ final class ArenaView extends JComponent {
             Snapshot now = snapshot.get();
             ArenaRenderer.drawDynamic(g2, view, shown, now,
                     new ArenaRenderer.Overlay(model.selection(), gestures.band(), gestures.refusedAt(), t), options);
-            ArenaRenderer.drawRobotLabels(g2, view, now, selection.index());
+            RobotLabels.draw(g2, view, now, selection.index());
         } finally {
             g2.dispose();
         }
