@@ -56,6 +56,7 @@ import org.kheperasim.sim.run.ControllerCatalog;
 import org.kheperasim.sim.run.ControllerCompiler;
 import org.kheperasim.sim.run.PacedRunner;
 import org.kheperasim.sim.serve.ProtocolServer;
+import org.kheperasim.sim.serve.ServedArena;
 import org.kheperasim.sim.serve.ServedRobot;
 import org.kheperasim.sim.run.RunRecording;
 import org.kheperasim.sim.run.RunSession;
@@ -116,8 +117,9 @@ public final class MainWindow {
     /** Run the controller uncontained (Controller > Trust this controller); off by default. */
     private boolean trusted;
     // "Serve this robot": a simulated robot answering the Khepera protocol over TCP, in real time.
-    private volatile ServedRobot served;
-    private ProtocolServer server;
+    private volatile ServedArena served;
+    /** One protocol server per robot of the served arena. */
+    private final List<ProtocolServer> servers = new ArrayList<>();
     private final java.util.concurrent.atomic.AtomicReference<Snapshot> servedLatest =
             new java.util.concurrent.atomic.AtomicReference<>();
     private Snapshot lastPainted;
@@ -197,7 +199,7 @@ public final class MainWindow {
 
     // ---- state read by the panels (event thread) ----
 
-    private Snapshot snapshot() {
+    Snapshot snapshot() {
         if (served != null) {
             return servedLatest.get();
         }
@@ -702,42 +704,55 @@ public final class MainWindow {
             stop();
         }
         long serveSeed = seed != null ? seed : Simulation.randomSeed();
-        ServedRobot robot = new ServedRobot(model.arena(), settings, serveSeed, 1.0);
-        robot.addListener(servedLatest::set, 20 * Engine.TICK_NANOS);
+        ServedArena world = new ServedArena(model.arena(), settings, serveSeed, 1.0);
+        world.addListener(servedLatest::set, 20 * Engine.TICK_NANOS);
         try {
-            server = ProtocolServer.start(robot, 0);
+            for (ServedRobot robot : world.robots()) {
+                servers.add(ProtocolServer.start(robot, 0));
+            }
         } catch (java.io.IOException e) {
-            robot.close();
-            console.error("Cannot serve the robot: " + e.getMessage() + ". Free a loopback port or use 'khepera-sim serve --port N'.");
+            servers.forEach(ProtocolServer::close);
+            servers.clear();
+            world.close();
+            console.error("Cannot serve the robots: " + e.getMessage() + ". Free a loopback port or use 'khepera-sim serve --port N'.");
             return;
         }
-        served = robot;
-        server.addListener(ev -> console.note("server: " + ev.text()));
-        console.note("Serving this robot at " + server.url() + " (seed " + serveSeed + "). Drive it with any Khepera client,"
-                + " e.g. java -jar robot-link/target/khepera-link.jar run --port " + server.url()
+        served = world;
+        for (int i = 0; i < servers.size(); i++) {
+            String who = servers.size() == 1 ? "server: " : "server of robot " + i + ": ";
+            servers.get(i).addListener(ev -> console.note(who + ev.text()));
+        }
+        String urls = servers.size() == 1 ? servers.get(0).url()
+                : String.join(", ", servers.stream().map(ProtocolServer::url).toList());
+        console.note((servers.size() == 1 ? "Serving this robot at " : "Serving these " + servers.size()
+                + " robots (robot 0, 1, ...) at ") + urls + " (seed " + serveSeed + "). Drive "
+                + (servers.size() == 1 ? "it" : "each") + " with any Khepera client, e.g. java -jar"
+                + " robot-link/target/khepera-link.jar run --port " + servers.get(0).url()
                 + " --controller WallFollower. Run > Stop serving ends it.");
-        showMessage("Serving at " + server.url(), false);
+        showMessage("Serving at " + urls, false);
         updateActions();
     }
 
     private void stopServing() {
-        ProtocolServer s = server;
-        ServedRobot r = served;
+        ServedArena r = served;
         served = null;
-        server = null;
-        if (s != null) {
-            s.close();
-        }
+        servers.forEach(ProtocolServer::close);
+        servers.clear();
         if (r != null) {
             r.close();
         }
-        console.note("Stopped serving; the robot's wheels were stopped.");
+        console.note("Stopped serving; the robots' wheels were stopped.");
         updateActions();
     }
 
-    /** @return the protocol server while the window serves its robot, else null (for tests and drivers) */
+    /** @return the protocol server of the first robot while the window serves, else null (for tests and drivers) */
     public ProtocolServer server() {
-        return server;
+        return servers.isEmpty() ? null : servers.get(0);
+    }
+
+    /** @return the protocol servers while the window serves, one per robot (for tests and drivers) */
+    public List<ProtocolServer> servers() {
+        return List.copyOf(servers);
     }
 
     /** @return the runner, or null (for tests and drivers) */

@@ -70,6 +70,33 @@ public final class RobotSelectionDriver {
         System.out.printf(Locale.ROOT, "panel showed robot 0 at (%.1f, %.1f), now robot 1 at (%.1f, %.1f); arena still has %d robots%n",
                 before.x(), before.y(), after.x(), after.y(), edits);
         System.out.println("SELECTION OK");
+
+        // Serving the arena from the window: each robot on its own port; two clients drive them together.
+        SwingUtilities.invokeAndWait(() -> w.action("stop").actionPerformed(null));
+        SwingUtilities.invokeAndWait(() -> w.action("serve").actionPerformed(null));
+        java.util.List<org.kheperasim.sim.serve.ProtocolServer> servers = onEdt(w::servers);
+        if (servers.size() != 2) {
+            fail("serving a two-robot arena should make two servers, made " + servers.size());
+        }
+        try (java.net.Socket a = new java.net.Socket(java.net.InetAddress.getLoopbackAddress(), servers.get(0).port());
+                java.net.Socket b = new java.net.Socket(java.net.InetAddress.getLoopbackAddress(), servers.get(1).port())) {
+            a.getOutputStream().write("D,8,8\n".getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+            b.getOutputStream().write("D,8,8\n".getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+            long until = System.nanoTime() + 60_000_000_000L;
+            boolean met = false;
+            while (!met && System.nanoTime() < until) {
+                Thread.sleep(100);
+                Snapshot served = onEdt(w::snapshot);
+                met = served != null && served.robots().size() == 2
+                        && served.robots().get(0).contact() != org.kheperasim.sim.engine.Contact.NONE
+                        && served.robots().get(1).contact() != org.kheperasim.sim.engine.Contact.NONE;
+            }
+            GuiE2EDriver.shot(robot, w, out.resolve("robots-3-served-and-met.png"));
+            if (!met) {
+                fail("the two served robots, driven at each other by two clients, did not meet within 60 s");
+            }
+        }
+        System.out.println("SERVE OK");
         SwingUtilities.invokeAndWait(() -> w.action("close").actionPerformed(null));
         System.exit(0);
     }

@@ -15,7 +15,7 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * A run of two robots in the window: each drawn and labelled, and a click on the second makes the
- * sensor panel show it. Under Xvfb, in a child JVM ({@link RobotSelectionDriver}); screenshots
+ * sensor panel show it; then the window serves the arena, and two clients drive the robots into each other. Under Xvfb, in a child JVM ({@link RobotSelectionDriver}); screenshots
  * under {@code target/}. Skipped without Xvfb, except in CI.
  */
 class RobotSelectionTest {
@@ -52,6 +52,7 @@ class RobotSelectionTest {
             assertTrue(done, "the driver did not finish in 150 s:\n" + out);
             assertEquals(0, child.exitValue(), out);
             assertTrue(out.contains("SELECTION OK"), out);
+            assertTrue(out.contains("SERVE OK"), out);
             assertTrue(Files.size(target.resolve("robots-2-second-selected.png")) > 10_000, "a screenshot was saved");
             System.out.println(out);
         } finally {
