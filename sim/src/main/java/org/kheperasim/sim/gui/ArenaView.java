@@ -60,6 +60,13 @@ final class ArenaView extends JComponent {
                 requestFocusInWindow();
                 int clicked = SwingUtilities.isLeftMouseButton(e) && !e.isShiftDown() && !e.isControlDown()
                         ? RobotSelection.robotAt(snapshot.get(), view.ax(e.getX()), view.ay(e.getY())) : -1;
+                if (clicked < 0 && SwingUtilities.isLeftMouseButton(e)) {
+                    // No run: a click on a robot's start selects that robot too (and may move it).
+                    int start = RobotSelection.startAt(model.shown(), view.ax(e.getX()), view.ay(e.getY()));
+                    if (start >= 0) {
+                        selection.select(start);
+                    }
+                }
                 if (clicked >= 0) {
                     // A robot of the run: the sensor panel and the plot follow it (no edit starts).
                     selection.select(clicked);

@@ -94,6 +94,7 @@ public final class MainWindow {
     private final ArenaView arenaView;
     private final SensorPanel sensorPanel;
     private final RobotSelection robotSelection = new RobotSelection();
+    private final RobotControllers robotControllers = new RobotControllers();
     private final JLabel message = new JLabel(" ");
     private final JLabel position = new JLabel(" ");
     private final JLabel clock = new JLabel(" ");
@@ -323,6 +324,17 @@ public final class MainWindow {
                 + " robot in this arena over TCP with the robot's own protocol", null, this::toggleServe);
         action("loadClasses", "Load compiled classes…", "add a folder or jar with your compiled controller", null, this::loadClasses);
         action("openJava", "Open .java…", "compile a controller source file and use it", null, this::openJava);
+        action("assignRobot", "Give the selected robot this controller", "from the next Start the selected robot (click it)"
+                + " runs the controller chosen now; the others keep theirs", null, () -> {
+                    int i = robotSelection.index();
+                    robotControllers.assign(i, controllerName);
+                    console.note("robot " + i + " will run " + controllerName + " from the next Start");
+                });
+        action("clearRobots", "Every robot runs the chosen controller", "forget the controllers given to single robots", null,
+                () -> {
+                    robotControllers.clear();
+                    console.note("every robot will run the controller chosen in the box from the next Start");
+                });
         action("reload", "Reload controller", "recompile the .java (if one was opened) and reset, picking up your changes", ks(KeyEvent.VK_F10, 0), this::reload);
         action("settings", "Settings…", "sensors, motors, light, link, seed", null, this::showSettings);
         action("seed", "Seed…", "the run's seed (a new random one by default)", null, this::askSeed);
@@ -412,6 +424,8 @@ public final class MainWindow {
         addAll(run, "serve");
         bar.add(run);
         JMenu controllerMenu = menu("Controller", KeyEvent.VK_C, "loadClasses", "openJava", "reload");
+        controllerMenu.addSeparator();
+        addAll(controllerMenu, "assignRobot", "clearRobots");
         controllerMenu.addSeparator();
         JCheckBoxMenuItem trust = new JCheckBoxMenuItem("Trust this controller (allow files, network, reflection)", trusted);
         trust.setToolTipText("uncontained: only for code you trust; see docs/controller-rules.md. Takes effect at the next Start.");
@@ -613,8 +627,8 @@ public final class MainWindow {
         long runSeed = seed != null ? seed : Simulation.randomSeed();
         RunSession session;
         try {
-            session = new RunSession(model.arena(), controllerName, new ControllerCatalog(classpath, trusted), runSeed, settings,
-                    console, ControllerHost.Options.defaults());
+            session = new RunSession(model.arena(), robotControllers.setups(model.arena().robots().size(), controllerName,
+                    settings), new ControllerCatalog(classpath, trusted), runSeed, console, ControllerHost.Options.defaults());
         } catch (RuntimeException e) {
             console.error("cannot start " + controllerName + ": " + e.getMessage());
             showMessage("Cannot start: " + e.getMessage(), true);
@@ -624,7 +638,8 @@ public final class MainWindow {
         trail.clear();
         plot.clear();
         session.addListener(trail, 20 * Engine.TICK_NANOS);
-        console.note("Run of " + controllerName + " in " + model.arena().name() + ", seed " + runSeed
+        String own = robotControllers.describe(model.arena().robots().size());
+        console.note("Run of " + controllerName + (own.isEmpty() ? "" : " (" + own + ")") + " in " + model.arena().name() + ", seed " + runSeed
                 + (settings.overrides().isEmpty() ? "" : ", settings " + settings.describe()));
         PacedRunner next = new PacedRunner(session, st -> javax.swing.SwingUtilities.invokeLater(this::stateChanged));
         next.setSpeed(speed);

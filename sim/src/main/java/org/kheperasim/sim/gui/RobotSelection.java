@@ -53,4 +53,15 @@ final class RobotSelection {
         }
         return -1;
     }
+
+    /** @return the robot whose start pose covers (x, y) in {@code arena}, mm, or -1 */
+    static int startAt(org.kheperasim.sim.arena.Arena arena, double x, double y) {
+        for (int i = 0; i < arena.robots().size(); i++) {
+            org.kheperasim.sim.arena.Pose p = arena.robots().get(i);
+            if (StrictMath.hypot(p.x() - x, p.y() - y) <= Khepera.BODY_RADIUS_MM) {
+                return i;
+            }
+        }
+        return -1;
+    }
 }

@@ -71,6 +71,30 @@ public final class RobotSelectionDriver {
                 before.x(), before.y(), after.x(), after.y(), edits);
         System.out.println("SELECTION OK");
 
+        // Robot 1 (selected) gets a controller of its own; the next run shows it.
+        SwingUtilities.invokeAndWait(() -> {
+            javax.swing.JComboBox<?> box = (javax.swing.JComboBox<?>) find(w.frame(), "controller");
+            box.setSelectedItem("WallFollower");
+            w.action("assignRobot").actionPerformed(null);
+            box.setSelectedItem("Braitenberg");
+            w.action("start").actionPerformed(null);
+        });
+        Snapshot mixed = null;
+        long until2 = System.nanoTime() + 60_000_000_000L;
+        while (System.nanoTime() < until2) {
+            mixed = w.runner() == null ? null : w.runner().latest();
+            if (mixed != null && mixed.timeSeconds() > 0.5) {
+                break;
+            }
+            Thread.sleep(20);
+        }
+        if (mixed == null || !mixed.robots().get(0).name().equals("Braitenberg#0")
+                || !mixed.robots().get(1).name().equals("WallFollower#1")) {
+            fail("robot 1 should run WallFollower and robot 0 Braitenberg: " + (mixed == null ? "no run"
+                    : mixed.robots().get(0).name() + ", " + mixed.robots().get(1).name()));
+        }
+        System.out.println("PER-ROBOT CONTROLLER OK");
+
         // Serving the arena from the window: each robot on its own port; two clients drive them together.
         SwingUtilities.invokeAndWait(() -> w.action("stop").actionPerformed(null));
         SwingUtilities.invokeAndWait(() -> w.action("serve").actionPerformed(null));
@@ -105,6 +129,21 @@ public final class RobotSelectionDriver {
         AtomicReference<T> ref = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> ref.set(s.get()));
         return ref.get();
+    }
+
+    private static java.awt.Component find(java.awt.Container root, String name) {
+        for (java.awt.Component c : root.getComponents()) {
+            if (name.equals(c.getName())) {
+                return c;
+            }
+            if (c instanceof java.awt.Container k) {
+                java.awt.Component f = find(k, name);
+                if (f != null) {
+                    return f;
+                }
+            }
+        }
+        return null;
     }
 
     private static void fail(String why) {

@@ -52,6 +52,7 @@ class RobotSelectionTest {
             assertTrue(done, "the driver did not finish in 150 s:\n" + out);
             assertEquals(0, child.exitValue(), out);
             assertTrue(out.contains("SELECTION OK"), out);
+            assertTrue(out.contains("PER-ROBOT CONTROLLER OK"), out);
             assertTrue(out.contains("SERVE OK"), out);
             assertTrue(Files.size(target.resolve("robots-2-second-selected.png")) > 10_000, "a screenshot was saved");
             System.out.println(out);
