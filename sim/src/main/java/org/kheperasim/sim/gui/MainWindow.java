@@ -95,6 +95,7 @@ public final class MainWindow {
     private final SensorPanel sensorPanel;
     private final RobotSelection robotSelection = new RobotSelection();
     private final RobotControllers robotControllers = new RobotControllers();
+    private WindowKeys windowKeys;
     private final JLabel message = new JLabel(" ");
     private final JLabel position = new JLabel(" ");
     private final JLabel clock = new JLabel(" ");
@@ -560,8 +561,7 @@ public final class MainWindow {
         bind(root, KeyStroke.getKeyStroke(KeyEvent.VK_BACK_SPACE, 0), "delete");
         bind(root, KeyStroke.getKeyStroke('['), "rotateLeft");
         bind(root, KeyStroke.getKeyStroke(']'), "rotateRight");
-        bind(root, KeyStroke.getKeyStroke(KeyEvent.VK_SPACE, 0), "startPause");
-        root.getActionMap().put("startPause", new AbstractAction() {
+        Action startPause = new AbstractAction() {
             @Override
             public void actionPerformed(ActionEvent e) {
                 Action a = runner != null && runner.state() == PacedRunner.State.RUNNING ? actions.get("pause") : actions.get("start");
@@ -569,7 +569,11 @@ public final class MainWindow {
                     a.actionPerformed(e);
                 }
             }
-        });
+        };
+        // F5..F10 and Space work wherever the focus is (split panes take F6/F8, the menu bar F10).
+        windowKeys = WindowKeys.install(frame, Map.of(KeyEvent.VK_F5, actions.get("start"), KeyEvent.VK_F6,
+                actions.get("pause"), KeyEvent.VK_F7, actions.get("step"), KeyEvent.VK_F8, actions.get("stop"),
+                KeyEvent.VK_F9, actions.get("reset"), KeyEvent.VK_F10, actions.get("reload")), startPause);
         for (Tool t : Tool.values()) {
             bind(root, KeyStroke.getKeyStroke(t.key().charAt(0)), "tool." + t.name());
             bind(root, KeyStroke.getKeyStroke(Character.toLowerCase(t.key().charAt(0))), "tool." + t.name());
@@ -942,6 +946,9 @@ public final class MainWindow {
 
     private void close() {
         timer.stop();
+        if (windowKeys != null) {
+            windowKeys.uninstall();
+        }
         if (served != null) {
             stopServing();
         }

@@ -1,0 +1,111 @@
+package org.kheperasim.sim.gui;
+
+import java.awt.Component;
+import java.awt.Container;
+import java.awt.Point;
+import java.awt.Robot;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
+import javax.swing.SwingUtilities;
+import org.kheperasim.sim.cli.Main;
+import org.kheperasim.sim.run.PacedRunner;
+
+/**
+ * Runs in a child JVM under Xvfb (see {@link KeyBindingsTest}): presses F5, F6, F7, F8, F10 and
+ * Space with the focus in the arena view and then in the console, and checks what each did.
+ */
+public final class KeyBindingsDriver {
+    private static Robot robot;
+    private static MainWindow w;
+
+    private KeyBindingsDriver() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        int code = Main.commandLine().execute("gui", "--arena", "lab", "--controller", "Braitenberg", "--seed", "3");
+        if (code != 0) {
+            fail("the gui command returned " + code);
+        }
+        w = GuiLauncher.lastLaunched().get(20, TimeUnit.SECONDS);
+        robot = new Robot();
+        robot.setAutoDelay(20);
+        robot.waitForIdle();
+        Thread.sleep(500);
+        for (String focus : new String[] {"arena", "consoleText"}) {
+            Component target = focus.equals("arena") ? w.arenaComponent() : onEdt(() -> find(w.frame(), focus));
+            // A click near the target's corner puts the focus there.
+            Point p = onEdt(() -> {
+                Point o = target.getLocationOnScreen();
+                return new Point(o.x + 8, o.y + 8);
+            });
+            robot.mouseMove(p.x, p.y);
+            robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+            robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+            robot.waitForIdle();
+            String owner = onEdt(() -> {
+                Component c = java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner();
+                return c == null ? "nothing" : c.getClass().getSimpleName() + "/" + c.getName();
+            });
+            System.out.println("focus in " + owner);
+            press(KeyEvent.VK_F5, "F5 starts", () -> state() == PacedRunner.State.RUNNING);
+            press(KeyEvent.VK_F6, "F6 pauses", () -> state() == PacedRunner.State.PAUSED);
+            long before = w.runner().latest().timeNanos();
+            press(KeyEvent.VK_F7, "F7 steps", () -> state() == PacedRunner.State.PAUSED && w.runner().latest().timeNanos() > before);
+            press(KeyEvent.VK_SPACE, "Space resumes", () -> state() == PacedRunner.State.RUNNING);
+            press(KeyEvent.VK_SPACE, "Space pauses", () -> state() == PacedRunner.State.PAUSED);
+            press(KeyEvent.VK_F8, "F8 stops", () -> state() == PacedRunner.State.STOPPED);
+            press(KeyEvent.VK_F10, "F10 reloads (the run is discarded)", () -> w.runner() == null);
+        }
+        System.out.println("KEYS OK");
+        SwingUtilities.invokeAndWait(() -> w.action("close").actionPerformed(null));
+        System.exit(0);
+    }
+
+    private static PacedRunner.State state() {
+        PacedRunner r = w.runner();
+        return r == null ? null : r.state();
+    }
+
+    private static void press(int key, String what, BooleanSupplier done) throws Exception {
+        robot.keyPress(key);
+        robot.keyRelease(key);
+        robot.waitForIdle();
+        long until = System.nanoTime() + 20_000_000_000L;
+        while (!done.getAsBoolean() && System.nanoTime() < until) {
+            Thread.sleep(20);
+        }
+        if (!done.getAsBoolean()) {
+            fail(what + ": not done within 20 s; the run is " + state());
+        }
+        System.out.println(what + ": ok");
+    }
+
+    private static Component find(Container root, String name) {
+        for (Component c : root.getComponents()) {
+            if (name.equals(c.getName())) {
+                return c;
+            }
+            if (c instanceof Container k) {
+                Component f = find(k, name);
+                if (f != null) {
+                    return f;
+                }
+            }
+        }
+        return null;
+    }
+
+    private static <T> T onEdt(java.util.function.Supplier<T> s) throws Exception {
+        AtomicReference<T> ref = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> ref.set(s.get()));
+        return ref.get();
+    }
+
+    private static void fail(String why) {
+        System.out.println("FAIL: " + why);
+        System.exit(1);
+    }
+}
