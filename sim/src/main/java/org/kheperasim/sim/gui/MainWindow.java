@@ -834,6 +834,26 @@ public final class MainWindow {
         arenaView.fit();
     }
 
+    /**
+     * Before the window closes with unsaved arena edits: Save (then close), Discard, or Cancel.
+     *
+     * @return true when the window may go on (saved, discarded, or nothing to save)
+     */
+    private boolean mayLeaveEdits(String doing) {
+        if (!model.dirty()) {
+            return true;
+        }
+        Object[] options = {"Save", "Discard", "Cancel"};
+        int choice = JOptionPane.showOptionDialog(frame, "The arena " + model.arena().name() + " has unsaved changes. Save"
+                + " them before " + doing + "?", "Unsaved changes", JOptionPane.YES_NO_CANCEL_OPTION,
+                JOptionPane.WARNING_MESSAGE, null, options, options[0]);
+        if (choice == 0) {
+            save(false);
+            return !model.dirty();
+        }
+        return choice == 1;
+    }
+
     private boolean confirmDiscard() {
         return !model.dirty() || JOptionPane.showConfirmDialog(frame, "The arena has unsaved changes. Discard them?", "Unsaved changes",
                 JOptionPane.YES_NO_OPTION) == JOptionPane.YES_OPTION;
@@ -945,6 +965,9 @@ public final class MainWindow {
     }
 
     private void close() {
+        if (!mayLeaveEdits("closing")) {
+            return;
+        }
         timer.stop();
         if (windowKeys != null) {
             windowKeys.uninstall();

@@ -116,6 +116,8 @@ public final class GuiE2EDriver {
             fail("the robot did not turn away from the wall");
         }
         System.out.println("E2E OK");
+        // The drawn wall is not to be kept: no save prompt.
+        SwingUtilities.invokeAndWait(() -> w.model().markSaved());
         SwingUtilities.invokeAndWait(() -> w.action("close").actionPerformed(null));
         System.exit(0);
     }

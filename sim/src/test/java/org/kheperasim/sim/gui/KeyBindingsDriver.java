@@ -60,7 +60,54 @@ public final class KeyBindingsDriver {
             press(KeyEvent.VK_F10, "F10 reloads (the run is discarded)", () -> w.runner() == null);
         }
         System.out.println("KEYS OK");
-        SwingUtilities.invokeAndWait(() -> w.action("close").actionPerformed(null));
+
+        // Unsaved edits: Ctrl+Q asks first; Cancel keeps the window, Discard closes it.
+        SwingUtilities.invokeAndWait(() -> w.model().apply(org.kheperasim.sim.edit.ArenaEdits.addCap(w.model().arena(), 900, 900)));
+        for (String answer : new String[] {"Cancel", "Discard"}) {
+            // The focus back in the window (after a dialog, without a window manager it may be nowhere).
+            Point corner = onEdt(() -> {
+                Point o = w.arenaComponent().getLocationOnScreen();
+                return new Point(o.x + 8, o.y + 8);
+            });
+            robot.mouseMove(corner.x, corner.y);
+            robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+            robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+            robot.waitForIdle();
+            robot.keyPress(KeyEvent.VK_CONTROL);
+            robot.keyPress(KeyEvent.VK_Q);
+            robot.keyRelease(KeyEvent.VK_Q);
+            robot.keyRelease(KeyEvent.VK_CONTROL);
+            robot.waitForIdle();
+            Component button = null;
+            long until = System.nanoTime() + 20_000_000_000L;
+            while (button == null && System.nanoTime() < until) {
+                Thread.sleep(50);
+                button = onEdt(() -> {
+                    for (java.awt.Window win : java.awt.Window.getWindows()) {
+                        if (win instanceof javax.swing.JDialog d && d.isShowing() && "Unsaved changes".equals(d.getTitle())) {
+                            return buttonLabelled(d, answer);
+                        }
+                    }
+                    return null;
+                });
+            }
+            if (button == null) {
+                fail("Ctrl+Q with unsaved edits should ask first; no 'Unsaved changes' dialog with " + answer);
+            }
+            Component b = button;
+            GuiE2EDriver.shot(robot, w, java.nio.file.Path.of(args.length > 0 ? args[0] : "target").resolve("keys-save-prompt.png"));
+            SwingUtilities.invokeLater(() -> ((javax.swing.AbstractButton) b).doClick());
+            Thread.sleep(500);
+            boolean open = onEdt(() -> w.frame().isDisplayable());
+            if (answer.equals("Cancel") && !open) {
+                fail("Cancel in the save prompt closed the window");
+            }
+            if (answer.equals("Discard") && open) {
+                fail("Discard in the save prompt did not close the window");
+            }
+            System.out.println("save prompt, " + answer + ": ok");
+        }
+        System.out.println("SAVE PROMPT OK");
         System.exit(0);
     }
 
@@ -81,6 +128,21 @@ public final class KeyBindingsDriver {
             fail(what + ": not done within 20 s; the run is " + state());
         }
         System.out.println(what + ": ok");
+    }
+
+    private static Component buttonLabelled(Container root, String label) {
+        for (Component c : root.getComponents()) {
+            if (c instanceof javax.swing.AbstractButton b && label.equals(b.getText())) {
+                return c;
+            }
+            if (c instanceof Container k) {
+                Component f = buttonLabelled(k, label);
+                if (f != null) {
+                    return f;
+                }
+            }
+        }
+        return null;
     }
 
     private static Component find(Container root, String name) {

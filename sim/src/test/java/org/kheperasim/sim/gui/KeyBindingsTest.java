@@ -16,7 +16,8 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * The run keys work wherever the focus is: a real keyboard (java.awt.Robot under Xvfb, in a child
  * JVM, {@link KeyBindingsDriver}) presses F5, F6, F7, F8, F10 and Space with the focus in the arena
- * view and in the console. Skipped without Xvfb, except in CI.
+ * view and in the console; then, with an unsaved edit, Ctrl+Q asks first (Cancel keeps the window,
+ * Discard closes it). Skipped without Xvfb, except in CI.
  */
 class KeyBindingsTest {
     @TempDir
@@ -38,7 +39,7 @@ class KeyBindingsTest {
         Files.createDirectories(target);
         Path log = target.resolve("key-bindings-driver.log");
         try {
-            Process child = GuiEndToEndTest.childJvm(display[0], KeyBindingsDriver.class.getName(), log);
+            Process child = GuiEndToEndTest.childJvm(display[0], KeyBindingsDriver.class.getName(), log, target.toString());
             boolean done = child.waitFor(150, TimeUnit.SECONDS);
             if (!done) {
                 child.destroyForcibly();
@@ -47,6 +48,7 @@ class KeyBindingsTest {
             assertTrue(done, "the driver did not finish in 150 s:\n" + out);
             assertEquals(0, child.exitValue(), out);
             assertTrue(out.contains("KEYS OK"), out);
+            assertTrue(out.contains("SAVE PROMPT OK"), out);
             System.out.println(out);
         } finally {
             x.destroy();
