@@ -56,15 +56,23 @@ final class ConsolePanel extends JPanel implements ConsoleSink {
         pending.add(line);
     }
 
-    /** @param text a note from the window itself */
+    /** Where the window's own notes take their time stamp from: the run's simulated time now. */
+    private volatile java.util.function.LongSupplier now = () -> 0;
+
+    /** @param clock the simulated time now, ns (0 with no run) */
+    void clock(java.util.function.LongSupplier clock) {
+        now = clock;
+    }
+
+    /** @param text a note from the window itself, stamped with the run's simulated time */
     void note(String note) {
-        pending.add(new ConsoleLine(0, "simulator", ConsoleLine.Kind.INFO, note));
+        pending.add(new ConsoleLine(now.getAsLong(), "simulator", ConsoleLine.Kind.INFO, note));
     }
 
     /** @param text an error from the window itself (a compile error, say) */
     void error(String message) {
         errors++;
-        pending.add(new ConsoleLine(0, "simulator", ConsoleLine.Kind.ERROR, message));
+        pending.add(new ConsoleLine(now.getAsLong(), "simulator", ConsoleLine.Kind.ERROR, message));
     }
 
     /** @return errors shown so far */

@@ -143,7 +143,11 @@ public final class MainWindow {
         classpath = new ArrayList<>(options.classpath());
         seed = options.seed();
         arenaView = new ArenaView(model, gestures, this::snapshot, this::trails, robotSelection);
-        sensorPanel = new SensorPanel(() -> robotSelection.in(snapshot()));
+        sensorPanel = new SensorPanel(() -> robotSelection.in(snapshot()), this::runState);
+        console.clock(() -> {
+            Snapshot now = snapshot();
+            return now == null ? 0 : now.timeNanos();
+        });
         robotSelection.onChange(() -> javax.swing.SwingUtilities.invokeLater(() -> {
             plot.clear();
             sensorPanel.repaint();
@@ -177,15 +181,20 @@ public final class MainWindow {
         console.setPreferredSize(new Dimension(900, 150));
         JSplitPane main = new JSplitPane(JSplitPane.VERTICAL_SPLIT, top, console);
         main.setResizeWeight(1);
+        // However small the screen, the console (compile errors, stack traces) opens 150 px tall.
+        frame.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowOpened(WindowEvent e) {
+                main.setDividerLocation(StrictMath.max(200, main.getHeight() - main.getDividerSize() - 150));
+            }
+        });
         JPanel content = new JPanel(new BorderLayout());
         content.add(toolbar(), BorderLayout.NORTH);
         content.add(main, BorderLayout.CENTER);
         content.add(statusBar(), BorderLayout.SOUTH);
         frame.setContentPane(content);
         keys();
-        frame.setSize(1180, 900);
-        frame.setLocationByPlatform(false);
-        frame.setLocation(20, 20);
+        frame.setBounds(WindowSize.fit(prefs.getInt("width", 1180), prefs.getInt("height", 900)));
         setTool(Tool.SELECT);
         updateActions();
         console.note("Loaded arena " + arena.name() + "; controller " + controllerName
@@ -207,6 +216,15 @@ public final class MainWindow {
         }
         PacedRunner r = runner;
         return r == null ? null : r.latest();
+    }
+
+    /** @return the run's state in words: running, paused, stopped, finished, ready, serving; null with no run */
+    private String runState() {
+        if (served != null) {
+            return "serving";
+        }
+        PacedRunner r = runner;
+        return r == null ? null : r.state().name().toLowerCase(Locale.ROOT);
     }
 
     /** @return the robot the sensor panel shows (tests) */
@@ -761,6 +779,7 @@ public final class MainWindow {
             r.close();
         }
         console.note("Stopped serving; the robots' wheels were stopped.");
+        showMessage("Stopped serving", false);
         updateActions();
     }
 
@@ -968,6 +987,8 @@ public final class MainWindow {
         if (!mayLeaveEdits("closing")) {
             return;
         }
+        prefs.putInt("width", frame.getWidth());
+        prefs.putInt("height", frame.getHeight());
         timer.stop();
         if (windowKeys != null) {
             windowKeys.uninstall();

@@ -7,12 +7,18 @@ import java.util.function.Supplier;
 import javax.swing.JComponent;
 import org.kheperasim.sim.engine.RobotView;
 
-/** Hosts {@link SensorRenderer#draw} for the first robot of the latest snapshot. */
+/** Hosts {@link SensorRenderer#draw} for the selected robot of the latest snapshot. */
 final class SensorPanel extends JComponent {
     private final Supplier<RobotView> robot;
+    private final Supplier<String> runState;
 
-    SensorPanel(Supplier<RobotView> robot) {
+    /**
+     * @param robot the robot to show (the selected one of the latest snapshot)
+     * @param runState the run's state in words, or null
+     */
+    SensorPanel(Supplier<RobotView> robot, Supplier<String> runState) {
         this.robot = robot;
+        this.runState = runState;
         setName("sensorPanel");
         setPreferredSize(new Dimension(330, SensorRenderer.preferredHeight()));
         setMinimumSize(new Dimension(300, SensorRenderer.preferredHeight()));
@@ -22,7 +28,7 @@ final class SensorPanel extends JComponent {
     protected void paintComponent(Graphics g) {
         Graphics2D g2 = (Graphics2D) g.create();
         try {
-            SensorRenderer.draw(g2, getWidth(), getHeight(), robot.get());
+            SensorRenderer.draw(g2, getWidth(), getHeight(), robot.get(), runState.get());
         } finally {
             g2.dispose();
         }

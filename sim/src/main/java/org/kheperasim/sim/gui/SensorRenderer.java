@@ -46,6 +46,16 @@ public final class SensorRenderer {
      * @param r the robot, or null before a run
      */
     public static void draw(Graphics2D g, int w, int h, RobotView r) {
+        draw(g, w, h, r, null);
+    }
+
+    /**
+     * As {@link #draw(Graphics2D, int, int, RobotView)}, telling the run's state where the
+     * controller's own would mislead (a running controller in a paused run shows "paused").
+     *
+     * @param runState the run's state (running, paused, stopped, ...), or null
+     */
+    public static void draw(Graphics2D g, int w, int h, RobotView r, String runState) {
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
         g.setColor(new Color(0xFAFAFA));
@@ -113,7 +123,8 @@ public final class SensorRenderer {
             g.drawString(String.format(Locale.ROOT, "pose (%.1f, %.1f) mm  %.1f deg  robot %d", r.x(), r.y(), r.headingDeg(),
                     r.id()), 10, (float) y + 32);
             g.drawString("contact " + r.contact().name().toLowerCase(Locale.ROOT) + "  collisions " + r.collisions()
-                    + "  " + r.controller(), 10, (float) y + 48);
+                    + "  " + ("running".equals(r.controller()) && runState != null ? runState : r.controller()), 10,
+                    (float) y + 48);
         } else {
             g.drawString("no run yet: press Start", 10, (float) y);
         }

@@ -35,11 +35,16 @@ class GuiEndToEndTest {
 
     /** Starts Xvfb on a free display; the caller destroys it. */
     static Process startXvfb(Path xvfb, int[] display) throws IOException, InterruptedException {
+        return startXvfb(xvfb, display, "1280x1024x24");
+    }
+
+    /** Starts Xvfb with a screen of {@code screen} (e.g. 1366x768x24) on a free display; the caller destroys it. */
+    static Process startXvfb(Path xvfb, int[] display, String screen) throws IOException, InterruptedException {
         for (int n = 91; n < 200; n++) {
             if (Files.exists(Path.of("/tmp/.X11-unix/X" + n)) || Files.exists(Path.of("/tmp/.X" + n + "-lock"))) {
                 continue;
             }
-            Process p = new ProcessBuilder(xvfb.toString(), ":" + n, "-screen", "0", "1280x1024x24", "-nolisten", "tcp")
+            Process p = new ProcessBuilder(xvfb.toString(), ":" + n, "-screen", "0", screen, "-nolisten", "tcp")
                     .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
             long until = System.nanoTime() + 10_000_000_000L;
             while (System.nanoTime() < until && p.isAlive() && !Files.exists(Path.of("/tmp/.X11-unix/X" + n))) {

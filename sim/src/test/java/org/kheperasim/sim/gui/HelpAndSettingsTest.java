@@ -27,6 +27,17 @@ class HelpAndSettingsTest {
     }
 
     @Test
+    void theHelpListsEveryPageOfTheDocsFolder() throws java.io.IOException {
+        Path docs = Path.of(System.getProperty("kheperasim.repoRoot", ".."), "docs");
+        java.util.Set<String> pages;
+        try (var files = java.nio.file.Files.list(docs)) {
+            pages = files.map(f -> f.getFileName().toString()).filter(n -> n.endsWith(".md"))
+                    .collect(java.util.stream.Collectors.toCollection(java.util.TreeSet::new));
+        }
+        assertEquals(pages, new java.util.TreeSet<>(HelpDialog.PAGES), "Help > Manual lists exactly the pages in docs/");
+    }
+
+    @Test
     void aProfileRoundTripsAndABadLineIsNamed(@TempDir Path dir) {
         Settings s = Settings.defaults().with("prox.3.dead", "true").with("motor.left.calibration", "0.8").with("link.baud", "9600");
         Path file = dir.resolve("worn.settings");
