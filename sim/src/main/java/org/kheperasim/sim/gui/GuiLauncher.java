@@ -3,7 +3,6 @@ package org.kheperasim.sim.gui;
 import java.awt.GraphicsEnvironment;
 import java.util.concurrent.CompletableFuture;
 import javax.swing.SwingUtilities;
-import javax.swing.UIManager;
 
 /** Opens the simulator's window: the command line's entry point into the GUI. */
 public final class GuiLauncher {
@@ -47,10 +46,9 @@ public final class GuiLauncher {
         last = shown;
         SwingUtilities.invokeLater(() -> {
             try {
-                try {
-                    UIManager.setLookAndFeel(UIManager.getCrossPlatformLookAndFeelClassName());
-                } catch (ReflectiveOperationException | javax.swing.UnsupportedLookAndFeelException e) {
-                    LOG.log(System.Logger.Level.DEBUG, "keeping the default look and feel: " + e);
+                // FlatLaf: a modern look, and proper scaling on HiDPI screens.
+                if (!com.formdev.flatlaf.FlatLightLaf.setup()) {
+                    LOG.log(System.Logger.Level.DEBUG, "FlatLaf could not be set up; keeping the default look and feel");
                 }
                 MainWindow w = new MainWindow(options);
                 w.frame().setVisible(true);

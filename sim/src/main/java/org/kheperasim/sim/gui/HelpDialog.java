@@ -48,6 +48,23 @@ final class HelpDialog {
         list.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
         JEditorPane view = new JEditorPane("text/html", "");
         view.setEditable(false);
+        // A link to another page of the manual opens it here; any other goes to the browser.
+        view.addHyperlinkListener(e -> {
+            if (e.getEventType() != javax.swing.event.HyperlinkEvent.EventType.ACTIVATED) {
+                return;
+            }
+            String href = String.valueOf(e.getDescription());
+            String target = href.contains("#") ? href.substring(0, href.indexOf('#')) : href;
+            if (available.contains(target)) {
+                list.setSelectedValue(target, true);
+            } else if (e.getURL() != null && java.awt.Desktop.isDesktopSupported()) {
+                try {
+                    java.awt.Desktop.getDesktop().browse(e.getURL().toURI());
+                } catch (IOException | java.net.URISyntaxException | UnsupportedOperationException ex) {
+                    LOG.log(System.Logger.Level.INFO, "cannot open " + href + ": " + ex);
+                }
+            }
+        });
         list.addListSelectionListener(e -> {
             String sel = list.getSelectedValue();
             if (sel != null) {

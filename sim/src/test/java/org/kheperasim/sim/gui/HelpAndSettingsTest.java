@@ -22,8 +22,14 @@ class HelpAndSettingsTest {
             String html = Markdown.toHtml(text);
             assertTrue(html.contains("<h1>"), page);
         }
-        assertEquals("<html><body style='font-family:sans-serif; margin:10px'><h2>A &lt;b&gt;</h2><ul><li><code>x</code></li></ul>"
-                + "<pre style='background:#f0f0f0'>a &amp; b\n</pre></body></html>", Markdown.toHtml("## A <b>\n* `x`\n```\na & b\n```"));
+        String html = Markdown.toHtml("## A <b>\n\n1. one\n2. two\n\n| key | what |\n|---|---|\n| F5 | start |\n\n"
+                + "See [the model](simulation-model.md) and `x`.\n\n```\na & b\n```\n");
+        assertTrue(html.contains("<h2>A &lt;b&gt;</h2>"), "headings, raw HTML shown as text: " + html);
+        assertTrue(html.contains("<ol>") && html.contains("<li>two</li>"), "numbered lists are numbered: " + html);
+        assertTrue(html.contains("<table>") && html.contains("<th>key</th>") && html.contains("<td>F5</td>"),
+                "tables are tables, not pipes: " + html);
+        assertTrue(html.contains("<a href=\"simulation-model.md\">the model</a>"), "links are links: " + html);
+        assertTrue(html.contains("<pre><code>a &amp; b"), "code blocks, escaped: " + html);
     }
 
     @Test
