@@ -96,6 +96,8 @@ public final class MainWindow {
     private final RobotSelection robotSelection = new RobotSelection();
     private final RobotControllers robotControllers = new RobotControllers();
     private WindowKeys windowKeys;
+    /** The trace the current run writes, or null. */
+    private volatile Path runTrace;
     private final JLabel message = new JLabel(" ");
     private final JLabel position = new JLabel(" ");
     private final JLabel clock = new JLabel(" ");
@@ -657,6 +659,7 @@ public final class MainWindow {
             return false;
         }
         runSettings = settings;
+        keepTrace(session);
         trail.clear();
         plot.clear();
         session.addListener(trail, 20 * Engine.TICK_NANOS);
@@ -975,10 +978,35 @@ public final class MainWindow {
         }
         Path dir = c.getSelectedFile().toPath();
         saveRecording(r, classpath, runSettings, dir);
-        showMessage("Recording saved in " + dir + " (see replay.txt)", false);
+        Path trace = runTrace;
+        if (trace != null) {
+            try {
+                // Whole lines, written at least once a second: the run up to about its last second.
+                org.kheperasim.sim.files.AtomicFiles.write(dir.resolve("run.trace"), Files.readString(trace));
+            } catch (java.io.IOException e) {
+                console.error("the recording has no run.trace: " + e.getMessage());
+            }
+        }
+        showMessage("Recording saved in " + dir + " (see replay.txt; check it with 'verify " + dir + "')", false);
     }
 
-    /** Save what replays a run exactly (see {@link RunRecording}). */
+    /**
+     * Every run of the window keeps its trace (100 ms samples) in a temporary file, so that a run
+     * recording holds what the run did, for {@code verify}.
+     */
+    private void keepTrace(RunSession session) {
+        try {
+            Path file = Files.createTempFile("khepera-window-run-", ".trace");
+            file.toFile().deleteOnExit();
+            session.trace(org.kheperasim.sim.trace.LineFileWriter.open(file), 100);
+            runTrace = file;
+        } catch (java.io.IOException e) {
+            runTrace = null;
+            console.note("this run keeps no trace (" + e.getMessage() + "); a recording of it cannot be verified");
+        }
+    }
+
+    /** Save what replays a run exactly (see {@link RunRecording}), with the run's trace so far. */
     static void saveRecording(PacedRunner r, List<Path> classpath, Settings settings, Path dir) {
         RunRecording.save(r.session(), r.latest().timeSeconds(), classpath, settings, dir);
     }
