@@ -28,7 +28,7 @@ class ArchitectureTest {
     @Test
     void onlyTheWindowTouchesTheScreen() {
         noClasses().that().resideInAnyPackage("..sim.engine..", "..sim.host..", "..sim.run..", "..sim.trace..",
-                        "..sim.arena..", "..sim.edit..", "..sim.serve..")
+                        "..sim.arena..", "..sim.edit..", "..sim.serve..", "..sim.replay..")
                 .should().dependOnClassesThat().resideInAnyPackage("java.awt..", "javax.swing..")
                 .because("the engine and everything it runs on work headless; only the gui package draws")
                 .check(sim);

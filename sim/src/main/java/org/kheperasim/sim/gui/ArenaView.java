@@ -32,6 +32,7 @@ final class ArenaView extends JComponent {
     private final ViewTransform view = new ViewTransform();
     private ArenaRenderer.Options options = ArenaRenderer.Options.all();
     private boolean fitted;
+    private java.util.function.BooleanSupplier editable = () -> true;
     private int lastW;
     private int lastH;
     private double mouseX = Double.NaN;
@@ -42,6 +43,11 @@ final class ArenaView extends JComponent {
     private long frames;
     private BufferedImage background;
     private String backgroundKey;
+
+    /** @param e whether mouse gestures edit the arena now (not while a replay is shown: then they pan) */
+    void setEditable(java.util.function.BooleanSupplier e) {
+        editable = e;
+    }
 
     ArenaView(EditorModel model, EditGestures gestures, Supplier<Snapshot> snapshot, Supplier<List<float[]>> trails,
             RobotSelection selection) {
@@ -71,7 +77,7 @@ final class ArenaView extends JComponent {
                     // A robot of the run: the sensor panel and the plot follow it (no edit starts).
                     selection.select(clicked);
                     clickedRobot = true;
-                } else if (SwingUtilities.isLeftMouseButton(e) && !e.isAltDown()) {
+                } else if (SwingUtilities.isLeftMouseButton(e) && !e.isAltDown() && editable.getAsBoolean()) {
                     gestures.press(view.ax(e.getX()), view.ay(e.getY()), e.isShiftDown() || e.isControlDown(), 6 / view.scale());
                 } else {
                     panning = true;

@@ -1,154 +1,251 @@
 package org.kheperasim.sim.gui;
 
-import java.awt.BasicStroke;
 import java.awt.BorderLayout;
-import java.awt.Color;
 import java.awt.Dimension;
-import java.awt.Font;
-import java.awt.Graphics;
+import java.awt.FlowLayout;
 import java.awt.Graphics2D;
 import java.awt.GridLayout;
 import java.awt.Insets;
-import java.awt.RenderingHints;
-import java.awt.geom.Path2D;
-import java.awt.geom.Rectangle2D;
-import javax.swing.JComponent;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import javax.imageio.ImageIO;
+import javax.swing.JButton;
+import javax.swing.JComboBox;
+import javax.swing.JFileChooser;
 import javax.swing.JPanel;
 import javax.swing.JToggleButton;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.files.AtomicFiles;
+import org.kheperasim.sim.replay.RobotSeries;
 
 /**
- * A rolling plot of chosen sensors over the last {@link #WINDOW_S} simulated seconds. Fed from the
- * window's timer with the latest snapshot (on the event thread); at high speeds it shows what the
- * screen sampled, which is all a person can see anyway.
+ * The plot: any proximity or light sensor, the wheel speeds or the encoders of the selected robot,
+ * over the last 10 s, 60 s, 10 min or the whole run, with axes in seconds and the quantity's units.
+ * The shown data exports as CSV and the view as PNG.
  */
 final class PlotPanel extends JPanel {
-    static final double WINDOW_S = 10;
-    private static final int SERIES = 16;
-    private static final int CAPACITY = 4096;
-    private static final Color[] COLOURS = {
-        new Color(0xE6194B), new Color(0x3CB44B), new Color(0x4363D8), new Color(0xF58231),
-        new Color(0x911EB4), new Color(0x42D4F4), new Color(0xF032E6), new Color(0x9A6324),
-    };
+    /** The quantities offered: label, first channel, channels, axis title, fixed top or NaN. */
+    private enum Quantity {
+        PROXIMITY("Proximity", RobotSeries.PROXIMITY, 8, "proximity, 0..1023 (higher = nearer)", 1023),
+        LIGHT("Light", RobotSeries.LIGHT, 8, "light, 0..1023 (lower = brighter)", 1023),
+        SPEED("Wheel speed", RobotSeries.SPEED, 2, "speed, units (1 = 8 mm/s)", Double.NaN),
+        ENCODER("Encoders", RobotSeries.ENCODER, 2, "encoder, pulses (1 = 0.08 mm)", Double.NaN);
 
-    private final double[] times = new double[CAPACITY];
-    private final int[][] values = new int[SERIES][CAPACITY];
-    private int start;
-    private int count;
-    private double lastTime = -1;
-    private final JToggleButton[] chosen = new JToggleButton[SERIES];
-    private final JComponent canvas;
+        final String label;
+        final int first;
+        final int count;
+        final String unit;
+        final double max;
+
+        Quantity(String label, int first, int count, String unit, double max) {
+            this.label = label;
+            this.first = first;
+            this.count = count;
+            this.unit = unit;
+            this.max = max;
+        }
+
+        @Override
+        public String toString() {
+            return label;
+        }
+    }
+
+    /** Spans offered, s; the last is the whole run. */
+    static final double[] SPANS = {10, 60, 600, Double.POSITIVE_INFINITY};
+
+    private final PlotCanvas canvas = new PlotCanvas();
+    private final JComboBox<Quantity> quantity = new JComboBox<>(Quantity.values());
+    private final JComboBox<String> span = new JComboBox<>(new String[] {"last 10 s", "last 60 s", "last 10 min", "whole run"});
+    private final JToggleButton[] chosen = new JToggleButton[8];
+    private RobotSeries series;
+    private double now;
+    private double cursor = Double.NaN;
 
     PlotPanel() {
         super(new BorderLayout());
         setName("plotPanel");
-        JPanel buttons = new JPanel(new GridLayout(2, 8, 1, 1));
-        for (int i = 0; i < SERIES; i++) {
-            JToggleButton b = new JToggleButton((i < 8 ? "P" : "L") + (i % 8), i == 2 || i == 3);
+        quantity.setName("plot.quantity");
+        span.setName("plot.span");
+        quantity.setFocusable(false);
+        span.setFocusable(false);
+        quantity.addActionListener(e -> relabel());
+        span.addActionListener(e -> refresh());
+        JPanel top = new JPanel(new BorderLayout());
+        JPanel row = new JPanel(new FlowLayout(FlowLayout.LEFT, 2, 0));
+        row.add(quantity);
+        row.add(span);
+        JButton csv = new JButton("CSV…");
+        csv.setName("plot.csv");
+        csv.setToolTipText("save the plotted samples as CSV");
+        csv.addActionListener(e -> export(true));
+        JButton png = new JButton("PNG…");
+        png.setName("plot.png");
+        png.setToolTipText("save the plot as a PNG picture");
+        png.addActionListener(e -> export(false));
+        for (JButton b : new JButton[] {csv, png}) {
+            b.setMargin(new Insets(0, 2, 0, 2));
+            b.setFocusable(false);
+            row.add(b);
+        }
+        top.add(row, BorderLayout.NORTH);
+        JPanel buttons = new JPanel(new GridLayout(1, 8, 1, 1));
+        for (int i = 0; i < 8; i++) {
+            JToggleButton b = new JToggleButton(Integer.toString(i), i == 2 || i == 3);
             b.setMargin(new Insets(0, 1, 0, 1));
             b.setFont(b.getFont().deriveFont(10f));
-            b.setForeground(COLOURS[i % 8]);
-            b.setToolTipText(i < 8 ? "plot proximity sensor " + i : "plot light sensor " + (i - 8));
-            b.addActionListener(e -> repaint());
+            b.setForeground(PlotCanvas.COLOURS[i]);
+            b.setFocusable(false);
+            b.addActionListener(e -> refresh());
             chosen[i] = b;
             buttons.add(b);
         }
-        canvas = new JComponent() {
-            @Override
-            protected void paintComponent(Graphics g) {
-                paintPlot((Graphics2D) g, getWidth(), getHeight());
-            }
-        };
-        canvas.setPreferredSize(new Dimension(320, 140));
-        add(buttons, BorderLayout.NORTH);
+        top.add(buttons, BorderLayout.SOUTH);
+        canvas.setPreferredSize(new Dimension(320, 170));
+        add(top, BorderLayout.NORTH);
         add(canvas, BorderLayout.CENTER);
+        relabel();
+    }
+
+    private void relabel() {
+        Quantity q = (Quantity) quantity.getSelectedItem();
+        for (int i = 0; i < 8; i++) {
+            chosen[i].setVisible(i < q.count);
+            chosen[i].setText(q.count == 2 ? (i == 0 ? "left" : "right") : Integer.toString(i));
+            if (q.count == 2) {
+                chosen[i].setSelected(true);
+            }
+        }
+        refresh();
+    }
+
+    /** @param index which span: 0 last 10 s, 1 last 60 s, 2 last 10 min, 3 whole run */
+    void chooseSpan(int index) {
+        span.setSelectedIndex(index);
     }
 
     /**
-     * @param s the latest snapshot; added if simulated time moved on
-     * @param robot the robot whose sensors are plotted
+     * @param s the selected robot's samples, or null
+     * @param nowSeconds the time shown (the span ends here)
+     * @param cursorSeconds a time to mark (the replay's), or NaN
      */
-    void sample(Snapshot s, int robot) {
-        if (s == null || s.robots().isEmpty()) {
-            return;
-        }
-        double t = s.timeSeconds();
-        if (t < lastTime) {
-            clear();
-        }
-        if (t == lastTime) {
-            return;
-        }
-        lastTime = t;
-        RobotView r = s.robots().get(robot >= 0 && robot < s.robots().size() ? robot : 0);
-        int at = (start + count) % CAPACITY;
-        times[at] = t;
-        for (int i = 0; i < 8; i++) {
-            values[i][at] = r.proximity(i);
-            values[8 + i][at] = r.light(i);
-        }
-        if (count < CAPACITY) {
-            count++;
-        } else {
-            start = (start + 1) % CAPACITY;
-        }
-        canvas.repaint();
+    void show(RobotSeries s, double nowSeconds, double cursorSeconds) {
+        series = s;
+        now = nowSeconds;
+        cursor = cursorSeconds;
+        refresh();
     }
 
-    void clear() {
-        start = 0;
-        count = 0;
-        lastTime = -1;
-        canvas.repaint();
-    }
-
-    private void paintPlot(Graphics2D g, int w, int h) {
-        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-        g.setColor(Color.WHITE);
-        g.fill(new Rectangle2D.Double(0, 0, w, h));
-        g.setColor(new Color(0xDDDDDD));
-        for (int v = 0; v <= 1024; v += 256) {
-            double y = h - 4 - (h - 8) * v / 1024.0;
-            g.draw(new Rectangle2D.Double(0, y, w, 0));
-        }
-        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 9));
-        g.setColor(Color.GRAY);
-        g.drawString("1023", 2, 12);
-        g.drawString("last " + (int) WINDOW_S + " s", w - 50, h - 6);
-        if (count < 2) {
+    private void refresh() {
+        RobotSeries s = series;
+        if (s == null || s.size() == 0) {
+            canvas.show(null);
             return;
         }
-        double tEnd = times[(start + count - 1) % CAPACITY];
-        double tStart = tEnd - WINDOW_S;
-        g.setStroke(new BasicStroke(1.3f));
-        for (int sIdx = 0; sIdx < SERIES; sIdx++) {
-            if (!chosen[sIdx].isSelected()) {
-                continue;
+        double[] range = range(s);
+        int[] channels = channels();
+        canvas.show(new PlotCanvas.Plot(s.extract(range[0], range[1], channels, StrictMath.max(200, canvas.getWidth() * 2)),
+                labels(channels), colours(), range[0], range[1], ((Quantity) quantity.getSelectedItem()).max,
+                ((Quantity) quantity.getSelectedItem()).unit, cursor));
+    }
+
+    private double[] range(RobotSeries s) {
+        double len = SPANS[span.getSelectedIndex()];
+        double first = s.time(0);
+        if (Double.isInfinite(len)) {
+            return new double[] {first, StrictMath.max(Double.isNaN(cursor) ? now : s.lastTime(), first)};
+        }
+        return new double[] {StrictMath.max(first, now - len), now};
+    }
+
+    private int[] channels() {
+        Quantity q = (Quantity) quantity.getSelectedItem();
+        List<Integer> out = new ArrayList<>();
+        for (int i = 0; i < q.count; i++) {
+            if (chosen[i].isSelected()) {
+                out.add(q.first + i);
             }
-            g.setColor(COLOURS[sIdx % 8]);
-            if (sIdx >= 8) {
-                g.setStroke(new BasicStroke(1.3f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_ROUND, 10f, new float[] {4f, 2f}, 0f));
-            } else {
-                g.setStroke(new BasicStroke(1.3f));
+        }
+        return out.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    private int[] colours() {
+        Quantity q = (Quantity) quantity.getSelectedItem();
+        List<Integer> out = new ArrayList<>();
+        for (int i = 0; i < q.count; i++) {
+            if (chosen[i].isSelected()) {
+                out.add(i);
             }
-            Path2D.Double p = new Path2D.Double();
-            boolean first = true;
-            for (int k = 0; k < count; k++) {
-                int at = (start + k) % CAPACITY;
-                if (times[at] < tStart) {
-                    continue;
+        }
+        return out.stream().mapToInt(Integer::intValue).toArray();
+    }
+
+    private static String[] labels(int[] channels) {
+        String[] out = new String[channels.length];
+        for (int i = 0; i < channels.length; i++) {
+            out[i] = RobotSeries.channelName(channels[i]);
+        }
+        return out;
+    }
+
+    /** @return the samples shown, as CSV: {@code t_s} and one column per plotted channel, at full resolution */
+    String csv() {
+        RobotSeries s = series;
+        int[] channels = channels();
+        StringBuilder b = new StringBuilder("t_s");
+        for (String l : labels(channels)) {
+            b.append(',').append(l);
+        }
+        b.append('\n');
+        if (s != null && s.size() > 0) {
+            double[] range = range(s);
+            double[][] d = s.extract(range[0], range[1], channels, 0);
+            for (int k = 0; k < d[0].length; k++) {
+                b.append(String.format(Locale.ROOT, "%.3f", d[0][k]));
+                for (int c = 1; c < d.length; c++) {
+                    b.append(',').append((long) d[c][k]);
                 }
-                double x = (times[at] - tStart) / WINDOW_S * w;
-                double y = h - 4 - (h - 8) * StrictMath.min(1023, StrictMath.max(0, values[sIdx][at])) / 1024.0;
-                if (first) {
-                    p.moveTo(x, y);
-                    first = false;
-                } else {
-                    p.lineTo(x, y);
-                }
+                b.append('\n');
             }
-            g.draw(p);
+        }
+        return b.toString();
+    }
+
+    /** @return the plot as a picture at its size on screen */
+    BufferedImage image() {
+        BufferedImage img = new BufferedImage(StrictMath.max(1, canvas.getWidth()), StrictMath.max(1, canvas.getHeight()),
+                BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        try {
+            canvas.paintPlot(g, img.getWidth(), img.getHeight());
+        } finally {
+            g.dispose();
+        }
+        return img;
+    }
+
+    /** @param file where to write @param asCsv CSV of the data, else PNG of the view */
+    void exportTo(Path file, boolean asCsv) {
+        try {
+            if (asCsv) {
+                AtomicFiles.write(file, csv());
+            } else if (!ImageIO.write(image(), "png", file.toFile())) {
+                throw new IOException("no PNG writer in this Java runtime");
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot write " + file + ": " + e.getMessage(), e);
+        }
+    }
+
+    private void export(boolean asCsv) {
+        JFileChooser c = new JFileChooser();
+        c.setSelectedFile(new java.io.File(asCsv ? "plot.csv" : "plot.png"));
+        if (c.showSaveDialog(this) == JFileChooser.APPROVE_OPTION) {
+            exportTo(c.getSelectedFile().toPath(), asCsv);
         }
     }
 }

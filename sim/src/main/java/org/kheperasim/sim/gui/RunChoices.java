@@ -1,0 +1,26 @@
+package org.kheperasim.sim.gui;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.kheperasim.sim.engine.Settings;
+
+/**
+ * What the next run uses, as the window's menus set it: the arena's file, settings, seed,
+ * controller (and where it comes from), containment, speed. Event thread only.
+ */
+final class RunChoices {
+    /** The arena's file, or null for a bundled or new arena. */
+    Path arenaFile;
+    Settings settings = Settings.defaults();
+    /** The next run's seed, or null for a new random one each run. */
+    Long seed;
+    String controllerName;
+    List<Path> classpath = new ArrayList<>();
+    /** The .java the controller was compiled from, or null. */
+    Path javaSource;
+    /** Run the controller uncontained (Controller > Trust this controller); off by default. */
+    boolean trusted;
+    /** Simulated seconds per real second. */
+    double speed = 1;
+}

@@ -1,0 +1,103 @@
+package org.kheperasim.sim.replay;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.arena.ArenaFiles;
+import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.edit.ArenaEdits;
+import org.kheperasim.sim.files.TextFiles;
+import org.kheperasim.sim.run.EditLog;
+import org.kheperasim.sim.trace.TraceFormatException;
+
+/**
+ * Opens what can be replayed, recognised by its content: a run recording folder (the window's
+ * "Save run recording": {@code start.arena}, {@code run.edits}, {@code run.trace}), a trace file
+ * ({@code run --trace}; its arena is the {@code start.arena} beside it or the bundled arena it
+ * names), or a robot-link recording of a real robot (drawn in an empty 4 × 4 ft arena).
+ */
+public final class ReplayFiles {
+    /** Largest file read, bytes (a one-hour trace at 50 ms is about 11 MB a robot). */
+    public static final long MAX_FILE_BYTES = 1L << 30;
+
+    private ReplayFiles() {
+    }
+
+    /**
+     * @param path a recording folder, a trace or a robot-link recording
+     * @return the run, ready to watch
+     * @throws org.kheperasim.sim.files.InputFileException naming the file and line at fault
+     * @throws java.io.UncheckedIOException when a file cannot be read
+     */
+    public static Replay open(Path path) {
+        List<String> notes = new ArrayList<>();
+        if (Files.isDirectory(path)) {
+            return recording(path, notes);
+        }
+        String text = read(path);
+        String source = path.toString();
+        if (text.startsWith(LinkRecordingReader.MAGIC)) {
+            Arena arena = ArenaEdits.blank("robot-link", 1219.2, 1219.2);
+            RobotSeries s = LinkRecordingReader.read(text, source, 609.6, 609.6, 90, notes);
+            notes.add(source + ": a real robot's run; its path is worked out from the encoders from the middle of an"
+                    + " empty arena, so it drifts as odometry does");
+            return new Replay(Replay.Kind.LINK_RECORDING, source, arena, List.of(), List.of(s), null, notes);
+        }
+        Arena arena = traceArena(path, text, notes);
+        TraceReplayReader.Result r = TraceReplayReader.read(text, source, arena, notes);
+        return new Replay(Replay.Kind.TRACE, source, arena, List.of(), r.robots(), r.caps(), notes);
+    }
+
+    private static Replay recording(Path dir, List<String> notes) {
+        Path start = dir.resolve("start.arena");
+        Path trace = dir.resolve("run.trace");
+        if (!Files.isRegularFile(start) || !Files.isRegularFile(trace)) {
+            throw new TraceFormatException(dir.toString(), 0, "a run recording folder holds start.arena and run.trace;"
+                    + (Files.isRegularFile(start) ? " run.trace is missing (recordings saved before this version have"
+                    + " none: replay them with 'run' as replay.txt says, adding --trace run.trace)" : " start.arena is missing"));
+        }
+        Arena arena = ArenaFormat.load(start);
+        Path editsFile = dir.resolve("run.edits");
+        List<EditLog.Edit> edits = Files.isRegularFile(editsFile) ? EditLog.load(editsFile).edits() : List.of();
+        TraceReplayReader.Result r = TraceReplayReader.read(read(trace), trace.toString(), arena, notes);
+        return new Replay(Replay.Kind.RECORDING, dir.toString(), arena, edits, r.robots(), r.caps(), notes);
+    }
+
+    /** The arena of a bare trace: start.arena beside it, else the bundled arena its header names. */
+    private static Arena traceArena(Path trace, String text, List<String> notes) {
+        Path parent = trace.toAbsolutePath().getParent();
+        Path beside = parent == null ? null : parent.resolve("start.arena");
+        if (beside != null && Files.isRegularFile(beside)) {
+            return ArenaFiles.load(beside);
+        }
+        String name = null;
+        String sha = null;
+        for (String line : text.lines().limit(40).toList()) {
+            if (line.startsWith("# arena ")) {
+                String[] f = line.substring(8).split(" ");
+                name = f[0];
+                sha = f.length > 1 && f[1].startsWith("sha256=") ? f[1].substring(7) : null;
+            }
+        }
+        if (name != null && ArenaFormat.bundledNames().contains(name)) {
+            Arena a = ArenaFormat.loadBundled(name);
+            if (sha != null && !sha.equals(ArenaFormat.sha256(a))) {
+                notes.add(trace + ": the run used an arena named '" + name + "' that differs from the bundled one;"
+                        + " the walls drawn may not be the run's (put its start.arena beside the trace)");
+            } else {
+                notes.add(trace + ": arena '" + name + "' (bundled)");
+            }
+            return a;
+        }
+        notes.add(trace + ": its arena '" + name + "' is not bundled and no start.arena lies beside it; drawing the"
+                + " path in an empty 4 x 4 ft arena");
+        return ArenaEdits.blank("unknown", 1219.2, 1219.2);
+    }
+
+    private static String read(Path file) {
+        return TextFiles.readUtf8(file, MAX_FILE_BYTES, "replay",
+                (line, what) -> new TraceFormatException(file.toString(), line, what));
+    }
+}

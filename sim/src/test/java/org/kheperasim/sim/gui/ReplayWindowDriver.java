@@ -1,0 +1,235 @@
+package org.kheperasim.sim.gui;
+
+import java.awt.Color;
+import java.awt.Point;
+import java.awt.Rectangle;
+import java.awt.Robot;
+import java.awt.event.InputEvent;
+import java.awt.image.BufferedImage;
+import java.io.BufferedReader;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
+import javax.swing.JButton;
+import javax.swing.JComboBox;
+import javax.swing.JSlider;
+import javax.swing.SwingUtilities;
+import javax.swing.plaf.basic.BasicSliderUI;
+import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.cli.Main;
+import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.run.Simulation;
+
+/**
+ * Runs in a child JVM under Xvfb (see {@link ReplayWindowTest}): a one-hour run recording is opened
+ * in the window, the timeline dragged with the mouse to the middle, Play pressed, the speed raised,
+ * Rewind pressed; each time the robot drawn is checked against the trace, on screen and in the
+ * view's snapshot. Prints the figures: trace size per simulated minute, time to open, frame rates.
+ * Arguments: output folder.
+ */
+public final class ReplayWindowDriver {
+    private static final double SECONDS = 3600;
+
+    private ReplayWindowDriver() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        Path out = Path.of(args[0]);
+        Path rec = Files.createDirectories(out.resolve("replay-recording"));
+        long t0 = System.nanoTime();
+        Simulation.builder().arena("lab").controller("Braitenberg").seed(5).seconds(SECONDS)
+                .trace(rec.resolve("run.trace")).sampleMillis(50).run();
+        ArenaFormat.save(ArenaFormat.loadBundled("lab"), rec.resolve("start.arena"));
+        long bytes = Files.size(rec.resolve("run.trace"));
+        System.out.printf(Locale.ROOT, "FIGURE trace of %.0f s at 50 ms: %d bytes, %.1f kB per simulated minute (made in %.1f s)%n",
+                SECONDS, bytes, bytes / 1024.0 / (SECONDS / 60), (System.nanoTime() - t0) / 1e9);
+        int code = Main.commandLine().execute("gui", "--arena", "lab", "--controller", "Braitenberg", "--seed", "1");
+        check(code == 0, "the gui command returned " + code);
+        MainWindow w = GuiLauncher.lastLaunched().get(20, TimeUnit.SECONDS);
+        Robot robot = new Robot();
+        robot.setAutoDelay(15);
+        robot.waitForIdle();
+        long open0 = System.nanoTime();
+        boolean opened = onEdt(() -> w.openRecording(rec));
+        System.out.printf(Locale.ROOT, "FIGURE opening the one-hour recording took %.0f ms (read, parse, show)%n",
+                (System.nanoTime() - open0) / 1e6);
+        check(opened, "the recording did not open:\n" + w.consoleText());
+        Thread.sleep(500);
+        robot.waitForIdle();
+
+        // Scrub: drag the timeline's thumb from the start to the middle with the mouse.
+        JSlider timeline = (JSlider) KeyBindingsDriverSupport.find(w.frame(), "replay.timeline");
+        check(timeline != null && timeline.isShowing(), "the replay bar's timeline is not shown");
+        Point[] ends = onEdt(() -> {
+            BasicSliderUI ui = (BasicSliderUI) timeline.getUI();
+            Point o = timeline.getLocationOnScreen();
+            int y = o.y + timeline.getHeight() / 2;
+            int x0 = -1;
+            int xm = -1;
+            for (int x = 0; x < timeline.getWidth(); x++) {
+                int v = ui.valueForXPosition(x);
+                if (x0 < 0 && v > 0) {
+                    x0 = x - 1;
+                }
+                if (xm < 0 && v >= ReplayBar.TICKS / 2) {
+                    xm = x;
+                }
+            }
+            return new Point[] {new Point(o.x + x0, y), new Point(o.x + xm, y)};
+        });
+        robot.mouseMove(ends[0].x, ends[0].y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.waitForIdle();
+        System.out.println("timeline " + onEdt(() -> timeline.getBounds() + " on screen at " + timeline.getLocationOnScreen()
+                + " ui " + timeline.getUI().getClass().getName()) + "; press at " + ends[0] + ", value " + onEdt(timeline::getValue)
+                + ", adjusting " + onEdt(timeline::getValueIsAdjusting) + "; drag to " + ends[1]);
+        for (int k = 1; k <= 10; k++) {
+            robot.mouseMove(ends[0].x + (ends[1].x - ends[0].x) * k / 10, ends[0].y);
+        }
+        robot.waitForIdle();
+        // As a person scrubs: look where the thumb went and move on until it shows the middle.
+        int x = ends[1].x;
+        int width = onEdt(timeline::getWidth);
+        for (int k = 0; k < 30; k++) {
+            int v = onEdt(timeline::getValue);
+            if (StrictMath.abs(v - ReplayBar.TICKS / 2) < ReplayBar.TICKS / 100) {
+                break;
+            }
+            int dx = (int) StrictMath.round((ReplayBar.TICKS / 2.0 - v) * width / ReplayBar.TICKS);
+            x += dx == 0 ? Integer.signum(ReplayBar.TICKS / 2 - v) : dx;
+            robot.mouseMove(x, ends[0].y);
+            robot.waitForIdle();
+        }
+        System.out.println("thumb released at value " + onEdt(timeline::getValue) + " of " + ReplayBar.TICKS);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        robot.waitForIdle();
+        Thread.sleep(300);
+        double middle = onEdt(() -> w.player().cursor());
+        double bySlider = onEdt(timeline::getValue) * SECONDS / ReplayBar.TICKS;
+        check(StrictMath.abs(middle - bySlider) < SECONDS / ReplayBar.TICKS, "the cursor " + middle
+                + " s should follow the timeline's thumb, " + bySlider + " s");
+        check(StrictMath.abs(middle - SECONDS / 2) < SECONDS * 0.02, "the drag should put the cursor near the middle, "
+                + SECONDS / 2 + " s; it is at " + middle + " s");
+        checkDrawnRobot(robot, w, rec.resolve("run.trace"), out.resolve("replay-1-middle.png"));
+        System.out.printf(Locale.ROOT, "scrubbed to %.2f s%n", middle);
+
+        // Play at x1 for a while: time moves on, the frame rate is measured.
+        click(robot, (JButton) KeyBindingsDriverSupport.find(w.frame(), "replay.play"));
+        Thread.sleep(2500);
+        double fps1 = onEdt(w::fps);
+        double played = onEdt(() -> w.player().cursor());
+        check(onEdt(() -> w.player().playing()), "Play should play");
+        check(played > middle + 1 && played < middle + 60, "after 2.5 s at x1 the cursor should be about 2.5 s on: "
+                + middle + " -> " + played);
+        GuiE2EDriver.shot(robot, w, out.resolve("replay-2-playing.png"));
+        SwingUtilities.invokeAndWait(() -> ((JComboBox<?>) KeyBindingsDriverSupport.find(w.frame(), "replay.speed"))
+                .setSelectedIndex(ReplayPlayer.SPEEDS.length - 1));
+        Thread.sleep(2500);
+        double fpsFast = onEdt(w::fps);
+        double fast = onEdt(() -> w.player().cursor());
+        check(fast > played + 30, "at x64 the cursor should race: " + played + " -> " + fast);
+        System.out.printf(Locale.ROOT, "FIGURE replay frame rate: %.0f fps at x1, %.0f fps at x64%n", fps1, fpsFast);
+
+        // Rewind: back to the start, the robot at its first sample.
+        click(robot, (JButton) KeyBindingsDriverSupport.find(w.frame(), "replay.play"));
+        check(!onEdt(() -> w.player().playing()), "the second press of Play pauses");
+        click(robot, (JButton) KeyBindingsDriverSupport.find(w.frame(), "replay.rewind"));
+        robot.waitForIdle();
+        Thread.sleep(300);
+        double rewound = onEdt(() -> w.player().cursor());
+        check(rewound == 0, "Pause, then Rewind, should leave the cursor at the start: " + rewound);
+        checkDrawnRobot(robot, w, rec.resolve("run.trace"), out.resolve("replay-3-rewound.png"));
+
+        // The plot over the whole run, exported.
+        SwingUtilities.invokeAndWait(() -> w.plot().chooseSpan(3));
+        Thread.sleep(300);
+        SwingUtilities.invokeAndWait(() -> {
+            w.plot().exportTo(out.resolve("replay-plot.csv"), true);
+            w.plot().exportTo(out.resolve("replay-plot.png"), false);
+        });
+        long rows = Files.lines(out.resolve("replay-plot.csv")).count();
+        System.out.println("plot CSV rows (with the header): " + rows);
+        System.out.println("REPLAY OK");
+        SwingUtilities.invokeAndWait(() -> w.action("close").actionPerformed(null));
+        System.exit(0);
+    }
+
+    /** The view draws the robot where the trace has it at the cursor: in the snapshot and on screen. */
+    private static void checkDrawnRobot(Robot robot, MainWindow w, Path trace, Path shot) throws Exception {
+        double cursor = onEdt(() -> w.player().cursor());
+        RobotView shown = onEdt(w::shownRobot);
+        String[] line = lineAt(trace, cursor);
+        double x = Double.parseDouble(line[2]);
+        double y = Double.parseDouble(line[3]);
+        check(StrictMath.abs(shown.x() - x) < 1e-3 && StrictMath.abs(shown.y() - y) < 1e-3, "at " + cursor
+                + " s the trace has the robot at (" + x + ", " + y + "), the view at (" + shown.x() + ", " + shown.y() + ")");
+        GuiE2EDriver.shot(robot, w, shot);
+        Point p = onEdt(() -> {
+            Point o = w.arenaComponent().getLocationOnScreen();
+            return new Point(o.x + (int) StrictMath.round(w.view().sx(x)), o.y + (int) StrictMath.round(w.view().sy(y)));
+        });
+        double r = onEdt(() -> w.view().scale()) * 27.5 * 0.6;
+        BufferedImage img = robot.createScreenCapture(new Rectangle(p.x - (int) r, p.y - (int) r, 2 * (int) r + 1, 2 * (int) r + 1));
+        int green = 0;
+        int all = 0;
+        for (int i = 0; i < img.getWidth(); i++) {
+            for (int j = 0; j < img.getHeight(); j++) {
+                Color c = new Color(img.getRGB(i, j));
+                all++;
+                if (StrictMath.abs(c.getRed() - 0x2E) < 30 && StrictMath.abs(c.getGreen() - 0x8B) < 30 && StrictMath.abs(c.getBlue() - 0x57) < 30) {
+                    green++;
+                }
+            }
+        }
+        check(green > all / 3, "the robot's body colour should fill the square around (" + x + ", " + y + ") on screen; "
+                + green + " of " + all + " pixels are its green (see " + shot + ")");
+        System.out.printf(Locale.ROOT, "at %.2f s the robot is drawn at (%.3f, %.3f) as the trace says; %d%% body pixels%n",
+                cursor, x, y, 100 * green / all);
+    }
+
+    /** @return the trace's robot line of the last sample at or before {@code t} */
+    private static String[] lineAt(Path trace, double t) throws Exception {
+        String[] best = null;
+        try (BufferedReader in = Files.newBufferedReader(trace)) {
+            for (String l = in.readLine(); l != null; l = in.readLine()) {
+                if (l.startsWith("#") || l.contains(" cap ")) {
+                    continue;
+                }
+                String[] f = l.split(" ");
+                if (Double.parseDouble(f[0]) > t + 1e-9) {
+                    break;
+                }
+                best = f;
+            }
+        }
+        return best;
+    }
+
+    private static void click(Robot robot, JButton b) throws Exception {
+        check(b != null, "a replay button is missing");
+        Point p = onEdt(() -> {
+            Point o = b.getLocationOnScreen();
+            return new Point(o.x + b.getWidth() / 2, o.y + b.getHeight() / 2);
+        });
+        robot.mouseMove(p.x, p.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        robot.waitForIdle();
+    }
+
+    private static <T> T onEdt(java.util.function.Supplier<T> s) throws Exception {
+        AtomicReference<T> ref = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> ref.set(s.get()));
+        return ref.get();
+    }
+
+    private static void check(boolean ok, String why) {
+        if (!ok) {
+            System.out.println("FAIL: " + why);
+            System.out.flush();
+            System.exit(1);
+        }
+    }
+}
