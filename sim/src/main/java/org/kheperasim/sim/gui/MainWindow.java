@@ -6,13 +6,11 @@ import java.awt.event.WindowEvent;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Locale;
 import java.util.prefs.Preferences;
 import javax.swing.Action;
 import javax.swing.JComponent;
 import javax.swing.JFrame;
 import javax.swing.SwingUtilities;
-import javax.swing.Timer;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.edit.EditorModel;
@@ -32,11 +30,6 @@ import org.kheperasim.sim.serve.ProtocolServer;
  * {@link StatusBar}) has one job, and the panels draw whatever {@link ViewFeed} shows.
  */
 public final class MainWindow {
-    /** Frame period while paced, ms: a little faster than 60 frames/s, so the screen keeps up. */
-    private static final int FRAME_MS = 12;
-    /** Frame period at full speed, ms: the engine and the controller want both cores then. */
-    private static final int FRAME_MS_MAX_SPEED = 40;
-
     private final JFrame frame = new JFrame();
     private final Preferences prefs = Preferences.userNodeForPackage(MainWindow.class);
     private final RunChoices choices = new RunChoices();
@@ -60,12 +53,8 @@ public final class MainWindow {
     private final WindowMenus menus;
     private final ArenaFileActions files;
     private final RecordingActions recordings;
-    private final Timer timer;
+    private FramePainter painter;
     private WindowKeys windowKeys;
-    private Snapshot lastPainted;
-    private long fpsFrames;
-    private long fpsSince = System.nanoTime();
-    private double fps;
 
     MainWindow(GuiOptions options) {
         Arena arena = ArenaFormat.resolve(options.arena());
@@ -122,8 +111,7 @@ public final class MainWindow {
         console.note("Loaded arena " + arena.name() + "; controller " + choices.controllerName
                 + ". Press Start (F5). Draw with the palette; File > Open recording replays a run; Help > Quick start"
                 + " explains the first hour.");
-        timer = new Timer(FRAME_MS, e -> tick());
-        timer.start();
+        painter = new FramePainter(feed, player, replayBar, plot, sensorPanel, arenaView, console, status, runs, choices);
     }
 
     private void wireModel() {
@@ -132,7 +120,7 @@ public final class MainWindow {
             return now == null ? 0 : now.timeNanos();
         });
         robotSelection.onChange(() -> SwingUtilities.invokeLater(() -> {
-            lastPainted = null;
+            forgetPainted();
             sensorPanel.repaint();
             arenaView.repaint();
         }));
@@ -157,37 +145,17 @@ public final class MainWindow {
                 + " - " + choices.controllerName);
     }
 
+    private void forgetPainted() {
+        if (painter != null) {
+            painter.forget();
+        }
+    }
+
     private void runChanged() {
-        lastPainted = null;
+        forgetPainted();
         sensorPanel.repaint();
         arenaView.repaint();
         actions.refresh();
-    }
-
-    /** Each frame: advance a replay, feed the plot, repaint, update the status bar. */
-    private void tick() {
-        console.drain();
-        player.advance();
-        replayBar.update();
-        Snapshot s = feed.snapshot();
-        if (s != lastPainted) {
-            plot.show(feed.selectedSeries(), s == null ? 0 : s.timeSeconds(), player.open() ? player.cursor() : Double.NaN);
-            sensorPanel.repaint();
-            lastPainted = s;
-        }
-        arenaView.repaint();
-        long now = System.nanoTime();
-        if (now - fpsSince >= 1_000_000_000L) {
-            long frames = arenaView.frames();
-            fps = (frames - fpsFrames) * 1e9 / (now - fpsSince);
-            fpsFrames = frames;
-            fpsSince = now;
-        }
-        PacedRunner r = runs.runner();
-        String rtf = player.open() ? String.format(Locale.ROOT, "%.2fx", player.playing() ? player.speed() : 0.0)
-                : r == null || r.state() != PacedRunner.State.RUNNING ? "-" : String.format(Locale.ROOT, "%.2fx", r.realTimeFactor());
-        timer.setDelay(choices.speed == PacedRunner.MAX_SPEED && !player.open() ? FRAME_MS_MAX_SPEED : FRAME_MS);
-        status.update(feed.state(), s == null ? 0.0 : s.timeSeconds(), rtf, fps, arenaView.mouse());
     }
 
     void setTool(Tool t) {
@@ -208,7 +176,7 @@ public final class MainWindow {
         }
         prefs.putInt("width", frame.getWidth());
         prefs.putInt("height", frame.getHeight());
-        timer.stop();
+        painter.stop();
         if (windowKeys != null) {
             windowKeys.uninstall();
         }
@@ -231,7 +199,7 @@ public final class MainWindow {
 
     /** @return frames per second the arena view painted over the last second */
     public double fps() {
-        return fps;
+        return painter.fps();
     }
 
     Snapshot snapshot() {

@@ -43,6 +43,7 @@ final class RunControls implements SnapshotSource {
     private volatile PacedRunner runner;
     private volatile Path runTrace;
     private Settings runSettings = Settings.defaults();
+    private boolean stopNotePending;
 
     /**
      * @param changed called on the event thread when the run's state changed or the run was discarded
@@ -138,9 +139,10 @@ final class RunControls implements SnapshotSource {
     void stop() {
         PacedRunner r = runner;
         if (r != null) {
+            // The runner stops at the end of its current chunk (up to seconds of simulated time at full
+            // speed): the note says where it stopped once it has, so it agrees with the clock.
+            stopNotePending = true;
             r.stop();
-            console.note("Stopped at t = " + String.format(Locale.ROOT, "%.3f s", r.latest().timeSeconds())
-                    + "; Reset to go back to the start, or Start for a new run.");
         }
     }
 
@@ -151,6 +153,7 @@ final class RunControls implements SnapshotSource {
 
     /** Forget the run (the robot is drawn at its start again). */
     void discard() {
+        stopNotePending = false;
         PacedRunner r = runner;
         runner = null;
         if (r != null) {
@@ -209,6 +212,11 @@ final class RunControls implements SnapshotSource {
         PacedRunner r = runner;
         if (r != null && r.state() == PacedRunner.State.FINISHED) {
             console.note("The controller ended at t = " + String.format(Locale.ROOT, "%.3f s", r.latest().timeSeconds()) + ".");
+        }
+        if (r != null && stopNotePending && r.state() == PacedRunner.State.STOPPED) {
+            stopNotePending = false;
+            console.note("Stopped at t = " + String.format(Locale.ROOT, "%.3f s", r.latest().timeSeconds())
+                    + "; Reset to go back to the start, or Start for a new run.");
         }
         if (r != null && r.failure() != null) {
             console.error("the run failed: " + r.failure());

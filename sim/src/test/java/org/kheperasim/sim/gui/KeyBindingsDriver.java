@@ -61,6 +61,28 @@ public final class KeyBindingsDriver {
         }
         System.out.println("KEYS OK");
 
+        // Stopped at full speed: the console's note and the clock tell the same time.
+        SwingUtilities.invokeAndWait(() -> {
+            w.chooseSpeed(org.kheperasim.sim.run.PacedRunner.MAX_SPEED);
+            w.action("start").actionPerformed(null);
+        });
+        Thread.sleep(1500);
+        SwingUtilities.invokeAndWait(() -> w.action("stop").actionPerformed(null));
+        String note = null;
+        long noteUntil = System.nanoTime() + 20_000_000_000L;
+        while (note == null && System.nanoTime() < noteUntil) {
+            Thread.sleep(50);
+            String text = onEdt(w::consoleText);
+            int at = text.lastIndexOf("Stopped at t = ");
+            note = at < 0 ? null : text.substring(at + 15, text.indexOf(" s", at + 15));
+        }
+        String clock = String.format(java.util.Locale.ROOT, "%.3f", w.runner().latest().timeSeconds());
+        if (note == null || !note.equals(clock)) {
+            fail("stopped at full speed, the console says t = " + note + " s and the run's clock " + clock + " s");
+        }
+        System.out.println("stop note and clock agree at full speed: " + note + " s");
+        SwingUtilities.invokeAndWait(() -> w.chooseSpeed(1));
+
         // Unsaved edits: Ctrl+Q asks first; Cancel keeps the window, Discard closes it.
         SwingUtilities.invokeAndWait(() -> w.model().apply(org.kheperasim.sim.edit.ArenaEdits.addCap(w.model().arena(), 900, 900)));
         for (String answer : new String[] {"Cancel", "Discard"}) {
