@@ -83,7 +83,10 @@ public final class SensorFilter {
         return median(sensor);
     }
 
-    /** @param readings one reading per sensor, in index order @return the filtered values */
+    /**
+     * @param readings one reading per sensor, in index order
+     * @return the filtered values
+     */
     public int[] add(int[] readings) {
         int[] out = new int[readings.length];
         for (int i = 0; i < readings.length; i++) {
@@ -120,17 +123,26 @@ public final class SensorFilter {
         return add(raw);
     }
 
-    /** @param sensor which sensor @return its filtered value (0 before its first reading) */
+    /**
+     * @param sensor which sensor
+     * @return its filtered value (0 before its first reading)
+     */
     public int value(int sensor) {
         return count[sensor] == 0 ? 0 : median(sensor);
     }
 
-    /** @param sensor which sensor @return its filtered value */
+    /**
+     * @param sensor which sensor
+     * @return its filtered value
+     */
     public int value(IrSensor sensor) {
         return value(sensor.index());
     }
 
-    /** @param sensor which sensor @return true when its newest reading was a spike */
+    /**
+     * @param sensor which sensor
+     * @return true when its newest reading was a spike
+     */
     public boolean lastWasSpike(int sensor) {
         return lastSpike[sensor];
     }
