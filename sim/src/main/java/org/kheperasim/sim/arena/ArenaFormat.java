@@ -38,7 +38,7 @@ public final class ArenaFormat {
     public static final String EXTENSION = ".arena";
 
     /** The arenas in {@code arenas/} at the top of the repository, which travel inside the jar. */
-    private static final List<String> BUNDLED = List.of("lab", "maze", "two-rooms");
+    private static final List<String> BUNDLED = List.of("lab", "maze-easy", "maze", "maze-hard", "two-rooms");
 
     private ArenaFormat() {
     }

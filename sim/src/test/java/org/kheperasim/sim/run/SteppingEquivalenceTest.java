@@ -30,8 +30,8 @@ class SteppingEquivalenceTest {
 
     static Stream<Arguments> runs() {
         List<Arguments> out = new ArrayList<>();
-        for (String arena : List.of("lab", "maze", "two-rooms")) {
-            for (String controller : List.of("WallFollower", "Braitenberg", "Template", "CapGatherer")) {
+        for (String arena : org.kheperasim.sim.arena.ArenaFormat.bundledNames()) {
+            for (String controller : ControllerCatalog.bundled()) {
                 out.add(Arguments.of(arena, controller));
             }
         }
