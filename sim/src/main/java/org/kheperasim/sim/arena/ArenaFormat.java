@@ -38,7 +38,7 @@ public final class ArenaFormat {
     public static final String EXTENSION = ".arena";
 
     /** The arenas in {@code arenas/} at the top of the repository, which travel inside the jar. */
-    private static final List<String> BUNDLED = List.of("lab", "maze-easy", "maze", "maze-hard", "two-rooms");
+    private static final List<String> BUNDLED = List.of("lab", "maze-easy", "maze", "maze-hard", "beacon-maze", "two-rooms");
 
     private ArenaFormat() {
     }
@@ -162,6 +162,12 @@ public final class ArenaFormat {
         for (Region r : arena.regions()) {
             sb.append("region ").append(r.name());
             line(sb, "", r.x1(), r.y1(), r.x2(), r.y2());
+        }
+        for (Task t : arena.assignment().tasks()) {
+            sb.append(t.line()).append('\n');
+        }
+        if (arena.assignment().timeLimitSeconds() > 0) {
+            sb.append("time-limit ").append(Numbers.format(arena.assignment().timeLimitSeconds())).append('\n');
         }
         return sb.toString();
     }

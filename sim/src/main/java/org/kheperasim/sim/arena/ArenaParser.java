@@ -19,7 +19,7 @@ final class ArenaParser {
 
     private static final String FORMAT_NAME = "khepera-arena";
     private static final String VERSION = "1";
-    private static final String KEYWORDS = "name, size, robot, wall, light, cap, region";
+    private static final String KEYWORDS = "name, size, robot, wall, light, cap, region, task, time-limit";
     private static final String LIGHT_KEYWORDS = "range, intensity, radius, direction, spread";
     /** Possessive quantifiers: a long run of digits cannot make the match backtrack. */
     static final Pattern NUMBER = Pattern.compile("[+-]?+(\\d++(\\.\\d*+)?+|\\.\\d++)([eE][+-]?+\\d++)?+");
@@ -47,6 +47,7 @@ final class ArenaParser {
     private final List<Region> regions = new ArrayList<>();
     private final List<Integer> regionLines = new ArrayList<>();
     private final Map<String, Integer> regionNames = new HashMap<>();
+    private final AssignmentLines assignment = new AssignmentLines();
 
     ArenaParser(String text, String source) {
         this.source = source;
@@ -99,8 +100,10 @@ final class ArenaParser {
         }
         checkInside();
         checkWallArea();
-        Arena arena = build(headerLine, () -> new Arena(name != null ? name : nameFromSource(),
+        Arena plain = build(headerLine, () -> new Arena(name != null ? name : nameFromSource(),
                 width, height, robots, walls, lights, caps, regions));
+        int badTask = assignment.lineOfBadTask(plain::withAssignment);
+        Arena arena = build(badTask != 0 ? badTask : headerLine, () -> plain.withAssignment(assignment.assignment()));
         RobotClearance.check(arena, robotLines, source);
         return arena;
     }
@@ -141,6 +144,20 @@ final class ArenaParser {
             case "light" -> light(t);
             case "cap" -> cap(t);
             case "region" -> region(t);
+            case "task" -> build(lineNo, () -> {
+                assignment.task(t, lineNo);
+                return null;
+            });
+            case "time-limit" -> {
+                if (t.length != 2) {
+                    throw error(lineNo, "time-limit needs one number, the assignment's time in simulated seconds, e.g. 'time-limit 600'");
+                }
+                double seconds = number(t[1], "time-limit");
+                build(lineNo, () -> {
+                    assignment.timeLimit(t, lineNo, seconds);
+                    return null;
+                });
+            }
             default -> throw error(lineNo, "unknown keyword '" + shorten(t[0]) + "'; valid keywords are " + KEYWORDS);
         }
     }

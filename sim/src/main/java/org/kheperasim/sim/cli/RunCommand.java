@@ -83,12 +83,14 @@ final class RunCommand implements Callable<Integer> {
     public Integer call() {
         Settings settings = settingsOptions.settings();
         PrintStream info = json ? System.err : System.out;
+        org.kheperasim.sim.arena.Arena theArena = org.kheperasim.sim.arena.ArenaFormat.resolve(arena);
+        double limit = theArena.assignment().timeLimitSeconds();
         Simulation.Builder run = Simulation.builder()
-                .arena(arena)
+                .arena(theArena)
                 .controller(controllerOptions.controller())
                 .classpath(controllerOptions.classpath())
                 .trusted(trusted)
-                .seconds(controllerOptions.seconds(DEFAULT_SECONDS))
+                .seconds(controllerOptions.seconds(limit > 0 ? limit : DEFAULT_SECONDS))
                 .settings(settings)
                 .sampleMillis(sampleMillis)
                 .hostOptions(ControllerHost.Options.defaults().withHangTimeout((long) (hangTimeout * 1e9)))
@@ -168,6 +170,9 @@ final class RunCommand implements Callable<Integer> {
         if (result.caps() > 0) {
             s.append("; caps per region ").append(result.capsInRegions());
         }
+        if (!result.scores().isEmpty()) {
+            s.append("; ").append(org.kheperasim.sim.run.TaskScore.describe(result.scores()));
+        }
         if (result.traceSha256() != null) {
             s.append("; trace sha256 ").append(result.traceSha256());
         }
@@ -192,6 +197,16 @@ final class RunCommand implements Callable<Integer> {
                 .put("regionsEntered", first.regionsEntered())
                 .put("caps", result.caps())
                 .put("capsInRegions", result.capsInRegions());
+        if (!result.scores().isEmpty()) {
+            j.beginObject("score").put("percent", result.score());
+            j.beginArray("tasks");
+            for (org.kheperasim.sim.run.TaskScore t : result.scores()) {
+                j.element().put("task", t.task()).put("percent", t.percent()).put("fraction", t.fraction())
+                        .put("detail", t.detail()).end();
+            }
+            j.endArray();
+            j.end();
+        }
         j.beginArray("robots");
         for (RunResult.RobotResult r : result.robots()) {
             j.element().put("name", r.name())

@@ -85,5 +85,6 @@ final class FramePainter {
                 : r == null || r.state() != PacedRunner.State.RUNNING ? "-" : String.format(Locale.ROOT, "%.2fx", r.realTimeFactor());
         timer.setDelay(choices.speed == PacedRunner.MAX_SPEED && !player.open() ? FRAME_MS_MAX_SPEED : FRAME_MS);
         status.update(feed.state(), s == null ? 0.0 : s.timeSeconds(), rtf, fps, arenaView.mouse());
+        status.score(feed.source() == runs ? runs.score() : null);
     }
 }

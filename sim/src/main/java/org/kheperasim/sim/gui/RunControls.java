@@ -41,6 +41,7 @@ final class RunControls implements SnapshotSource {
     private final TrailRecorder trail = new TrailRecorder();
     private volatile SeriesRecorder series = new SeriesRecorder();
     private volatile PacedRunner runner;
+    private volatile org.kheperasim.sim.run.TaskProgress progress;
     private volatile Path runTrace;
     private Settings runSettings = Settings.defaults();
     private boolean stopNotePending;
@@ -78,6 +79,16 @@ final class RunControls implements SnapshotSource {
     @Override
     public RobotSeries series(int robot) {
         return series.series(robot);
+    }
+
+    /** @return the assignment's score so far in words, or null without a run or without tasks */
+    String score() {
+        org.kheperasim.sim.run.TaskProgress p = progress;
+        if (runner == null || p == null) {
+            return null;
+        }
+        List<org.kheperasim.sim.run.TaskScore> scores = p.scores();
+        return scores.isEmpty() ? null : org.kheperasim.sim.run.TaskScore.describe(scores);
     }
 
     /** @return the runner, or null */
@@ -198,6 +209,9 @@ final class RunControls implements SnapshotSource {
         series = new SeriesRecorder();
         session.addListener(trail, TRAIL_PERIOD_NANOS);
         session.addListener(series, SERIES_PERIOD_NANOS);
+        org.kheperasim.sim.run.TaskProgress tasks = new org.kheperasim.sim.run.TaskProgress(model.arena());
+        session.addListener(tasks, TRAIL_PERIOD_NANOS);
+        progress = tasks;
         String own = robotControllers.describe(model.arena().robots().size());
         console.note("Run of " + name + (own.isEmpty() ? "" : " (" + own + ")") + " in " + model.arena().name()
                 + ", seed " + runSeed + (choices.settings.overrides().isEmpty() ? "" : ", settings " + choices.settings.describe()));

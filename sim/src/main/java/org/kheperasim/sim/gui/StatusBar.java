@@ -19,6 +19,7 @@ final class StatusBar {
     private final JLabel message = new JLabel(" ");
     private final JLabel position = new JLabel(" ");
     private final JLabel clock = new JLabel(" ");
+    private final JLabel score = new JLabel("");
     private final JPanel bar = new JPanel(new BorderLayout());
     private long messageUntil;
     private Runnable onExpire = () -> { };
@@ -27,8 +28,10 @@ final class StatusBar {
         bar.setBorder(BorderFactory.createEmptyBorder(2, 6, 2, 6));
         message.setName("message");
         clock.setName("clock");
+        score.setName("score");
         bar.add(message, BorderLayout.CENTER);
         JPanel east = new JPanel(new FlowLayout(FlowLayout.RIGHT, 0, 0));
+        east.add(score);
         east.add(position);
         east.add(clock);
         bar.add(east, BorderLayout.EAST);
@@ -66,6 +69,15 @@ final class StatusBar {
             message.setText(" ");
             messageUntil = 0;
             onExpire.run();
+        }
+    }
+
+    /** @param text the assignment's score in words, or null to show none */
+    void score(String text) {
+        String t = text == null ? "" : "  " + text.replaceFirst(" \\(.*", "") + "  ";
+        if (!t.equals(score.getText())) {
+            score.setText(t);
+            score.setToolTipText(text);
         }
     }
 

@@ -224,11 +224,11 @@ class ArenaFormatTest {
         assertEquals(mine, ArenaFormat.resolve(file.toString()));
 
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> ArenaFormat.resolve("nowhere"));
-        assertTrue(e.getMessage().contains("'nowhere'") && e.getMessage().contains("lab, maze")
+        assertTrue(e.getMessage().contains("'nowhere'") && e.getMessage().contains("lab, maze-easy, maze")
                 && e.getMessage().contains("path"), e.getMessage());
         assertThrows(IllegalArgumentException.class, () -> ArenaFormat.loadBundled("nowhere"));
         assertThrows(IllegalArgumentException.class, () -> ArenaFormat.loadBundled("../pom"));
-        assertEquals(List.of("lab", "maze", "two-rooms"), ArenaFormat.bundledNames());
+        assertEquals(List.of("lab", "maze-easy", "maze", "maze-hard", "beacon-maze", "two-rooms"), ArenaFormat.bundledNames());
     }
 
     @Test

@@ -1,0 +1,33 @@
+package org.kheperasim.sim.run;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/**
+ * The teaching controllers reach their assignment's full score, as the arena's tasks count it, on 20
+ * seeds each within the arena's time limit: MazeExplorer visits every cell of the three mazes (the
+ * paper's first assignment), LightFollower follows the beacons to the goal (the third).
+ */
+class AssignmentScoresTest {
+    @ParameterizedTest(name = "{1} in {0}")
+    @CsvSource({"maze-easy, MazeExplorer", "maze, MazeExplorer", "maze-hard, MazeExplorer", "beacon-maze, LightFollower"})
+    void fullScoreOnTwentySeeds(String arena, String controller) {
+        List<String> misses = new ArrayList<>();
+        for (long seed = 1; seed <= 20; seed++) {
+            // No --seconds: the run lasts the arena's time limit, as 'run' does.
+            double limit = org.kheperasim.sim.arena.ArenaFormat.loadBundled(arena).assignment().timeLimitSeconds();
+            RunResult r = Simulation.builder().arena(arena).controller(controller).seed(seed).seconds(limit).run();
+            if (r.score() != 100) {
+                misses.add("seed " + seed + ": " + TaskScore.describe(r.scores()));
+            }
+            assertTrue(!r.first().status().failed(), "seed " + seed + ": " + r.first().failure());
+        }
+        assertTrue(misses.isEmpty(), controller + " in " + arena + ": " + misses);
+        System.out.printf(Locale.ROOT, "%s in %s: score 100 %% on seeds 1..20%n", controller, arena);
+    }
+}
