@@ -22,9 +22,10 @@ import java.util.Set;
  * @param lights  fixed lamps
  * @param caps    movable bottle caps, in the order that gives them their grid ids
  * @param regions named rectangles, names unique
+ * @param assignment what a run is scored on (tasks, time limit); {@link Assignment#NONE} for none
  */
 public record Arena(String name, double width, double height, List<Pose> robots, List<Wall> walls,
-                    List<Light> lights, List<Cap> caps, List<Region> regions) {
+                    List<Light> lights, List<Cap> caps, List<Region> regions, Assignment assignment) {
 
     /** Body radius of the robot (a Khepera I is a 55 mm disc), mm. */
     public static final double ROBOT_RADIUS_MM = 27.5;
@@ -48,6 +49,7 @@ public record Arena(String name, double width, double height, List<Pose> robots,
         lights = List.copyOf(lights);
         caps = List.copyOf(caps);
         regions = List.copyOf(regions);
+        java.util.Objects.requireNonNull(assignment, "assignment");
         if (robots.isEmpty()) {
             throw new IllegalArgumentException("arena '" + name + "' has no robot; add a start pose");
         }
@@ -58,6 +60,28 @@ public record Arena(String name, double width, double height, List<Pose> robots,
                         + "' is used twice; give each region its own name");
             }
         }
+    }
+
+    /**
+     * An arena without an assignment.
+     *
+     * @param name    identifier of letters, digits, {@code _} and {@code -}
+     * @param width   extent along x, mm
+     * @param height  extent along y, mm
+     * @param robots  start poses
+     * @param walls   fixed walls
+     * @param lights  fixed lamps
+     * @param caps    movable bottle caps
+     * @param regions named rectangles
+     */
+    public Arena(String name, double width, double height, List<Pose> robots, List<Wall> walls,
+                 List<Light> lights, List<Cap> caps, List<Region> regions) {
+        this(name, width, height, robots, walls, lights, caps, regions, Assignment.NONE);
+    }
+
+    /** @param a the assignment @return this arena with that assignment */
+    public Arena withAssignment(Assignment a) {
+        return new Arena(name, width, height, robots, walls, lights, caps, regions, a);
     }
 
     /**

@@ -19,7 +19,7 @@ final class ArenaParser {
 
     private static final String FORMAT_NAME = "khepera-arena";
     private static final String VERSION = "1";
-    private static final String KEYWORDS = "name, size, robot, wall, light, cap, region";
+    private static final String KEYWORDS = "name, size, robot, wall, light, cap, region, task, time-limit";
     private static final String LIGHT_KEYWORDS = "range, intensity, radius, direction, spread";
     /** Possessive quantifiers: a long run of digits cannot make the match backtrack. */
     static final Pattern NUMBER = Pattern.compile("[+-]?+(\\d++(\\.\\d*+)?+|\\.\\d++)([eE][+-]?+\\d++)?+");
@@ -47,6 +47,10 @@ final class ArenaParser {
     private final List<Region> regions = new ArrayList<>();
     private final List<Integer> regionLines = new ArrayList<>();
     private final Map<String, Integer> regionNames = new HashMap<>();
+    private final List<Task> tasks = new ArrayList<>();
+    private final List<Integer> taskLines = new ArrayList<>();
+    private double timeLimit;
+    private int timeLimitLine;
 
     ArenaParser(String text, String source) {
         this.source = source;
@@ -99,8 +103,10 @@ final class ArenaParser {
         }
         checkInside();
         checkWallArea();
+        checkTasks();
+        Assignment assignment = new Assignment(tasks, timeLimit);
         Arena arena = build(headerLine, () -> new Arena(name != null ? name : nameFromSource(),
-                width, height, robots, walls, lights, caps, regions));
+                width, height, robots, walls, lights, caps, regions, assignment));
         RobotClearance.check(arena, robotLines, source);
         return arena;
     }
@@ -141,6 +147,12 @@ final class ArenaParser {
             case "light" -> light(t);
             case "cap" -> cap(t);
             case "region" -> region(t);
+            case "task" -> {
+                count(tasks.size(), Assignment.MAX_TASKS, "task lines");
+                tasks.add(build(lineNo, () -> TaskLines.parse(t, this::number)));
+                taskLines.add(lineNo);
+            }
+            case "time-limit" -> timeLimit(t);
             default -> throw error(lineNo, "unknown keyword '" + shorten(t[0]) + "'; valid keywords are " + KEYWORDS);
         }
     }
@@ -252,6 +264,29 @@ final class ArenaParser {
         }
         regions.add(r);
         regionLines.add(lineNo);
+    }
+
+    private void timeLimit(String[] t) {
+        if (timeLimitLine != 0) {
+            throw error(lineNo, "a second 'time-limit' line (the first is on line " + timeLimitLine + "); keep one");
+        }
+        double[] n = numbers(t, 1, "time-limit needs the simulated seconds a run gets (1 number, s), e.g. 'time-limit 600'",
+                "seconds");
+        if (!(n[0] > 0)) {
+            throw error(lineNo, "time-limit is " + Numbers.brief(n[0]) + " s; give a positive number of simulated seconds");
+        }
+        build(lineNo, () -> new Assignment(List.of(), n[0]));
+        timeLimit = n[0];
+        timeLimitLine = lineNo;
+    }
+
+    private void checkTasks() {
+        for (int i = 0; i < tasks.size(); i++) {
+            String wrong = TaskLines.check(tasks.get(i), regions, caps.size());
+            if (wrong != null) {
+                throw error(taskLines.get(i), wrong);
+            }
+        }
     }
 
     private void count(int sofar, int max, String what) {

@@ -11,6 +11,8 @@ import java.util.concurrent.Callable;
 import org.kheperasim.link.tool.CliNumbers;
 import org.kheperasim.link.tool.ControllerOptions;
 import org.kheperasim.link.tool.ExitCodes;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.host.ConsoleLine;
 import org.kheperasim.sim.host.ControllerHost;
@@ -18,6 +20,8 @@ import org.kheperasim.sim.host.ControllerStatus;
 import org.kheperasim.sim.run.EditLog;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
+import org.kheperasim.sim.task.RunFacts;
+import org.kheperasim.sim.task.Score;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -83,12 +87,13 @@ final class RunCommand implements Callable<Integer> {
     public Integer call() {
         Settings settings = settingsOptions.settings();
         PrintStream info = json ? System.err : System.out;
+        Arena resolved = ArenaFormat.resolve(arena);
         Simulation.Builder run = Simulation.builder()
-                .arena(arena)
+                .arena(resolved)
                 .controller(controllerOptions.controller())
                 .classpath(controllerOptions.classpath())
                 .trusted(trusted)
-                .seconds(controllerOptions.seconds(DEFAULT_SECONDS))
+                .seconds(controllerOptions.seconds(resolved.assignment().secondsOr(DEFAULT_SECONDS)))
                 .settings(settings)
                 .sampleMillis(sampleMillis)
                 .hostOptions(ControllerHost.Options.defaults().withHangTimeout((long) (hangTimeout * 1e9)))
@@ -110,7 +115,7 @@ final class RunCommand implements Callable<Integer> {
             run.edits(EditLog.load(edits));
         }
         info.println("seed " + run.seed());
-        return StopOnSignal.run(run, hangTimeout, this::report);
+        return StopOnSignal.run(run, hangTimeout, result -> report(result, resolved));
     }
 
     /** Apply the {@code --robot N:KEY=VALUE} options: a robot's own controller and settings. */
@@ -145,8 +150,9 @@ final class RunCommand implements Callable<Integer> {
         }
     }
 
-    private int report(RunResult result) {
-        System.out.println(json ? toJson(result) : summary(result));
+    private int report(RunResult result, Arena resolved) {
+        Score score = resolved.assignment().hasTasks() ? Score.of(resolved, RunFacts.of(result)) : null;
+        System.out.println(json ? toJson(result, score) : summary(result, score));
         System.out.flush();
         for (RunResult.RobotResult r : result.robots()) {
             if (r.status().failed()) {
@@ -157,6 +163,11 @@ final class RunCommand implements Callable<Integer> {
     }
 
     static String summary(RunResult result) {
+        return summary(result, null);
+    }
+
+    /** @param score the run's score, or null when the arena has no tasks @return the one-line result */
+    static String summary(RunResult result, Score score) {
         RunResult.RobotResult r = result.first();
         StringBuilder s = new StringBuilder(String.format(Locale.ROOT,
                 "%s in %s: %.1f s simulated in %.2f s (%.0fx real time); ended at (%.1f, %.1f) mm heading %.1f deg;"
@@ -168,6 +179,9 @@ final class RunCommand implements Callable<Integer> {
         if (result.caps() > 0) {
             s.append("; caps per region ").append(result.capsInRegions());
         }
+        if (score != null) {
+            s.append("; score ").append(score.summary());
+        }
         if (result.traceSha256() != null) {
             s.append("; trace sha256 ").append(result.traceSha256());
         }
@@ -175,6 +189,11 @@ final class RunCommand implements Callable<Integer> {
     }
 
     static String toJson(RunResult result) {
+        return toJson(result, null);
+    }
+
+    /** @param score the run's score, or null when the arena has no tasks @return the JSON object */
+    static String toJson(RunResult result, Score score) {
         RunResult.RobotResult first = result.first();
         Json j = new Json().begin()
                 .put("seed", result.seed())
@@ -203,6 +222,15 @@ final class RunCommand implements Callable<Integer> {
                     .end();
         }
         j.endArray();
+        if (score != null) {
+            j.beginObject("score").put("points", score.points()).put("max", score.max()).put("percent", score.percent());
+            j.beginArray("tasks");
+            for (Score.Part p : score.parts()) {
+                j.element().put("task", p.task()).put("fraction", p.fraction()).put("points", p.points())
+                        .put("max", p.max()).put("detail", p.detail()).end();
+            }
+            j.endArray().end();
+        }
         return j.end().toString();
     }
 
