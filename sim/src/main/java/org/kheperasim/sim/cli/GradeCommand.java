@@ -24,11 +24,11 @@ import picocli.CommandLine.Parameters;
             "--shard K/N makes one deterministic slice; 'grade merge' joins the slices into the same report."})
 final class GradeCommand implements Callable<Integer> {
 
-    @Option(names = "--submissions", required = true, paramLabel = "DIR", description = "the folder with one sub-folder per student")
+    @Option(names = "--submissions", paramLabel = "DIR", description = "the folder with one sub-folder per student (required)")
     Path submissions;
 
-    @Option(names = "--arenas", required = true, arity = "1..*", paramLabel = "ARENA",
-            description = "arena files or bundled arenas (${COMPLETION-CANDIDATES})", completionCandidates = BundledArenas.class)
+    @Option(names = "--arenas", arity = "1..*", paramLabel = "ARENA",
+            description = "arena files or bundled arenas (${COMPLETION-CANDIDATES}) (required)", completionCandidates = BundledArenas.class)
     List<String> arenas = new ArrayList<>();
 
     @Option(names = "--seeds", paramLabel = "N", defaultValue = "5", converter = CliNumbers.PositiveInt.class, description = "run seeds 1..N (default: ${DEFAULT-VALUE})")
@@ -63,6 +63,11 @@ final class GradeCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        // Not picocli-required: 'grade merge' must not need them.
+        if (submissions == null || arenas.isEmpty()) {
+            throw new IllegalArgumentException("grade needs --submissions DIR and --arenas ARENA...; e.g. grade --submissions"
+                    + " hand-ins --arenas maze two-rooms --seeds 5 (or 'grade merge --out DIR SHARD_DIR...')");
+        }
         if (heapMb < 32) {
             throw new IllegalArgumentException("--heap-mb " + heapMb + ": give at least 32 (MiB)");
         }
