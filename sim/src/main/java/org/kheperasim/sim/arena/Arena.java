@@ -2,7 +2,6 @@ package org.kheperasim.sim.arena;
 
 import java.util.HashSet;
 import java.util.List;
-import java.util.Objects;
 import java.util.Optional;
 import java.util.Set;
 
@@ -23,8 +22,7 @@ import java.util.Set;
  * @param lights  fixed lamps
  * @param caps    movable bottle caps, in the order that gives them their grid ids
  * @param regions named rectangles, names unique
- * @param assignment the tasks scored at the end of a run and the time limit ({@link Assignment#NONE} for none);
- *     every region a task names exists
+ * @param assignment what a run is scored on (tasks, time limit); {@link Assignment#NONE} for none
  */
 public record Arena(String name, double width, double height, List<Pose> robots, List<Wall> walls,
                     List<Light> lights, List<Cap> caps, List<Region> regions, Assignment assignment) {
@@ -51,7 +49,7 @@ public record Arena(String name, double width, double height, List<Pose> robots,
         lights = List.copyOf(lights);
         caps = List.copyOf(caps);
         regions = List.copyOf(regions);
-        Objects.requireNonNull(assignment, "assignment (Assignment.NONE for none)");
+        java.util.Objects.requireNonNull(assignment, "assignment");
         if (robots.isEmpty()) {
             throw new IllegalArgumentException("arena '" + name + "' has no robot; add a start pose");
         }
@@ -62,25 +60,22 @@ public record Arena(String name, double width, double height, List<Pose> robots,
                         + "' is used twice; give each region its own name");
             }
         }
-        for (Task t : assignment.tasks()) {
-            for (String r : t.regions()) {
-                boolean prefix = r.endsWith("*");
-                String p = prefix ? r.substring(0, r.length() - 1) : r;
-                if (regions.stream().noneMatch(g -> prefix ? g.name().startsWith(p) : g.name().equals(p))) {
-                    throw new IllegalArgumentException("'" + t.line() + "' names " + (prefix ? "regions starting '" + p
-                            + "'" : "the region '" + r + "'") + ", and the arena has none; add a 'region' line or fix the name");
-                }
-            }
-            if (t.kind() == Task.Kind.DELIVER && t.count() > caps.size()) {
-                throw new IllegalArgumentException("'" + t.line() + "' asks for " + t.count() + " caps and the arena has "
-                        + caps.size() + "; lower the count or add caps");
-            }
-        }
     }
 
-    /** An arena without an assignment. */
-    public Arena(String name, double width, double height, List<Pose> robots, List<Wall> walls, List<Light> lights,
-            List<Cap> caps, List<Region> regions) {
+    /**
+     * An arena without an assignment.
+     *
+     * @param name    identifier of letters, digits, {@code _} and {@code -}
+     * @param width   extent along x, mm
+     * @param height  extent along y, mm
+     * @param robots  start poses
+     * @param walls   fixed walls
+     * @param lights  fixed lamps
+     * @param caps    movable bottle caps
+     * @param regions named rectangles
+     */
+    public Arena(String name, double width, double height, List<Pose> robots, List<Wall> walls,
+                 List<Light> lights, List<Cap> caps, List<Region> regions) {
         this(name, width, height, robots, walls, lights, caps, regions, Assignment.NONE);
     }
 

@@ -127,14 +127,27 @@ public final class ArenaFormat {
 
     /**
      * Writes an arena as canonical text: header, name, size, robots, walls, lights, caps, regions,
-     * one item per line, no comments; every number in its shortest exact decimal form; optional
-     * keywords only where they differ from the defaults. {@code parse(write(a), s).equals(a)} for
+     * then the assignment ({@code time-limit}, then the {@code task} lines in order), one item per
+     * line, no comments; every number in its shortest exact decimal form; optional keywords only where they differ from the defaults. {@code parse(write(a), s).equals(a)} for
      * every arena that {@link #parse} accepts.
      *
      * @param arena the arena
      * @return the text, lines ending in {@code \n}
      */
     public static String write(Arena arena) {
+        StringBuilder sb = new StringBuilder(writeWorld(arena));
+        Assignment a = arena.assignment();
+        if (a.timeLimitSeconds() > 0) {
+            line(sb, "time-limit", a.timeLimitSeconds());
+        }
+        for (Task t : a.tasks()) {
+            sb.append(t.line()).append('\n');
+        }
+        return sb.toString();
+    }
+
+    /** The canonical lines of what the simulation sees: everything but the assignment. */
+    private static String writeWorld(Arena arena) {
         StringBuilder sb = new StringBuilder(256);
         sb.append(HEADER).append('\n');
         sb.append("name ").append(arena.name()).append('\n');
@@ -163,12 +176,6 @@ public final class ArenaFormat {
             sb.append("region ").append(r.name());
             line(sb, "", r.x1(), r.y1(), r.x2(), r.y2());
         }
-        for (Task t : arena.assignment().tasks()) {
-            sb.append(t.line()).append('\n');
-        }
-        if (arena.assignment().timeLimitSeconds() > 0) {
-            sb.append("time-limit ").append(Numbers.format(arena.assignment().timeLimitSeconds())).append('\n');
-        }
         return sb.toString();
     }
 
@@ -195,12 +202,14 @@ public final class ArenaFormat {
      * whatever the comments and layout of their files.
      *
      * @param arena the arena
-     * @return lower-case hex SHA-256 of {@link #write}'s UTF-8 text
+     * @return lower-case hex SHA-256 of {@link #write}'s UTF-8 text less the assignment's lines
+     *     ({@code time-limit}, {@code task}): they only score a run, so adding a task to an arena
+     *     changes no trace and a recorded run still verifies
      */
     public static String sha256(Arena arena) {
         try {
             MessageDigest md = MessageDigest.getInstance("SHA-256");
-            return HexFormat.of().formatHex(md.digest(write(arena).getBytes(StandardCharsets.UTF_8)));
+            return HexFormat.of().formatHex(md.digest(writeWorld(arena).getBytes(StandardCharsets.UTF_8)));
         } catch (NoSuchAlgorithmException e) {
             throw new IllegalStateException("this Java runtime lacks SHA-256, which every JDK must have", e);
         }

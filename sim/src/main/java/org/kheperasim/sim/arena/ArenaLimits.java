@@ -23,10 +23,6 @@ public final class ArenaLimits {
     public static final int MAX_CAPS = 1_000;
     /** Most regions. */
     public static final int MAX_REGIONS = 1_000;
-    /** Tasks an arena may set. */
-    public static final int MAX_TASKS = 100;
-    /** Longest time limit, simulated s (a day). */
-    public static final double MAX_TIME_LIMIT_S = 86_400;
     /** The walls' areas (length x thickness each) may add up to this many times the floor's. */
     public static final double MAX_WALL_AREA_RATIO = 4;
     /** Thickest wall, mm. */

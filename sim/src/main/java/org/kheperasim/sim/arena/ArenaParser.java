@@ -47,7 +47,10 @@ final class ArenaParser {
     private final List<Region> regions = new ArrayList<>();
     private final List<Integer> regionLines = new ArrayList<>();
     private final Map<String, Integer> regionNames = new HashMap<>();
-    private final AssignmentLines assignment = new AssignmentLines();
+    private final List<Task> tasks = new ArrayList<>();
+    private final List<Integer> taskLines = new ArrayList<>();
+    private double timeLimit;
+    private int timeLimitLine;
 
     ArenaParser(String text, String source) {
         this.source = source;
@@ -100,10 +103,10 @@ final class ArenaParser {
         }
         checkInside();
         checkWallArea();
-        Arena plain = build(headerLine, () -> new Arena(name != null ? name : nameFromSource(),
-                width, height, robots, walls, lights, caps, regions));
-        int badTask = assignment.lineOfBadTask(plain::withAssignment);
-        Arena arena = build(badTask != 0 ? badTask : headerLine, () -> plain.withAssignment(assignment.assignment()));
+        checkTasks();
+        Assignment assignment = new Assignment(tasks, timeLimit);
+        Arena arena = build(headerLine, () -> new Arena(name != null ? name : nameFromSource(),
+                width, height, robots, walls, lights, caps, regions, assignment));
         RobotClearance.check(arena, robotLines, source);
         return arena;
     }
@@ -144,20 +147,12 @@ final class ArenaParser {
             case "light" -> light(t);
             case "cap" -> cap(t);
             case "region" -> region(t);
-            case "task" -> build(lineNo, () -> {
-                assignment.task(t, lineNo);
-                return null;
-            });
-            case "time-limit" -> {
-                if (t.length != 2) {
-                    throw error(lineNo, "time-limit needs one number, the assignment's time in simulated seconds, e.g. 'time-limit 600'");
-                }
-                double seconds = number(t[1], "time-limit");
-                build(lineNo, () -> {
-                    assignment.timeLimit(t, lineNo, seconds);
-                    return null;
-                });
+            case "task" -> {
+                count(tasks.size(), Assignment.MAX_TASKS, "task lines");
+                tasks.add(build(lineNo, () -> TaskLines.parse(t, this::number)));
+                taskLines.add(lineNo);
             }
+            case "time-limit" -> timeLimit(t);
             default -> throw error(lineNo, "unknown keyword '" + shorten(t[0]) + "'; valid keywords are " + KEYWORDS);
         }
     }
@@ -269,6 +264,29 @@ final class ArenaParser {
         }
         regions.add(r);
         regionLines.add(lineNo);
+    }
+
+    private void timeLimit(String[] t) {
+        if (timeLimitLine != 0) {
+            throw error(lineNo, "a second 'time-limit' line (the first is on line " + timeLimitLine + "); keep one");
+        }
+        double[] n = numbers(t, 1, "time-limit needs the simulated seconds a run gets (1 number, s), e.g. 'time-limit 600'",
+                "seconds");
+        if (!(n[0] > 0)) {
+            throw error(lineNo, "time-limit is " + Numbers.brief(n[0]) + " s; give a positive number of simulated seconds");
+        }
+        build(lineNo, () -> new Assignment(List.of(), n[0]));
+        timeLimit = n[0];
+        timeLimitLine = lineNo;
+    }
+
+    private void checkTasks() {
+        for (int i = 0; i < tasks.size(); i++) {
+            String wrong = TaskLines.check(tasks.get(i), regions, caps.size());
+            if (wrong != null) {
+                throw error(taskLines.get(i), wrong);
+            }
+        }
     }
 
     private void count(int sofar, int max, String what) {

@@ -11,6 +11,8 @@ import java.util.concurrent.Callable;
 import org.kheperasim.link.tool.CliNumbers;
 import org.kheperasim.link.tool.ControllerOptions;
 import org.kheperasim.link.tool.ExitCodes;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.host.ConsoleLine;
 import org.kheperasim.sim.host.ControllerHost;
@@ -18,6 +20,8 @@ import org.kheperasim.sim.host.ControllerStatus;
 import org.kheperasim.sim.run.EditLog;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
+import org.kheperasim.sim.task.RunFacts;
+import org.kheperasim.sim.task.Score;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -83,14 +87,13 @@ final class RunCommand implements Callable<Integer> {
     public Integer call() {
         Settings settings = settingsOptions.settings();
         PrintStream info = json ? System.err : System.out;
-        org.kheperasim.sim.arena.Arena theArena = org.kheperasim.sim.arena.ArenaFormat.resolve(arena);
-        double limit = theArena.assignment().timeLimitSeconds();
+        Arena resolved = ArenaFormat.resolve(arena);
         Simulation.Builder run = Simulation.builder()
-                .arena(theArena)
+                .arena(resolved)
                 .controller(controllerOptions.controller())
                 .classpath(controllerOptions.classpath())
                 .trusted(trusted)
-                .seconds(controllerOptions.seconds(limit > 0 ? limit : DEFAULT_SECONDS))
+                .seconds(controllerOptions.seconds(resolved.assignment().secondsOr(DEFAULT_SECONDS)))
                 .settings(settings)
                 .sampleMillis(sampleMillis)
                 .hostOptions(ControllerHost.Options.defaults().withHangTimeout((long) (hangTimeout * 1e9)))
@@ -112,7 +115,7 @@ final class RunCommand implements Callable<Integer> {
             run.edits(EditLog.load(edits));
         }
         info.println("seed " + run.seed());
-        return StopOnSignal.run(run, hangTimeout, this::report);
+        return StopOnSignal.run(run, hangTimeout, result -> report(result, resolved));
     }
 
     /** Apply the {@code --robot N:KEY=VALUE} options: a robot's own controller and settings. */
@@ -147,8 +150,9 @@ final class RunCommand implements Callable<Integer> {
         }
     }
 
-    private int report(RunResult result) {
-        System.out.println(json ? toJson(result) : summary(result));
+    private int report(RunResult result, Arena resolved) {
+        Score score = resolved.assignment().hasTasks() ? Score.of(resolved, RunFacts.of(result)) : null;
+        System.out.println(json ? toJson(result, score) : summary(result, score));
         System.out.flush();
         for (RunResult.RobotResult r : result.robots()) {
             if (r.status().failed()) {
@@ -159,6 +163,11 @@ final class RunCommand implements Callable<Integer> {
     }
 
     static String summary(RunResult result) {
+        return summary(result, null);
+    }
+
+    /** @param score the run's score, or null when the arena has no tasks @return the one-line result */
+    static String summary(RunResult result, Score score) {
         RunResult.RobotResult r = result.first();
         StringBuilder s = new StringBuilder(String.format(Locale.ROOT,
                 "%s in %s: %.1f s simulated in %.2f s (%.0fx real time); ended at (%.1f, %.1f) mm heading %.1f deg;"
@@ -170,8 +179,8 @@ final class RunCommand implements Callable<Integer> {
         if (result.caps() > 0) {
             s.append("; caps per region ").append(result.capsInRegions());
         }
-        if (!result.scores().isEmpty()) {
-            s.append("; ").append(org.kheperasim.sim.run.TaskScore.describe(result.scores()));
+        if (score != null) {
+            s.append("; score ").append(score.summary());
         }
         if (result.traceSha256() != null) {
             s.append("; trace sha256 ").append(result.traceSha256());
@@ -180,6 +189,11 @@ final class RunCommand implements Callable<Integer> {
     }
 
     static String toJson(RunResult result) {
+        return toJson(result, null);
+    }
+
+    /** @param score the run's score, or null when the arena has no tasks @return the JSON object */
+    static String toJson(RunResult result, Score score) {
         RunResult.RobotResult first = result.first();
         Json j = new Json().begin()
                 .put("seed", result.seed())
@@ -197,16 +211,6 @@ final class RunCommand implements Callable<Integer> {
                 .put("regionsEntered", first.regionsEntered())
                 .put("caps", result.caps())
                 .put("capsInRegions", result.capsInRegions());
-        if (!result.scores().isEmpty()) {
-            j.beginObject("score").put("percent", result.score());
-            j.beginArray("tasks");
-            for (org.kheperasim.sim.run.TaskScore t : result.scores()) {
-                j.element().put("task", t.task()).put("percent", t.percent()).put("fraction", t.fraction())
-                        .put("detail", t.detail()).end();
-            }
-            j.endArray();
-            j.end();
-        }
         j.beginArray("robots");
         for (RunResult.RobotResult r : result.robots()) {
             j.element().put("name", r.name())
@@ -218,6 +222,15 @@ final class RunCommand implements Callable<Integer> {
                     .end();
         }
         j.endArray();
+        if (score != null) {
+            j.beginObject("score").put("points", score.points()).put("max", score.max()).put("percent", score.percent());
+            j.beginArray("tasks");
+            for (Score.Part p : score.parts()) {
+                j.element().put("task", p.task()).put("fraction", p.fraction()).put("points", p.points())
+                        .put("max", p.max()).put("detail", p.detail()).end();
+            }
+            j.endArray().end();
+        }
         return j.end().toString();
     }
 

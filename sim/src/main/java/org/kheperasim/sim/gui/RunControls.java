@@ -87,8 +87,8 @@ final class RunControls implements SnapshotSource {
         if (runner == null || p == null) {
             return null;
         }
-        List<org.kheperasim.sim.run.TaskScore> scores = p.scores();
-        return scores.isEmpty() ? null : org.kheperasim.sim.run.TaskScore.describe(scores);
+        org.kheperasim.sim.task.Score score = p.score();
+        return score.parts().isEmpty() ? null : "score " + score.summary();
     }
 
     /** @return the runner, or null */

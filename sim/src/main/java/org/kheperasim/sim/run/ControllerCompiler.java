@@ -40,11 +40,25 @@ public final class ControllerCompiler {
      * @param line the line in the source, 1-based (0 when it concerns no line)
      * @param column the column, 1-based (0 when unknown)
      * @param message what the compiler said
+     * @param source the file it concerns (its name), or null when the compilation had one file
      */
-    public record Problem(boolean error, long line, long column, String message) {
-        /** @param file the source's name @return {@code Robot.java:12:5: error: ...} */
+    public record Problem(boolean error, long line, long column, String message, String source) {
+        /**
+         * A problem in the one file compiled.
+         *
+         * @param error true for an error
+         * @param line the line, 1-based (0 when none)
+         * @param column the column, 1-based (0 when unknown)
+         * @param message what the compiler said
+         */
+        public Problem(boolean error, long line, long column, String message) {
+            this(error, line, column, message, null);
+        }
+
+        /** @param file the source's name (used when the problem names none) @return {@code Robot.java:12:5: error: ...} */
         public String format(String file) {
-            return file + ":" + line + (column > 0 ? ":" + column : "") + ": " + (error ? "error" : "warning") + ": " + message;
+            return (source != null ? source : file) + ":" + line + (column > 0 ? ":" + column : "") + ": "
+                    + (error ? "error" : "warning") + ": " + message;
         }
     }
 
@@ -95,6 +109,30 @@ public final class ControllerCompiler {
         String simple = source.getFileName().toString().replaceFirst("\\.java$", "");
         Matcher m = PACKAGE.matcher(text);
         String className = m.find() ? m.group(1) + "." + simple : simple;
+        Result r = compileAll(javac, List.of(source), classes, false);
+        return new Result(r.success(), className, classes, r.problems());
+    }
+
+    /**
+     * Compile several source files together (a submission with helper classes), e.g. for grading.
+     *
+     * @param sources the {@code .java} files
+     * @param classes the folder the classes go to (created)
+     * @return the result, with each problem naming its file; its class name is null (a caller that
+     *     needs the controller looks through the classes)
+     * @throws IllegalStateException if this Java has no compiler (a JRE rather than a JDK)
+     * @throws IOException if the output folder cannot be made
+     */
+    public static Result compileAll(List<Path> sources, Path classes) throws IOException {
+        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
+        if (javac == null) {
+            throw new IllegalStateException("this Java runtime has no compiler (it is a JRE, not a JDK); grade with a JDK 17+");
+        }
+        return compileAll(javac, sources, classes, true);
+    }
+
+    private static Result compileAll(JavaCompiler javac, List<Path> sources, Path classes, boolean nameFiles)
+            throws IOException {
         Files.createDirectories(classes);
         DiagnosticCollector<JavaFileObject> diagnostics = new DiagnosticCollector<>();
         List<String> options = List.of("--release", "17", "-proc:none", "-g", "-d", classes.toString(),
@@ -102,20 +140,22 @@ public final class ControllerCompiler {
         boolean ok;
         StringWriter out = new StringWriter();
         try (StandardJavaFileManager files = javac.getStandardFileManager(diagnostics, Locale.ROOT, StandardCharsets.UTF_8)) {
-            ok = javac.getTask(out, files, diagnostics, options, null, files.getJavaFileObjects(source.toFile())).call();
+            ok = javac.getTask(out, files, diagnostics, options, null,
+                    files.getJavaFileObjects(sources.stream().map(Path::toFile).toArray(File[]::new))).call();
         }
         List<Problem> problems = new ArrayList<>();
         for (Diagnostic<? extends JavaFileObject> d : diagnostics.getDiagnostics()) {
             if (d.getKind() == Diagnostic.Kind.NOTE) {
                 continue;
             }
+            String file = nameFiles && d.getSource() != null ? Path.of(d.getSource().toUri()).getFileName().toString() : null;
             problems.add(new Problem(d.getKind() == Diagnostic.Kind.ERROR, StrictMath.max(0, d.getLineNumber()),
-                    StrictMath.max(0, d.getColumnNumber()), d.getMessage(Locale.ROOT)));
+                    StrictMath.max(0, d.getColumnNumber()), d.getMessage(Locale.ROOT), file));
         }
         if (!ok && problems.isEmpty()) {
             problems.add(new Problem(true, 0, 0, out.toString().strip()));
         }
-        return new Result(ok, className, classes, problems);
+        return new Result(ok, null, classes, problems);
     }
 
     /** The API classes, and whatever this application runs from (the jar, or target/classes). */

@@ -17,16 +17,13 @@ import org.kheperasim.sim.host.ControllerStatus;
  * @param capsInRegions for each named region of the arena, in arena order, how many caps lie on
  *     the floor inside it at the end
  * @param caps how many caps the arena has
- * @param scores the arena's tasks, each scored (none when the arena sets no task)
  */
 public record RunResult(long seed, String arena, String controller, double simulatedSeconds, double wallSeconds,
-        String traceSha256, List<RobotResult> robots, Map<String, Integer> capsInRegions, int caps,
-        List<TaskScore> scores) {
+        String traceSha256, List<RobotResult> robots, Map<String, Integer> capsInRegions, int caps) {
 
-    /** Copies the lists and the map. */
+    /** Copies the list and the map. */
     public RunResult {
         robots = List.copyOf(robots);
-        scores = List.copyOf(scores);
         capsInRegions = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(capsInRegions));
     }
 
@@ -53,20 +50,6 @@ public record RunResult(long seed, String arena, String controller, double simul
     /** @return simulated seconds per wall second */
     public double realTimeFactor() {
         return wallSeconds <= 0 ? Double.POSITIVE_INFINITY : simulatedSeconds / wallSeconds;
-    }
-
-    /** @return every region entered by any robot's centre, with the first time, s */
-    public Map<String, Double> regionsEnteredByAny() {
-        Map<String, Double> out = new java.util.LinkedHashMap<>();
-        for (RobotResult r : robots) {
-            r.regionsEntered().forEach((k, v) -> out.merge(k, v, StrictMath::min));
-        }
-        return out;
-    }
-
-    /** @return the mean of the task scores, whole percent (0 without tasks) */
-    public int score() {
-        return TaskScore.total(scores);
     }
 
     /** @return the first robot's result */

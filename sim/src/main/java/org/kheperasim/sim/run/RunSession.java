@@ -266,13 +266,8 @@ public final class RunSession implements AutoCloseable {
                     r.collisions(), r.visitedPercent(), h.status(),
                     h.failure() == null ? null : h.failure().toString(), r.regionsEntered()));
         }
-        Map<String, Double> entered = new java.util.LinkedHashMap<>();
-        for (RunResult.RobotResult r : results) {
-            r.regionsEntered().forEach((k, v) -> entered.merge(k, v, StrictMath::min));
-        }
-        Map<String, Integer> capsIn = engine.world().capsInRegions();
         return new RunResult(seed, arena.name(), controllerClass, engine.timeNanos() / 1e9, wallSeconds,
-                traceSha256(), results, capsIn, engine.world().capCount(), TaskScore.score(arena, entered, capsIn));
+                traceSha256(), results, engine.world().capsInRegions(), engine.world().capCount());
     }
 
     /** @return the first robot's controller status */

@@ -21,9 +21,11 @@ class AssignmentScoresTest {
         for (long seed = 1; seed <= 20; seed++) {
             // No --seconds: the run lasts the arena's time limit, as 'run' does.
             double limit = org.kheperasim.sim.arena.ArenaFormat.loadBundled(arena).assignment().timeLimitSeconds();
-            RunResult r = Simulation.builder().arena(arena).controller(controller).seed(seed).seconds(limit).run();
-            if (r.score() != 100) {
-                misses.add("seed " + seed + ": " + TaskScore.describe(r.scores()));
+            org.kheperasim.sim.arena.Arena a = org.kheperasim.sim.arena.ArenaFormat.loadBundled(arena);
+            RunResult r = Simulation.builder().arena(a).controller(controller).seed(seed).seconds(limit).run();
+            org.kheperasim.sim.task.Score score = org.kheperasim.sim.task.Score.of(a, org.kheperasim.sim.task.RunFacts.of(r));
+            if (score.percent() < 100) {
+                misses.add("seed " + seed + ": " + score.summary());
             }
             assertTrue(!r.first().status().failed(), "seed " + seed + ": " + r.first().failure());
         }

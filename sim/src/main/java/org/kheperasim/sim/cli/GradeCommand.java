@@ -1,0 +1,109 @@
+package org.kheperasim.sim.cli;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.Callable;
+import org.kheperasim.link.tool.CliNumbers;
+import org.kheperasim.link.tool.ExitCodes;
+import org.kheperasim.sim.grade.GradePlan;
+import org.kheperasim.sim.grade.Grader;
+import org.kheperasim.sim.grade.ReportFiles;
+import org.kheperasim.sim.grade.ReportMerge;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/** {@code grade}: every submission in every arena with every seed, each in a child JVM; a report. */
+@Command(name = "grade", mixinStandardHelpOptions = true, sortOptions = false,
+        subcommands = GradeCommand.Merge.class,
+        description = {"Grade a class: compile every submission (one sub-folder per student, .java or .class), run it in"
+                + " every arena with seeds 1..N, each run in a child JVM with a heap, simulated-time and wall-clock limit"
+                + " under the containment rules, and write a report (report.txt, results.csv, results.json, index.html"
+                + " with trajectory pictures) ranked per arena by the arenas' tasks. See docs/grading.md.",
+            "--shard K/N makes one deterministic slice; 'grade merge' joins the slices into the same report."})
+final class GradeCommand implements Callable<Integer> {
+
+    @Option(names = "--submissions", paramLabel = "DIR", description = "the folder with one sub-folder per student (required)")
+    Path submissions;
+
+    @Option(names = "--arenas", arity = "1..*", paramLabel = "ARENA",
+            description = "arena files or bundled arenas (${COMPLETION-CANDIDATES}) (required)", completionCandidates = BundledArenas.class)
+    List<String> arenas = new ArrayList<>();
+
+    @Option(names = "--seeds", paramLabel = "N", defaultValue = "5", converter = CliNumbers.PositiveInt.class, description = "run seeds 1..N (default: ${DEFAULT-VALUE})")
+    int seeds;
+
+    @Option(names = "--jobs", paramLabel = "K", defaultValue = "1", converter = CliNumbers.PositiveInt.class, description = "runs at once, each a JVM (default: ${DEFAULT-VALUE})")
+    int jobs;
+
+    @Option(names = "--out", paramLabel = "DIR", defaultValue = "grade-report", description = "the report folder (default: ${DEFAULT-VALUE})")
+    Path out;
+
+    @Option(names = "--shard", paramLabel = "K/N", description = "make only shard K of N (1 <= K <= N); join with 'grade merge'")
+    String shard;
+
+    @Option(names = "--seconds", paramLabel = "T", converter = CliNumbers.PositiveSeconds.class,
+            description = "simulated seconds per run (default: each arena's time-limit, else 600)")
+    Double seconds;
+
+    @Option(names = "--heap-mb", paramLabel = "MB", defaultValue = "256", description = "each run's heap limit, MiB (default: ${DEFAULT-VALUE})")
+    int heapMb;
+
+    @Option(names = "--wall-limit", paramLabel = "SECONDS", defaultValue = "300", converter = CliNumbers.PositiveSeconds.class,
+            description = "real seconds a run may take before it is killed and counted as hung (default: ${DEFAULT-VALUE})")
+    double wallLimit;
+
+    @Option(names = "--hang-timeout", paramLabel = "SECONDS", defaultValue = "5", converter = CliNumbers.PositiveSeconds.class,
+            description = "real seconds without an API call after which a controller counts as hung (default: ${DEFAULT-VALUE})")
+    double hangTimeout;
+
+    @Option(names = "--keep-traces", description = "keep each run's trace in DIR/work/runs (they are deleted once drawn)")
+    boolean keepTraces;
+
+    @Override
+    public Integer call() {
+        // Not picocli-required: 'grade merge' must not need them.
+        if (submissions == null || arenas.isEmpty()) {
+            throw new IllegalArgumentException("grade needs --submissions DIR and --arenas ARENA...; e.g. grade --submissions"
+                    + " hand-ins --arenas maze two-rooms --seeds 5 (or 'grade merge --out DIR SHARD_DIR...')");
+        }
+        if (heapMb < 32) {
+            throw new IllegalArgumentException("--heap-mb " + heapMb + ": give at least 32 (MiB)");
+        }
+        GradePlan.Shard s = shard == null ? GradePlan.Shard.ALL : GradePlan.Shard.parse(shard);
+        ReportFiles.Report report = Grader.grade(new Grader.Options(submissions, arenas, seeds, jobs, out, s, heapMb, wallLimit,
+                hangTimeout, seconds, keepTraces, System.err, System.console() != null));
+        print(report, out);
+        return ExitCodes.OK;
+    }
+
+    static void print(ReportFiles.Report report, Path out) {
+        try {
+            System.out.print(java.nio.file.Files.readString(out.resolve("report.txt")));
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+        System.out.println("Report: " + out.resolve("index.html") + " (also results.csv, results.json)"
+                + (report.shard().n() > 1 ? "; shard " + report.shard() + ": join the shards with grade merge" : ""));
+    }
+
+    /** {@code grade merge}: join the shards' reports. */
+    @Command(name = "merge", mixinStandardHelpOptions = true,
+            description = "Join the report folders of 'grade --shard K/N' runs (all N of them) into one report, the same"
+                    + " as one unsharded grading writes.")
+    static final class Merge implements Callable<Integer> {
+        @Option(names = "--out", paramLabel = "DIR", defaultValue = "grade-report", description = "the merged report's folder (default: ${DEFAULT-VALUE})")
+        Path out;
+
+        @Parameters(arity = "1..*", paramLabel = "SHARD_DIR", description = "the shards' report folders")
+        List<Path> shards = new ArrayList<>();
+
+        @Override
+        public Integer call() {
+            ReportFiles.Report report = ReportMerge.merge(shards, out);
+            print(report, out);
+            return ExitCodes.OK;
+        }
+    }
+}

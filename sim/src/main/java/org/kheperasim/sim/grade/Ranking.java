@@ -1,0 +1,61 @@
+package org.kheperasim.sim.grade;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * The students of one assignment (arena) ranked by their mean score over the seeds; a run that
+ * failed counts with the points it earned before it failed (none, when it did not run). Equal means
+ * share a rank.
+ */
+final class Ranking {
+
+    /**
+     * One student's line.
+     *
+     * @param rank        1 for the best; equal means share a rank
+     * @param student     the student
+     * @param meanPercent the mean of the runs' percentages
+     * @param meanPoints  the mean of the runs' points
+     * @param runs        the runs, by seed
+     */
+    record Entry(int rank, String student, double meanPercent, double meanPoints, List<RunRecord> runs) {
+    }
+
+    private Ranking() {
+    }
+
+    /**
+     * @param runs every run of the grading
+     * @return for each arena, in the order first seen, its ranking
+     */
+    static Map<String, List<Entry>> of(List<RunRecord> runs) {
+        Map<String, Map<String, List<RunRecord>>> byArena = new LinkedHashMap<>();
+        for (RunRecord r : runs) {
+            byArena.computeIfAbsent(r.arena(), a -> new LinkedHashMap<>())
+                    .computeIfAbsent(r.student(), s -> new ArrayList<>()).add(r);
+        }
+        Map<String, List<Entry>> out = new LinkedHashMap<>();
+        byArena.forEach((arena, students) -> {
+            List<Entry> entries = new ArrayList<>();
+            students.forEach((student, list) -> {
+                List<RunRecord> sorted = list.stream().sorted(Comparator.comparingLong(RunRecord::seed)).toList();
+                double pct = sorted.stream().mapToDouble(RunRecord::percent).average().orElse(0);
+                double pts = sorted.stream().mapToDouble(RunRecord::points).average().orElse(0);
+                entries.add(new Entry(0, student, ReportFiles.round2(pct), ReportFiles.round2(pts), sorted));
+            });
+            entries.sort(Comparator.comparingDouble(Entry::meanPercent).reversed().thenComparing(Entry::student));
+            List<Entry> ranked = new ArrayList<>();
+            for (int i = 0; i < entries.size(); i++) {
+                Entry e = entries.get(i);
+                int rank = i > 0 && entries.get(i - 1).meanPercent() == e.meanPercent() ? ranked.get(i - 1).rank() : i + 1;
+                ranked.add(new Entry(rank, e.student(), e.meanPercent(), e.meanPoints(), e.runs()));
+            }
+            out.put(arena, ranked);
+        });
+        return out;
+    }
+}

@@ -1,0 +1,33 @@
+package org.kheperasim.sim.grade;
+
+/**
+ * One graded run as the report holds it: everything here is the same however and wherever the
+ * run was made (wall-clock times are kept apart, in {@code timings.csv}), so sharded and unsharded
+ * gradings give identical reports.
+ *
+ * @param student          the submission's folder name
+ * @param arena            the arena as given on the command line
+ * @param seed             the run's seed
+ * @param status           how it ended
+ * @param points           points earned (0 when it did not run)
+ * @param max              points available in the arena
+ * @param percent          points as a percentage of max, 0..100
+ * @param simulatedSeconds simulated time reached, s
+ * @param controller       the controller class that ran (empty when none)
+ * @param detail           the failure or the score's details, one line
+ * @param picture          the trajectory picture, relative to the report folder (empty when none)
+ */
+public record RunRecord(String student, String arena, long seed, RunStatus status, double points, double max,
+        double percent, double simulatedSeconds, String controller, String detail, String picture) {
+
+    /** Keeps the detail to one line; rounds the numbers as the report writes them (2 decimals; 3 for seconds). */
+    public RunRecord {
+        points = ReportFiles.round2(points);
+        max = ReportFiles.round2(max);
+        percent = ReportFiles.round2(percent);
+        simulatedSeconds = StrictMath.rint(simulatedSeconds * 1000) / 1000;
+        detail = detail == null ? "" : detail.replaceAll("[\\r\\n]+", " ").strip();
+        controller = controller == null ? "" : controller;
+        picture = picture == null ? "" : picture;
+    }
+}

@@ -1,0 +1,46 @@
+package org.kheperasim.sim.grade;
+
+import java.util.Locale;
+
+/** How one graded run ended, as the report names it. */
+public enum RunStatus {
+    /** The run went to its end (the controller finished or was stopped at the time limit). */
+    OK("ok"),
+    /** The submission did not compile, or holds no controller class. */
+    COMPILE_FAILED("failed to compile"),
+    /** The controller threw. */
+    THREW("threw"),
+    /** The controller stopped making API calls, or the run did not end within the wall-clock limit. */
+    HUNG("hung"),
+    /** The controller allocated without bound, or the child JVM ran out of heap. */
+    EXCEEDED_MEMORY("exceeded memory"),
+    /** The controller broke a containment rule (System.exit, a forbidden call; docs/controller-rules.md). */
+    BROKE_RULE("broke a rule"),
+    /** The run could not be made for another reason (the message says which). */
+    ERROR("error");
+
+    private final String label;
+
+    RunStatus(String label) {
+        this.label = label;
+    }
+
+    /** @return how the report shows it, e.g. {@code failed to compile} */
+    public String label() {
+        return label;
+    }
+
+    /** @return the CSV/JSON word, e.g. {@code compile_failed} */
+    public String word() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+
+    /**
+     * @param word a {@link #word()}
+     * @return the status
+     * @throws IllegalArgumentException if it names none
+     */
+    public static RunStatus ofWord(String word) {
+        return valueOf(word.toUpperCase(Locale.ROOT));
+    }
+}

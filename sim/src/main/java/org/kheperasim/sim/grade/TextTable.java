@@ -1,0 +1,39 @@
+package org.kheperasim.sim.grade;
+
+import java.util.EnumMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.stream.Collectors;
+
+/** The report as a terminal table: per arena, the students ranked, with each seed's status. */
+final class TextTable {
+    private TextTable() {
+    }
+
+    static String of(List<RunRecord> runs) {
+        StringBuilder sb = new StringBuilder();
+        Map<RunStatus, Integer> counts = new EnumMap<>(RunStatus.class);
+        runs.forEach(r -> counts.merge(r.status(), 1, Integer::sum));
+        for (Map.Entry<String, List<Ranking.Entry>> e : Ranking.of(runs).entrySet()) {
+            List<Ranking.Entry> entries = e.getValue();
+            int nameWidth = StrictMath.max(7, entries.stream().mapToInt(x -> x.student().length()).max().orElse(7));
+            double max = entries.isEmpty() || entries.get(0).runs().isEmpty() ? 0
+                    : entries.stream().flatMap(x -> x.runs().stream()).mapToDouble(RunRecord::max).max().orElse(0);
+            sb.append("Arena ").append(e.getKey()).append(max > 0 ? " (" + ReportFiles.num(max) + " points)" : " (no tasks)")
+                    .append('\n');
+            sb.append(String.format(Locale.ROOT, "%4s  %-" + nameWidth + "s  %7s  %7s  %s%n", "rank", "student", "score%",
+                    "points", "runs by seed"));
+            for (Ranking.Entry x : entries) {
+                String statuses = x.runs().stream().map(r -> r.status() == RunStatus.OK ? ReportFiles.num(r.percent())
+                        : r.status().label()).collect(Collectors.joining(" | "));
+                sb.append(String.format(Locale.ROOT, "%4d  %-" + nameWidth + "s  %7s  %7s  %s%n", x.rank(), x.student(),
+                        ReportFiles.num(x.meanPercent()), ReportFiles.num(x.meanPoints()), statuses));
+            }
+            sb.append('\n');
+        }
+        sb.append(runs.size()).append(" runs: ").append(counts.entrySet().stream()
+                .map(c -> c.getValue() + " " + c.getKey().label()).collect(Collectors.joining(", "))).append('\n');
+        return sb.toString();
+    }
+}

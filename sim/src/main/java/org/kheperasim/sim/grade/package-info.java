@@ -1,0 +1,10 @@
+/**
+ * Grading a class: every submission (one folder per student, {@code .java} or {@code .class}) is
+ * compiled, then run in every arena with every seed, each run in a child JVM with a heap limit, a
+ * simulated-time limit and a wall-clock limit, under the containment rules; the runs are scored by
+ * their arena's assignment ({@link org.kheperasim.sim.task.Score}) and reported as a table, CSV, JSON
+ * and an HTML page with a picture of each run's trajectory. A grading can be cut into deterministic
+ * shards ({@link org.kheperasim.sim.grade.GradePlan#shard}) that {@link org.kheperasim.sim.grade.ReportFiles}
+ * merges into the same report. Documented in {@code docs/grading.md}.
+ */
+package org.kheperasim.sim.grade;
