@@ -28,7 +28,7 @@ class ArchitectureTest {
     @Test
     void onlyTheWindowTouchesTheScreen() {
         noClasses().that().resideInAnyPackage("..sim.engine..", "..sim.host..", "..sim.run..", "..sim.trace..",
-                        "..sim.arena..", "..sim.edit..", "..sim.serve..", "..sim.replay..")
+                        "..sim.arena..", "..sim.edit..", "..sim.serve..", "..sim.replay..", "..sim.task..")
                 .should().dependOnClassesThat().resideInAnyPackage("java.awt..", "javax.swing..")
                 .because("the engine and everything it runs on work headless; only the gui package draws")
                 .check(sim);
@@ -62,7 +62,15 @@ class ArchitectureTest {
     void theArenaModelStandsAlone() {
         noClasses().that().resideInAPackage("..sim.arena..")
                 .should().dependOnClassesThat().resideInAnyPackage("..sim.engine..", "..sim.host..", "..sim.run..",
-                        "..sim.gui..", "..sim.cli..", "..sim.serve..", "..sim.edit..")
+                        "..sim.gui..", "..sim.cli..", "..sim.serve..", "..sim.edit..", "..sim.task..", "..sim.grade..")
+                .check(sim);
+    }
+
+    @Test
+    void scoringAndGradingStayBelowTheWindowAndTheCommandLine() {
+        noClasses().that().resideInAnyPackage("..sim.task..", "..sim.grade..")
+                .should().dependOnClassesThat().resideInAnyPackage("..sim.gui..", "..sim.cli..", "..sim.serve..")
+                .because("the window and the command line call the scoring and grading, never the other way round")
                 .check(sim);
     }
 

@@ -61,6 +61,7 @@ public final class Submissions {
             Path classes = folder;
             if (!sources.isEmpty()) {
                 classes = work.resolve("classes");
+                deleteTree(classes); // no class left over from an earlier grading into the same folder
                 ControllerCompiler.Result r = ControllerCompiler.compileAll(sources, classes);
                 if (!r.success()) {
                     String first = r.problems().stream().filter(ControllerCompiler.Problem::error).findFirst()
@@ -100,6 +101,17 @@ public final class Submissions {
                     + " (CurrentRobotState, MessagePasser) constructor, Controller, StepController or RobotController");
         }
         return new Submission(student, classes, found.get(0), null);
+    }
+
+    private static void deleteTree(Path folder) throws IOException {
+        if (!Files.exists(folder)) {
+            return;
+        }
+        try (Stream<Path> s = Files.walk(folder)) {
+            for (Path p : s.sorted(java.util.Comparator.reverseOrder()).toList()) {
+                Files.delete(p);
+            }
+        }
     }
 
     private static List<Path> files(Path folder, String suffix) throws IOException {

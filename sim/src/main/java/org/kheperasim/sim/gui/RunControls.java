@@ -41,7 +41,7 @@ final class RunControls implements SnapshotSource {
     private final TrailRecorder trail = new TrailRecorder();
     private volatile SeriesRecorder series = new SeriesRecorder();
     private volatile PacedRunner runner;
-    private volatile org.kheperasim.sim.run.TaskProgress progress;
+    private volatile org.kheperasim.sim.task.TaskProgress progress;
     private volatile Path runTrace;
     private Settings runSettings = Settings.defaults();
     private boolean stopNotePending;
@@ -83,7 +83,7 @@ final class RunControls implements SnapshotSource {
 
     /** @return the assignment's score so far in words, or null without a run or without tasks */
     String score() {
-        org.kheperasim.sim.run.TaskProgress p = progress;
+        org.kheperasim.sim.task.TaskProgress p = progress;
         if (runner == null || p == null) {
             return null;
         }
@@ -209,7 +209,7 @@ final class RunControls implements SnapshotSource {
         series = new SeriesRecorder();
         session.addListener(trail, TRAIL_PERIOD_NANOS);
         session.addListener(series, SERIES_PERIOD_NANOS);
-        org.kheperasim.sim.run.TaskProgress tasks = new org.kheperasim.sim.run.TaskProgress(model.arena());
+        org.kheperasim.sim.task.TaskProgress tasks = new org.kheperasim.sim.task.TaskProgress(model.arena());
         session.addListener(tasks, TRAIL_PERIOD_NANOS);
         progress = tasks;
         String own = robotControllers.describe(model.arena().robots().size());

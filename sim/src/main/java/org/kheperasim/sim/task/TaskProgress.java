@@ -1,4 +1,4 @@
-package org.kheperasim.sim.run;
+package org.kheperasim.sim.task;
 
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -8,8 +8,6 @@ import org.kheperasim.sim.engine.CapView;
 import org.kheperasim.sim.engine.RobotView;
 import org.kheperasim.sim.engine.Snapshot;
 import org.kheperasim.sim.engine.SnapshotListener;
-import org.kheperasim.sim.task.RunFacts;
-import org.kheperasim.sim.task.Score;
 
 /**
  * The assignment's score as a run goes, for the window, which must not touch the engine's thread:
