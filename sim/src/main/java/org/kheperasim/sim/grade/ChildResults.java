@@ -53,7 +53,10 @@ final class ChildResults {
                 }
             }
         }
-        if (failure == null && status != RunStatus.OK) {
+        if (status == RunStatus.EXCEEDED_MEMORY) {
+            // The heap watch or an OutOfMemoryError, depending on the collector's timing: one text for both.
+            failure = "controller " + controller + " allocated without bound and was stopped at the run's heap limit";
+        } else if (failure == null && status != RunStatus.OK) {
             failure = fault(err);
         }
         if (failure != null) {
