@@ -60,7 +60,7 @@ public final class ArenaFormat {
      * @throws ArenaFormatException naming the source and the line at fault
      */
     public static Arena parse(String text, String sourceName) {
-        return new ArenaParser(text, sourceName).parse();
+        return new ArenaParser(text, sourceName, null).parse();
     }
 
     /**
@@ -74,8 +74,9 @@ public final class ArenaFormat {
      */
     public static Arena load(Path file) {
         String source = file.toString();
-        return parse(TextFiles.readUtf8(file, ArenaLimits.MAX_FILE_BYTES, "arena file",
-                (line, what) -> new ArenaFormatException(source, line, what)), source);
+        String text = TextFiles.readUtf8(file, ArenaLimits.MAX_FILE_BYTES, "arena file",
+                (line, what) -> new ArenaFormatException(source, line, what));
+        return new ArenaParser(text, source, file.toAbsolutePath().getParent()).parse();
     }
 
     /**

@@ -2,10 +2,11 @@ package org.kheperasim.sim.arena;
 
 import static org.kheperasim.sim.arena.ArenaLimits.MAX_ANGLE_DEG;
 
+import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.HashMap;
 import java.util.List;
-import java.util.Locale;
 import java.util.Map;
 import java.util.function.Supplier;
 import java.util.regex.Pattern;
@@ -19,15 +20,14 @@ final class ArenaParser {
 
     private static final String FORMAT_NAME = "khepera-arena";
     private static final String VERSION = "1";
-    private static final String KEYWORDS = "name, size, robot, wall, light, cap, region, task, time-limit";
+    private static final String KEYWORDS = "name, size, wsu-world, robot, wall, light, cap, region, task, time-limit";
     private static final String LIGHT_KEYWORDS = "range, intensity, radius, direction, spread";
-    /** Possessive quantifiers: a long run of digits cannot make the match backtrack. */
-    static final Pattern NUMBER = Pattern.compile("[+-]?+(\\d++(\\.\\d*+)?+|\\.\\d++)([eE][+-]?+\\d++)?+");
-    private static final Pattern NOT_FINITE = Pattern.compile("[+-]?(nan|inf|infinity)", Pattern.CASE_INSENSITIVE);
     private static final Pattern LINE_BREAK = Pattern.compile("\r\n|\r|\n");
     private static final Pattern BLANKS = Pattern.compile("\\s+");
 
     private final String source;
+    private final Path folder;
+    private final TokenNumbers tokens;
     private final String[] lines;
     private int lineNo;
     private int headerLine;
@@ -51,9 +51,16 @@ final class ArenaParser {
     private final List<Integer> taskLines = new ArrayList<>();
     private double timeLimit;
     private int timeLimitLine;
+    private int worldLine;
+    private Pose worldRobot;
 
-    ArenaParser(String text, String source) {
+    /**
+     * @param folder the arena file's folder, for a {@code wsu-world} path; null for a text that is not a file
+     */
+    ArenaParser(String text, String source, Path folder) {
         this.source = source;
+        this.folder = folder;
+        this.tokens = new TokenNumbers(source);
         String t = text.startsWith("\uFEFF") ? text.substring(1) : text;
         this.lines = LINE_BREAK.split(t, -1);
     }
@@ -97,6 +104,10 @@ final class ArenaParser {
             throw error(headerLine, "no 'size' line; add 'size <width> <height>' in mm after the header,"
                     + " e.g. 'size 1219.2 1219.2'");
         }
+        if (robots.isEmpty() && worldRobot != null) {
+            robots.add(worldRobot); // the WSU world's start pose, unless the file gives its own
+            robotLines.add(worldLine);
+        }
         if (robots.isEmpty()) {
             throw error(headerLine, "no 'robot' line; add at least one start pose"
                     + " 'robot <x> <y> <heading>', e.g. 'robot 609.6 609.6 90'");
@@ -128,30 +139,24 @@ final class ArenaParser {
         switch (t[0]) {
             case "name" -> name(t);
             case "size" -> size(t);
+            case "wsu-world" -> world(t);
             case "robot" -> {
-                count(robots.size(), ArenaLimits.MAX_ROBOTS, "robots");
                 double[] n = numbers(t, 1, "robot needs x y heading (3 numbers: mm, mm, degrees)",
                         "x", "y", "heading");
                 angle("robot heading", n[2]);
-                robots.add(build(lineNo, () -> new Pose(n[0], n[1], n[2])));
-                robotLines.add(lineNo);
+                add(robots, robotLines, build(lineNo, () -> new Pose(n[0], n[1], n[2])), ArenaLimits.MAX_ROBOTS, "robots");
             }
             case "wall" -> {
-                count(walls.size(), ArenaLimits.MAX_WALLS, "walls");
                 double[] n = numbers(t, 1, "wall needs x1 y1 x2 y2 thickness (5 numbers, mm)",
                         "x1", "y1", "x2", "y2", "thickness");
                 atMost("wall thickness", n[4], ArenaLimits.MAX_WALL_THICKNESS_MM, "mm");
-                walls.add(build(lineNo, () -> new Wall(n[0], n[1], n[2], n[3], n[4])));
-                wallLines.add(lineNo);
+                add(walls, wallLines, build(lineNo, () -> new Wall(n[0], n[1], n[2], n[3], n[4])), ArenaLimits.MAX_WALLS, "walls");
             }
             case "light" -> light(t);
             case "cap" -> cap(t);
             case "region" -> region(t);
-            case "task" -> {
-                count(tasks.size(), Assignment.MAX_TASKS, "task lines");
-                tasks.add(build(lineNo, () -> TaskLines.parse(t, this::number)));
-                taskLines.add(lineNo);
-            }
+            case "task" -> add(tasks, taskLines, build(lineNo, () -> TaskLines.parse(t, this::number)), Assignment.MAX_TASKS,
+                    "task lines");
             case "time-limit" -> timeLimit(t);
             default -> throw error(lineNo, "unknown keyword '" + shorten(t[0]) + "'; valid keywords are " + KEYWORDS);
         }
@@ -169,6 +174,9 @@ final class ArenaParser {
     }
 
     private void size(String[] t) {
+        if (worldLine != 0) {
+            throw error(lineNo, "the wsu-world on line " + worldLine + " sets the size; remove this 'size' line");
+        }
         if (sizeLine != 0) {
             throw error(lineNo, "a second 'size' line (the first is on line " + sizeLine + "); keep one");
         }
@@ -185,7 +193,6 @@ final class ArenaParser {
     }
 
     private void light(String[] t) {
-        count(lights.size(), ArenaLimits.MAX_LIGHTS, "lights");
         if (t.length < 3) {
             throw error(lineNo, "light needs x y, then optional keyword-value pairs ("
                     + LIGHT_KEYWORDS + "), got " + (t.length - 1) + " values");
@@ -205,7 +212,7 @@ final class ArenaParser {
                 default -> -1;
             };
             if (k < 0) {
-                if (NUMBER.matcher(t[i]).matches()) {
+                if (TokenNumbers.NUMBER.matcher(t[i]).matches()) {
                     throw error(lineNo, "light has a number '" + shorten(t[i]) + "' where a keyword belongs;"
                             + " after x y write keyword-value pairs such as 'range 400' (" + LIGHT_KEYWORDS + ")");
                 }
@@ -225,14 +232,13 @@ final class ArenaParser {
         atMost("light intensity", opt[1], ArenaLimits.MAX_LIGHT_INTENSITY, "(1 is the standard lamp)");
         atMost("light radius", opt[2], ArenaLimits.MAX_LIGHT_RADIUS_MM, "mm");
         angle("light direction", opt[3]);
-        lights.add(build(lineNo, () -> new Light(x, y, opt[2], opt[0], opt[1], opt[3], opt[4])));
-        lightLines.add(lineNo);
+        add(lights, lightLines, build(lineNo, () -> new Light(x, y, opt[2], opt[0], opt[1], opt[3], opt[4])),
+                ArenaLimits.MAX_LIGHTS, "lights");
     }
 
     private void cap(String[] t) {
-        count(caps.size(), ArenaLimits.MAX_CAPS, "caps");
         String usage = "cap needs x y, optionally followed by 'radius <mm>'";
-        if (t.length == 5 && !t[3].equals("radius") && !NUMBER.matcher(t[3]).matches()) {
+        if (t.length == 5 && !t[3].equals("radius") && !TokenNumbers.NUMBER.matcher(t[3]).matches()) {
             throw error(lineNo, "unknown cap keyword '" + shorten(t[3]) + "'; the only cap keyword is radius");
         }
         if (t.length != 3 && !(t.length == 5 && t[3].equals("radius"))) {
@@ -242,8 +248,7 @@ final class ArenaParser {
         double y = number(t[2], "cap y");
         double r = t.length == 5 ? number(t[4], "cap radius") : Cap.DEFAULT_RADIUS;
         atMost("cap radius", r, ArenaLimits.MAX_CAP_RADIUS_MM, "mm");
-        caps.add(build(lineNo, () -> new Cap(x, y, r)));
-        capLines.add(lineNo);
+        add(caps, capLines, build(lineNo, () -> new Cap(x, y, r)), ArenaLimits.MAX_CAPS, "caps");
     }
 
     private void region(String[] t) {
@@ -280,6 +285,33 @@ final class ArenaParser {
         timeLimitLine = lineNo;
     }
 
+    /** {@code wsu-world PATH}: the world's size, walls, lamps and caps, and its start pose unless robot lines follow. */
+    private void world(String[] t) {
+        if (worldLine != 0 || sizeLine != 0) {
+            throw error(lineNo, worldLine != 0 ? "a second 'wsu-world' line (the first is on line " + worldLine
+                    + "); an arena builds on one world" : "wsu-world sets the size, and line " + sizeLine
+                    + " set it already; remove the 'size' line");
+        }
+        if (t.length < 2) {
+            throw error(lineNo, "wsu-world needs the path of a WSU world file, e.g. 'wsu-world maze'");
+        }
+        Arena w = WsuWorldBase.read(String.join(" ", Arrays.copyOfRange(t, 1, t.length)), folder, source, lineNo);
+        worldLine = lineNo;
+        sizeLine = lineNo;
+        width = w.width();
+        height = w.height();
+        worldRobot = w.robots().get(0);
+        w.walls().forEach(x -> add(walls, wallLines, x, ArenaLimits.MAX_WALLS, "walls"));
+        w.lights().forEach(x -> add(lights, lightLines, x, ArenaLimits.MAX_LIGHTS, "lights"));
+        w.caps().forEach(x -> add(caps, capLines, x, ArenaLimits.MAX_CAPS, "caps"));
+    }
+
+    private <T> void add(List<T> items, List<Integer> itemLines, T item, int max, String what) {
+        count(items.size(), max, what);
+        items.add(item);
+        itemLines.add(lineNo);
+    }
+
     private void checkTasks() {
         for (int i = 0; i < tasks.size(); i++) {
             String wrong = TaskLines.check(tasks.get(i), regions, caps.size());
@@ -311,33 +343,11 @@ final class ArenaParser {
 
     /** Parses {@code t[from..]} as exactly {@code fields.length} numbers. */
     private double[] numbers(String[] t, int from, String usage, String... fields) {
-        int count = t.length - from;
-        if (count != fields.length) {
-            throw error(lineNo, usage + ", got " + count + (count == 1 ? " value" : " values"));
-        }
-        double[] n = new double[count];
-        for (int i = 0; i < count; i++) {
-            n[i] = number(t[from + i], t[0] + " " + fields[i]);
-        }
-        return n;
+        return tokens.numbers(t, from, usage, lineNo, fields);
     }
 
     private double number(String token, String what) {
-        if (token.length() > ArenaLimits.MAX_NUMBER_CHARS) {
-            throw error(lineNo, what + " is '" + shorten(token) + "', longer than " + ArenaLimits.MAX_NUMBER_CHARS
-                    + " characters; write a decimal number such as 12.5");
-        }
-        if (NUMBER.matcher(token).matches()) {
-            double d = Double.parseDouble(token);
-            if (Double.isFinite(d)) {
-                return d;
-            }
-            throw error(lineNo, what + " is '" + shorten(token) + "', too large to be a number of mm; give a finite number");
-        }
-        if (NOT_FINITE.matcher(token).matches()) {
-            throw error(lineNo, what + " is '" + token + "'; give a finite number such as 12.5");
-        }
-        throw error(lineNo, what + " is '" + shorten(token) + "', not a number; write a decimal number such as 12.5");
+        return tokens.number(token, what, lineNo);
     }
 
     private void checkInside() {
@@ -364,31 +374,11 @@ final class ArenaParser {
     }
 
     private void inside(String what, double x, double y, int line) {
-        if (x < 0 || y < 0 || x > width || y > height) {
-            String w = Numbers.brief(width);
-            String h = Numbers.brief(height);
-            throw error(line, what + " at " + point(x, y) + " lies outside the " + w + " x " + h
-                    + " mm arena; keep x within 0..", w, " and y within 0..", h);
-        }
+        new ArenaBounds(source, width, height).inside(what, x, y, line);
     }
 
-    /**
-     * Refuses walls whose areas (length x thickness) add up to more than
-     * {@link ArenaLimits#MAX_WALL_AREA_RATIO} times the floor: drawing them would take too long.
-     */
     private void checkWallArea() {
-        double floor = width * height;
-        double total = 0;
-        for (int i = 0; i < walls.size(); i++) {
-            Wall w = walls.get(i);
-            total += (StrictMath.hypot(w.x2() - w.x1(), w.y2() - w.y1()) + w.thickness()) * w.thickness();
-            if (total > ArenaLimits.MAX_WALL_AREA_RATIO * floor) {
-                throw error(wallLines.get(i), String.format(Locale.ROOT, "the walls up to this one cover %.1f times"
-                        + " the floor's area (each wall counts (length + thickness) x thickness); at most %s times"
-                        + " is allowed, so remove walls that overlap or make them thinner", total / floor,
-                        Numbers.brief(ArenaLimits.MAX_WALL_AREA_RATIO)));
-            }
-        }
+        new ArenaBounds(source, width, height).wallArea(walls, wallLines);
     }
 
     private String nameFromSource() {
@@ -415,12 +405,7 @@ final class ArenaParser {
         return new ArenaFormatException(source, line, String.join("", what));
     }
 
-    /** A token as quoted in a message: at most 40 characters. */
     private static String shorten(String token) {
-        return token.length() <= 40 ? token : token.substring(0, 37) + "...";
-    }
-
-    private static String point(double x, double y) {
-        return "(" + Numbers.brief(x) + ", " + Numbers.brief(y) + ")";
+        return TokenNumbers.shorten(token);
     }
 }

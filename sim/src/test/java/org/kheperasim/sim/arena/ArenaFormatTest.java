@@ -144,7 +144,7 @@ class ArenaFormatTest {
                 bad("unsupported version", "khepera-arena 2\nsize 1000 1000\n", 1,
                         "expected 'khepera-arena 1', found version '2'"),
                 bad("unknown keyword", HEAD + "wal 0 0 10 10 8\n", 4,
-                        "unknown keyword 'wal'; valid keywords are name, size, robot, wall, light, cap, region, task, time-limit"),
+                        "unknown keyword 'wal'; valid keywords are name, size, wsu-world, robot, wall, light, cap, region, task, time-limit"),
                 bad("wall with 4 numbers", HEAD + "wall 0 0 10 10\n", 4,
                         "wall needs x1 y1 x2 y2 thickness (5 numbers, mm), got 4 values"),
                 bad("robot with 2 numbers", HEAD + "robot 1 2\n", 4, "robot needs x y heading"),

@@ -124,8 +124,8 @@ class ArenaLimitsTest {
         ArenaFormatException e = assertThrows(ArenaFormatException.class,
                 () -> ArenaFormat.parse(HEAD + "cap 10 " + digits + "\n", "digits.arena"));
         assertEquals(4, e.line());
-        assertTrue(ArenaParser.NUMBER.matcher("9".repeat(100_000)).matches());
-        assertTrue(!ArenaParser.NUMBER.matcher("9".repeat(100_000) + ".5e").matches());
+        assertTrue(TokenNumbers.NUMBER.matcher("9".repeat(100_000)).matches());
+        assertTrue(!TokenNumbers.NUMBER.matcher("9".repeat(100_000) + ".5e").matches());
     }
 
     @Test

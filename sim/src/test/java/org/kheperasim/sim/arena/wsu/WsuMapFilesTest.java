@@ -26,14 +26,23 @@ class WsuMapFilesTest {
 
     @BeforeAll
     static void findTheMaps() {
-        maps = Path.of(System.getProperty("kheperasim.repoRoot", "..")).resolve("../shared/wsu-maps").normalize();
-        if (!Files.isDirectory(maps)) {
+        maps = mapsFolder();
+    }
+
+    /**
+     * @return the folder of the real WSU world files; skips the calling test where it is absent,
+     *     and fails it under {@code CI=true}
+     */
+    static Path mapsFolder() {
+        Path folder = Path.of(System.getProperty("kheperasim.repoRoot", "..")).resolve("../shared/wsu-maps").normalize();
+        if (!Files.isDirectory(folder)) {
             if ("true".equals(System.getenv("CI"))) {
-                fail("the real WSU world files are not at " + maps.toAbsolutePath() + ", and CI=true requires"
+                fail("the real WSU world files are not at " + folder.toAbsolutePath() + ", and CI=true requires"
                         + " these tests to run: check out shared/ beside the repository");
             }
-            Assumptions.assumeTrue(false, "no real WSU world files at " + maps.toAbsolutePath());
+            Assumptions.assumeTrue(false, "no real WSU world files at " + folder.toAbsolutePath());
         }
+        return folder;
     }
 
     private final List<String> warnings = new ArrayList<>();
