@@ -118,6 +118,7 @@ final class ControllerChooser {
         offer(name);
         box.setSelectedItem(name);
         console.note("Controller " + name + " loaded from " + cp + ". Press Start.");
+        status.show("Controller " + name + " loaded. Press Start.", false);
     }
 
     void openJava() {

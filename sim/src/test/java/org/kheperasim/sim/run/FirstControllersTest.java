@@ -8,12 +8,11 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 import javax.tools.ToolProvider;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import org.kheperasim.sim.ReadmeSnippets;
 import org.kheperasim.sim.engine.Contact;
 import org.kheperasim.sim.engine.RobotView;
 
@@ -69,13 +68,8 @@ class FirstControllersTest {
 
     @Test
     void theReadmesFirstControllerCompilesFromTheReadmeAndIsNeverPinned() throws IOException {
-        Path root = Path.of(System.getProperty("kheperasim.repoRoot", ".."));
-        String readme = Files.readString(root.resolve("README.md"));
-        Matcher m = Pattern.compile("```java\\n(.*?public class MyFirst extends Controller.*?)```", Pattern.DOTALL).matcher(readme);
-        assertTrue(m.find(), "README.md shows MyFirst in a java block");
-        String source = m.group(1).lines().map(l -> l.startsWith("   ") ? l.substring(3) : l)
-                .reduce("", (a, b) -> a + b + "\n");
-        String quickStart = Files.readString(root.resolve("docs/quick-start.md"));
+        String source = ReadmeSnippets.firstController();
+        String quickStart = Files.readString(ReadmeSnippets.root().resolve("docs/quick-start.md"));
         assertTrue(quickStart.replaceAll("\\s+", " ").contains(source.replaceAll("\\s+", " ").strip()),
                 "docs/quick-start.md shows the same MyFirst as the README");
         Path file = dir.resolve("MyFirst.java");

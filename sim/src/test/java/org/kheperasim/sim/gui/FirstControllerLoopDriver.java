@@ -1,0 +1,138 @@
+package org.kheperasim.sim.gui;
+
+import java.awt.Point;
+import java.awt.Robot;
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
+import java.util.function.Supplier;
+import javax.swing.SwingUtilities;
+import org.kheperasim.sim.cli.Main;
+import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.run.PacedRunner;
+
+/**
+ * Runs in a child JVM under Xvfb (see {@link FirstControllerLoopTest}): a newcomer's first loop of
+ * write, compile, run, repeat. It opens MyFirst.java in the window (what Controller > Open .java
+ * does after the file dialog), runs it with F5, breaks the file and presses F10 (the console names
+ * the line), then changes the behaviour, presses F10 and F5, and sees the new behaviour.
+ */
+public final class FirstControllerLoopDriver {
+    private static Robot robot;
+    private static MainWindow w;
+
+    private FirstControllerLoopDriver() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        Path target = Path.of(args[0]);
+        Path source = Path.of(args[1]);
+        String original = Files.readString(source);
+        int code = Main.commandLine().execute("gui", "--arena", "lab", "--seed", "1");
+        check(code == 0, "the gui command returned " + code);
+        w = GuiLauncher.lastLaunched().get(20, TimeUnit.SECONDS);
+        robot = new Robot();
+        robot.setAutoDelay(20);
+        robot.waitForIdle();
+
+        // Compile and run.
+        check(onEdt(() -> w.compileAndUse(source)), "MyFirst.java compiles in the window:\n" + onEdt(w::consoleText));
+        check("MyFirst".equals(onEdt(w::controllerName)), "MyFirst is the chosen controller, not " + onEdt(w::controllerName));
+        focusArena();
+        onEdt(() -> {
+            w.chooseSpeed(PacedRunner.MAX_SPEED);
+            return null;
+        });
+        RobotView start = runFor(20);
+        RobotView after = w.runner().latest().robots().get(0);
+        double moved = Math.hypot(after.x() - start.x(), after.y() - start.y());
+        check(moved > 200, "MyFirst drives off: " + Math.round(moved) + " mm from the start in 20 s");
+        GuiE2EDriver.shot(robot, w, target.resolve("first-1-running.png"));
+        System.out.printf("RUN OK: MyFirst moved %.0f mm in 20 simulated s%n", moved);
+
+        // Repeat, with a mistake: the compiler's message names the file and the line.
+        Files.writeString(source, original.replace("setSpeeds(5, 5);", "setSpeeds(5, 5)"));
+        press(KeyEvent.VK_F10, "F10 recompiles", () -> onEdtQuiet(w::consoleText).contains("compiling MyFirst.java failed"));
+        String console = onEdt(w::consoleText);
+        int line = lineOf(original, "setSpeeds(5, 5);");
+        check(console.contains("MyFirst.java:" + line + ":"), "the console names line " + line + ":\n" + console);
+        System.out.println("ERROR OK: the console names MyFirst.java:" + line);
+
+        // Repeat, with a change: spin on the spot instead of driving ahead.
+        Files.writeString(source, original.replace("setSpeeds(5, 5);", "setSpeeds(-3, 3);"));
+        press(KeyEvent.VK_F10, "F10 recompiles the fix", () -> onEdtQuiet(w::consoleText).contains("Controller MyFirst loaded"));
+        RobotView again = runFor(20);
+        RobotView spun = w.runner().latest().robots().get(0);
+        double drift = Math.hypot(spun.x() - again.x(), spun.y() - again.y());
+        check(drift < 30, "the changed MyFirst spins on the spot: " + Math.round(drift) + " mm from the start");
+        check(Math.abs(spun.headingDeg() - again.headingDeg()) > 1, "and turns");
+        GuiE2EDriver.shot(robot, w, target.resolve("first-2-changed.png"));
+        System.out.printf("REPEAT OK: the changed MyFirst stayed within %.0f mm%n", drift);
+        System.exit(0);
+    }
+
+    /** Press F5 and let the run go to {@code seconds} of simulated time. @return the robot at the start */
+    private static RobotView runFor(double seconds) throws Exception {
+        press(KeyEvent.VK_F5, "F5 starts", () -> w.runner() != null && w.runner().state() == PacedRunner.State.RUNNING);
+        RobotView start = w.runner().latest().robots().get(0);
+        long until = System.nanoTime() + 60_000_000_000L;
+        while (w.runner().latest().timeSeconds() < seconds && System.nanoTime() < until) {
+            Thread.sleep(20);
+        }
+        check(w.runner().latest().timeSeconds() >= seconds, "the run reached " + seconds + " s");
+        press(KeyEvent.VK_F6, "F6 pauses", () -> w.runner().state() == PacedRunner.State.PAUSED);
+        return start;
+    }
+
+    private static void focusArena() throws Exception {
+        Point p = onEdt(() -> {
+            Point o = w.arenaComponent().getLocationOnScreen();
+            return new Point(o.x + 8, o.y + 8);
+        });
+        robot.mouseMove(p.x, p.y);
+        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
+        robot.waitForIdle();
+    }
+
+    private static int lineOf(String text, String what) {
+        return text.substring(0, text.indexOf(what)).split("\n", -1).length;
+    }
+
+    private static void press(int key, String what, BooleanSupplier done) throws Exception {
+        robot.keyPress(key);
+        robot.keyRelease(key);
+        robot.waitForIdle();
+        long until = System.nanoTime() + 30_000_000_000L;
+        while (!done.getAsBoolean() && System.nanoTime() < until) {
+            Thread.sleep(20);
+        }
+        check(done.getAsBoolean(), what + ": not done within 30 s");
+        System.out.println(what + ": ok");
+    }
+
+    private static <T> T onEdt(Supplier<T> s) throws Exception {
+        AtomicReference<T> ref = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> ref.set(s.get()));
+        return ref.get();
+    }
+
+    private static <T> T onEdtQuiet(Supplier<T> s) {
+        try {
+            return onEdt(s);
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    private static void check(boolean ok, String why) {
+        if (!ok) {
+            System.out.println("FAIL: " + why);
+            System.exit(1);
+        }
+    }
+}
