@@ -43,20 +43,15 @@ public class LightFollower extends Controller {
     private int beacons;
     /** Steps (50 ms) for which the light is not followed: the robot has just reached a beacon. */
     private int leaving;
-    // Odometry (as in MazeExplorer): where the robot is, and where the beacons it passed were.
-    private double x;
-    private double y;
-    private double heading;
-    private int lastLeft;
-    private int lastRight;
+    /** Dead reckoning from the encoders: where the robot is, to remember where the beacons it passed were. */
+    private Odometry odometry;
     private double brightestX;
     private double brightestY;
     private final java.util.List<double[]> passed = new java.util.ArrayList<>();
 
     @Override
     protected void setup() {
-        lastLeft = leftPosition();
-        lastRight = rightPosition();
+        odometry = new Odometry(0, 0, 0, leftPosition(), rightPosition());
     }
 
     @Override
@@ -82,7 +77,7 @@ public class LightFollower extends Controller {
             print("under the goal's lamp (light " + dimmest + ") after " + beacons + " beacons; stopping here");
             return;
         }
-        odometry();
+        odometry.update(leftPosition(), rightPosition());
         countBeacons(dimmest);
         int left = prox.value(IrSensor.LEFT_90);
         int left45 = prox.value(IrSensor.LEFT_45);
@@ -122,8 +117,8 @@ public class LightFollower extends Controller {
     private void countBeacons(int dimmest) {
         if (dimmest < brightest) {
             brightest = dimmest;
-            brightestX = x;
-            brightestY = y;
+            brightestX = odometry.x();
+            brightestY = odometry.y();
         } else if (brightest < DARK - 3 * SEE && dimmest > brightest + 2 * SEE) {
             beacons++;
             passed.add(new double[] {brightestX, brightestY});
@@ -134,10 +129,10 @@ public class LightFollower extends Controller {
 
     /** @param bearingDeg a light's direction, degrees left of ahead @return true if a beacon already passed lies that way, near */
     private boolean passedLies(double bearingDeg) {
-        double toward = heading + StrictMath.toRadians(bearingDeg);
+        double toward = odometry.heading() + StrictMath.toRadians(bearingDeg);
         for (double[] b : passed) {
-            double dx = b[0] - x;
-            double dy = b[1] - y;
+            double dx = b[0] - odometry.x();
+            double dy = b[1] - odometry.y();
             if (StrictMath.hypot(dx, dy) < 350) {
                 double off = StrictMath.abs(StrictMath.IEEEremainder(StrictMath.atan2(dy, dx) - toward, 2 * StrictMath.PI));
                 if (off < StrictMath.toRadians(60)) {
@@ -146,19 +141,5 @@ public class LightFollower extends Controller {
             }
         }
         return false;
-    }
-
-    /** Dead reckoning from the encoders (0.08 mm per pulse, wheels 53 mm apart). */
-    private void odometry() {
-        int l = leftPosition();
-        int r = rightPosition();
-        double dl = (l - lastLeft) * 0.08;
-        double dr = (r - lastRight) * 0.08;
-        lastLeft = l;
-        lastRight = r;
-        double turn = (dr - dl) / 53.0;
-        x += (dl + dr) / 2 * StrictMath.cos(heading + turn / 2);
-        y += (dl + dr) / 2 * StrictMath.sin(heading + turn / 2);
-        heading += turn;
     }
 }

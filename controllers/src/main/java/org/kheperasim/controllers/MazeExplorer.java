@@ -25,9 +25,6 @@ import org.kheperasim.api.SensorFilter;
 public class MazeExplorer extends Controller {
     /** The maze's cell, mm (the bundled mazes: a fifth of 4 ft). */
     static final double CELL_MM = 243.84;
-    /** Wheel travel per encoder pulse, mm, and the distance between the wheels, mm. */
-    private static final double MM_PER_PULSE = 0.08;
-    private static final double WHEEL_BASE_MM = 53.0;
 
     /** Cruising speed, units (1 unit = 8 mm/s). */
     private static final int CRUISE = 7;
@@ -44,18 +41,14 @@ public class MazeExplorer extends Controller {
 
     private final SensorFilter prox = new SensorFilter();
     private final Set<Long> visited = new HashSet<>();
-    private double x = CELL_MM / 2;
-    private double y = CELL_MM / 2;
-    private double heading = StrictMath.PI / 2;
-    private int lastLeft;
-    private int lastRight;
+    /** Where it is, by the encoders, from the middle of its start cell facing up the maze. */
+    private Odometry odometry;
     private int stalled;
     private int lost;
 
     @Override
     protected void setup() {
-        lastLeft = leftPosition();
-        lastRight = rightPosition();
+        odometry = new Odometry(CELL_MM / 2, CELL_MM / 2, StrictMath.PI / 2, leftPosition(), rightPosition());
         enterCell();
     }
 
@@ -65,7 +58,7 @@ public class MazeExplorer extends Controller {
         int left = prox.value(IrSensor.LEFT_90);
         int left45 = prox.value(IrSensor.LEFT_45);
         int front = StrictMath.max(prox.value(IrSensor.FRONT_LEFT), prox.value(IrSensor.FRONT_RIGHT));
-        boolean moved = odometry();
+        boolean moved = track();
         if (stalled >= 10) {
             // Half a second of wheels turning without going anywhere: back off and turn right.
             setSpeeds(-4, -4);
@@ -73,7 +66,7 @@ public class MazeExplorer extends Controller {
             setSpeeds(4, -4);
             sleepMillis(300);
             stalled = 0;
-            odometry();
+            track();
             return;
         }
         if (front > FRONT_BLOCKED || left45 > 800) {
@@ -99,24 +92,15 @@ public class MazeExplorer extends Controller {
     }
 
     /** Dead reckoning from the encoders. @return true if the wheels moved since the last call */
-    private boolean odometry() {
-        int l = leftPosition();
-        int r = rightPosition();
-        double dl = (l - lastLeft) * MM_PER_PULSE;
-        double dr = (r - lastRight) * MM_PER_PULSE;
-        lastLeft = l;
-        lastRight = r;
-        double turn = (dr - dl) / WHEEL_BASE_MM;
-        x += (dl + dr) / 2 * StrictMath.cos(heading + turn / 2);
-        y += (dl + dr) / 2 * StrictMath.sin(heading + turn / 2);
-        heading += turn;
+    private boolean track() {
+        odometry.update(leftPosition(), rightPosition());
         enterCell();
-        return StrictMath.abs(dl) + StrictMath.abs(dr) > 0.8;
+        return odometry.lastStep() > 0.8;
     }
 
     private void enterCell() {
-        long col = (long) StrictMath.floor(x / CELL_MM);
-        long row = (long) StrictMath.floor(y / CELL_MM);
+        long col = (long) StrictMath.floor(odometry.x() / CELL_MM);
+        long row = (long) StrictMath.floor(odometry.y() / CELL_MM);
         if (visited.add(col << 32 ^ (row & 0xFFFFFFFFL))) {
             print("entered cell (" + col + ", " + row + ") by odometry; " + visited.size() + " cells so far");
         }
