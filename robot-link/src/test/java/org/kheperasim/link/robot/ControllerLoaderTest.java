@@ -19,7 +19,7 @@ class ControllerLoaderTest {
 
     @Test
     void bundledNamesAreTheSimulators() {
-        assertEquals(List.of("WallFollower", "Braitenberg", "Template", "CapGatherer", "StepBraitenberg", "Aggregation"),
+        assertEquals(List.of("WallFollower", "Braitenberg", "Template", "CapGatherer", "MazeExplorer", "LightFollower", "StepBraitenberg", "Aggregation"),
                 ControllerLoader.bundled());
         assertEquals("org.kheperasim.controllers.Braitenberg", new ControllerLoader(List.of()).load("Braitenberg").getName());
     }
