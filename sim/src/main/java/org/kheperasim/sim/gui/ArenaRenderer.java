@@ -1,8 +1,8 @@
 package org.kheperasim.sim.gui;
 
-import org.kheperasim.sim.edit.ArenaCheck;
 import org.kheperasim.sim.edit.EditorModel;
 import org.kheperasim.sim.edit.Item;
+import org.kheperasim.sim.edit.ItemHits;
 import java.awt.AlphaComposite;
 import java.awt.BasicStroke;
 import java.awt.Color;
@@ -37,7 +37,7 @@ import org.kheperasim.sim.engine.Snapshot;
  * Draws an arena and a snapshot of a run into a {@link Graphics2D}: floor, regions, lamps, walls,
  * caps, trails, robots with their heading, gripper and sensor beams, the editor's selection and
  * handles. The Swing view only hosts this call, so drawing is testable into a BufferedImage.
- * Hit-testing sits here too, next to the shapes it tests against.
+ * Hit-testing against the same shapes is {@link ItemHits}.
  */
 public final class ArenaRenderer {
     /** Colours, public so tests can look for them. */
@@ -62,7 +62,7 @@ public final class ArenaRenderer {
     static final Color LED_ON = new Color(0xFFE030);
     private static final Color LED_OFF = new Color(0x1E5A38);
     /** Distance of the heading handle ahead of a robot's centre, mm. */
-    static final double HEADING_HANDLE_MM = 45;
+    static final double HEADING_HANDLE_MM = ItemHits.HEADING_HANDLE_MM;
 
     /**
      * What to draw besides the model.
@@ -90,15 +90,6 @@ public final class ArenaRenderer {
     public record Overlay(Set<Item> selection, double[] band, double[] refused, List<float[]> trails) {
         /** Nothing over the picture. */
         public static final Overlay NONE = new Overlay(Set.of(), null, null, null);
-    }
-
-    /**
-     * A handle of a selected item.
-     *
-     * @param item the item
-     * @param which 0 or 1: a wall's ends; 2: a robot's heading
-     */
-    public record Handle(Item item, int which) {
     }
 
     private ArenaRenderer() {
@@ -407,73 +398,5 @@ public final class ArenaRenderer {
 
     private static Ellipse2D circle(ViewTransform view, double x, double y, double r) {
         return new Ellipse2D.Double(view.sx(x - r), view.sy(y + r), view.len(2 * r), view.len(2 * r));
-    }
-
-    /**
-     * The topmost item at a point: robots, then caps, lamps, walls (the order they are drawn in,
-     * reversed).
-     *
-     * @param a the arena
-     * @param x mm
-     * @param y mm
-     * @param tol extra tolerance, mm
-     * @return the item, or null
-     */
-    public static Item hit(Arena a, double x, double y, double tol) {
-        for (int i = a.robots().size() - 1; i >= 0; i--) {
-            Pose p = a.robots().get(i);
-            if (StrictMath.hypot(x - p.x(), y - p.y()) <= Arena.ROBOT_RADIUS_MM + tol) {
-                return new Item(Item.Kind.ROBOT, i);
-            }
-        }
-        for (int i = a.caps().size() - 1; i >= 0; i--) {
-            Cap c = a.caps().get(i);
-            if (StrictMath.hypot(x - c.x(), y - c.y()) <= c.radius() + tol) {
-                return new Item(Item.Kind.CAP, i);
-            }
-        }
-        for (int i = a.lights().size() - 1; i >= 0; i--) {
-            Light l = a.lights().get(i);
-            if (StrictMath.hypot(x - l.x(), y - l.y()) <= l.radius() + tol) {
-                return new Item(Item.Kind.LIGHT, i);
-            }
-        }
-        for (int i = a.walls().size() - 1; i >= 0; i--) {
-            Wall w = a.walls().get(i);
-            if (ArenaCheck.segmentDistance(x, y, w) <= w.thickness() / 2 + tol) {
-                return new Item(Item.Kind.WALL, i);
-            }
-        }
-        return null;
-    }
-
-    /**
-     * The handle of a selected item at a point: a wall's end, a robot's heading.
-     *
-     * @return the handle, or null
-     */
-    public static Handle handleAt(Arena a, Set<Item> selection, double x, double y, double tol) {
-        for (Item it : selection) {
-            if (!EditorModel.exists(a, it)) {
-                continue;
-            }
-            if (it.kind() == Item.Kind.WALL) {
-                Wall w = a.walls().get(it.index());
-                if (StrictMath.hypot(x - w.x1(), y - w.y1()) <= tol) {
-                    return new Handle(it, 0);
-                }
-                if (StrictMath.hypot(x - w.x2(), y - w.y2()) <= tol) {
-                    return new Handle(it, 1);
-                }
-            } else if (it.kind() == Item.Kind.ROBOT) {
-                Pose p = a.robots().get(it.index());
-                double hx = p.x() + HEADING_HANDLE_MM * StrictMath.cos(StrictMath.toRadians(p.headingDeg()));
-                double hy = p.y() + HEADING_HANDLE_MM * StrictMath.sin(StrictMath.toRadians(p.headingDeg()));
-                if (StrictMath.hypot(x - hx, y - hy) <= tol) {
-                    return new Handle(it, 2);
-                }
-            }
-        }
-        return null;
     }
 }

@@ -3,6 +3,7 @@ package org.kheperasim.sim.gui;
 import org.kheperasim.sim.edit.ArenaEdits;
 import org.kheperasim.sim.edit.EditorModel;
 import org.kheperasim.sim.edit.Item;
+import org.kheperasim.sim.edit.ItemHits;
 import java.util.List;
 import java.util.Set;
 import org.kheperasim.sim.arena.Arena;
@@ -30,7 +31,7 @@ public final class EditGestures {
     private Mode mode = Mode.NONE;
     private double pressX;
     private double pressY;
-    private ArenaRenderer.Handle handle;
+    private ItemHits.Handle handle;
     private double[] band;
     private double[] refusedAt;
 
@@ -81,12 +82,12 @@ public final class EditGestures {
         pressY = y;
         switch (tool) {
             case SELECT -> {
-                handle = ArenaRenderer.handleAt(a, model.selection(), x, y, tol);
+                handle = ItemHits.handleAt(a, model.selection(), x, y, tol);
                 if (handle != null) {
                     mode = handle.which() == 2 ? Mode.ROTATE : Mode.RESIZE;
                     return;
                 }
-                Item it = ArenaRenderer.hit(a, x, y, tol);
+                Item it = ItemHits.hit(a, x, y, tol);
                 if (it == null) {
                     if (!shift) {
                         model.select(List.of());

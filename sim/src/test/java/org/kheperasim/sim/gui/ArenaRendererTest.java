@@ -1,6 +1,7 @@
 package org.kheperasim.sim.gui;
 
 import org.kheperasim.sim.edit.Item;
+import org.kheperasim.sim.edit.ItemHits;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -111,12 +112,12 @@ class ArenaRendererTest {
     @Test
     void hitTestingFindsWhatIsDrawn() {
         Arena a = arena();
-        assertEquals(new Item(Item.Kind.WALL, 0), ArenaRenderer.hit(a, 500, 805, 2));
-        assertEquals(new Item(Item.Kind.CAP, 0), ArenaRenderer.hit(a, 205, 195, 2));
-        assertEquals(new Item(Item.Kind.ROBOT, 0), ArenaRenderer.hit(a, 510, 310, 2));
-        assertNull(ArenaRenderer.hit(a, 500, 600, 2));
-        assertEquals(new ArenaRenderer.Handle(new Item(Item.Kind.WALL, 0), 1),
-                ArenaRenderer.handleAt(a, Set.of(new Item(Item.Kind.WALL, 0)), 799, 801, 5));
+        assertEquals(new Item(Item.Kind.WALL, 0), ItemHits.hit(a, 500, 805, 2));
+        assertEquals(new Item(Item.Kind.CAP, 0), ItemHits.hit(a, 205, 195, 2));
+        assertEquals(new Item(Item.Kind.ROBOT, 0), ItemHits.hit(a, 510, 310, 2));
+        assertNull(ItemHits.hit(a, 500, 600, 2));
+        assertEquals(new ItemHits.Handle(new Item(Item.Kind.WALL, 0), 1),
+                ItemHits.handleAt(a, Set.of(new Item(Item.Kind.WALL, 0)), 799, 801, 5));
     }
 
     @Test
