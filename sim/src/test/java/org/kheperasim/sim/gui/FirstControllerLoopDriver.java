@@ -1,16 +1,12 @@
 package org.kheperasim.sim.gui;
 
-import java.awt.Point;
 import java.awt.Robot;
-import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
-import javax.swing.SwingUtilities;
 import org.kheperasim.sim.cli.Main;
 import org.kheperasim.sim.engine.RobotView;
 import org.kheperasim.sim.run.PacedRunner;
@@ -89,14 +85,7 @@ public final class FirstControllerLoopDriver {
     }
 
     private static void focusArena() throws Exception {
-        Point p = onEdt(() -> {
-            Point o = w.arenaComponent().getLocationOnScreen();
-            return new Point(o.x + 8, o.y + 8);
-        });
-        robot.mouseMove(p.x, p.y);
-        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
-        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        robot.waitForIdle();
+        KeyBindingsDriverSupport.clickCorner(robot, w.arenaComponent());
     }
 
     private static int lineOf(String text, String what) {
@@ -116,9 +105,7 @@ public final class FirstControllerLoopDriver {
     }
 
     private static <T> T onEdt(Supplier<T> s) throws Exception {
-        AtomicReference<T> ref = new AtomicReference<>();
-        SwingUtilities.invokeAndWait(() -> ref.set(s.get()));
-        return ref.get();
+        return KeyBindingsDriverSupport.onEdt(s);
     }
 
     private static <T> T onEdtQuiet(Supplier<T> s) {

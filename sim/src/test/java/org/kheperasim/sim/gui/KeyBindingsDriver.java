@@ -7,7 +7,6 @@ import java.awt.Robot;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
 import javax.swing.SwingUtilities;
 import org.kheperasim.sim.cli.Main;
@@ -36,15 +35,7 @@ public final class KeyBindingsDriver {
         Thread.sleep(500);
         for (String focus : new String[] {"arena", "consoleText"}) {
             Component target = focus.equals("arena") ? w.arenaComponent() : onEdt(() -> find(w.frame(), focus));
-            // A click near the target's corner puts the focus there.
-            Point p = onEdt(() -> {
-                Point o = target.getLocationOnScreen();
-                return new Point(o.x + 8, o.y + 8);
-            });
-            robot.mouseMove(p.x, p.y);
-            robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
-            robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-            robot.waitForIdle();
+            KeyBindingsDriverSupport.clickCorner(robot, target);
             String owner = onEdt(() -> {
                 Component c = java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner();
                 return c == null ? "nothing" : c.getClass().getSimpleName() + "/" + c.getName();
@@ -170,24 +161,11 @@ public final class KeyBindingsDriver {
     }
 
     private static Component find(Container root, String name) {
-        for (Component c : root.getComponents()) {
-            if (name.equals(c.getName())) {
-                return c;
-            }
-            if (c instanceof Container k) {
-                Component f = find(k, name);
-                if (f != null) {
-                    return f;
-                }
-            }
-        }
-        return null;
+        return KeyBindingsDriverSupport.find(root, name);
     }
 
     private static <T> T onEdt(java.util.function.Supplier<T> s) throws Exception {
-        AtomicReference<T> ref = new AtomicReference<>();
-        SwingUtilities.invokeAndWait(() -> ref.set(s.get()));
-        return ref.get();
+        return KeyBindingsDriverSupport.onEdt(s);
     }
 
     private static void fail(String why) {
