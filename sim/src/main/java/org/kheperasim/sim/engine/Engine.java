@@ -138,6 +138,11 @@ public final class Engine {
         this.endNanos = endNanos;
     }
 
+    /** @return where {@link #advance()} stops, ns (set by {@link #setEnd}) */
+    public long endNanos() {
+        return endNanos;
+    }
+
     /**
      * Advance the world until a driver must run, or until the end set by {@link #setEnd} is
      * reached or every driver has ended. Whoever holds the turn calls this, the engine's owner or a
