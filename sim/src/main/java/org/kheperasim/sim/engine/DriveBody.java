@@ -175,6 +175,23 @@ final class DriveBody {
     }
 
     /**
+     * The counters only of {@link #preview}: {@code out[4]} and {@code out[5]}, with the same
+     * arithmetic, without the arc's trigonometry.
+     */
+    void previewCounters(long ticks, double[] out) {
+        if (ticks == 0 || still()) {
+            out[4] = encoderLeft;
+            out[5] = encoderRight;
+            return;
+        }
+        double dt = ticks * TICK_S;
+        double common = (wheelLeft * dt + wheelRight * dt) * 0.5;
+        double diff = diff(ticks);
+        out[4] = encoderLeft + (common - diff) / mmPerPulse;
+        out[5] = encoderRight + (common + diff) / mmPerPulse;
+    }
+
+    /**
      * Drive one tick with contact handling: a move into a wall or lamp goes only as far as the
      * contact and stops translating (the turn still happens, and the wheels' common motion stalls);
      * caps give way when they can, and one that cannot blocks the robot like a wall.
@@ -353,7 +370,8 @@ final class DriveBody {
 
     /** @return the 32-bit counter's value for a wheel travel of {@code count} pulses (it wraps like the robot's) */
     static int pulses(double count) {
-        return (int) (long) StrictMath.floor(count);
+        // Math.floor is exact (as StrictMath.floor), and an intrinsic.
+        return (int) (long) Math.floor(count);
     }
 
     // ------------------------------------------------------------------ views

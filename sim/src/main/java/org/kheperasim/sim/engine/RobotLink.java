@@ -41,6 +41,20 @@ final class RobotLink {
         /** Sample the light sensors now into {@code out}. */
         void sampleLight(int[] out);
 
+        /**
+         * Take the light sensors' sample for the poll cycle: into {@code out}, or, when the reply's
+         * length is known without the values (darkness), later ({@link #fillLight}).
+         *
+         * @return -1 when {@code out} holds the values, else the sample's key for {@link #fillLight}
+         */
+        long pollLight(int[] out);
+
+        /** @return the reply characters of the eight values of a deferred light sample */
+        int deferredLightChars();
+
+        /** The values of the deferred light sample {@code key}, the same as if taken at once. */
+        void fillLight(long key, int[] out);
+
         /** @return the robot's left counter for the sample being taken, pulses */
         int sampleCounterLeft();
 
@@ -68,6 +82,9 @@ final class RobotLink {
     private final int[][] visible = new int[CYCLE.length][];
     private final long[] deliverAt = new long[CYCLE.length];
     private final boolean[] pending = new boolean[CYCLE.length];
+    /** A step's sample (and its visible values) whose values are still to be computed: its key, or -1. */
+    private final long[] sampledKey = new long[CYCLE.length];
+    private final long[] visibleKey = new long[CYCLE.length];
 
     /** Wire time of a poll step's command and turnaround, per step; and of a line of n characters. */
     private final long[] commandNanos = new long[CYCLE.length];
@@ -86,6 +103,8 @@ final class RobotLink {
             int n = CYCLE[k] == PollStep.ENCODERS ? 2 : IrSensor.COUNT;
             sampled[k] = new int[n];
             visible[k] = new int[n];
+            sampledKey[k] = -1;
+            visibleKey[k] = -1;
         }
     }
 
@@ -206,9 +225,16 @@ final class RobotLink {
             if (pending[k]) {
                 deliver(k);
             }
-            take(CYCLE[k], sampled[k]);
             // The reply is as long as the values it carries.
-            int chars = LinkTiming.replyChars(CYCLE[k], sampled[k]);
+            int chars;
+            if (k == LIGHT && (sampledKey[k] = robot.pollLight(sampled[k])) >= 0) {
+                chars = 1 + IrSensor.COUNT + 2 + robot.deferredLightChars();
+            } else {
+                if (k != LIGHT) {
+                    take(CYCLE[k], sampled[k]);
+                }
+                chars = LinkTiming.replyChars(CYCLE[k], sampled[k]);
+            }
             deliverAt[k] = sampleAt + (chars < lineNanos.length ? lineNanos[chars] : timing.wireNanos(chars));
             pending[k] = true;
             step = k + 1 == CYCLE.length ? 0 : k + 1;
@@ -235,7 +261,10 @@ final class RobotLink {
     }
 
     private void deliver(int k) {
-        System.arraycopy(sampled[k], 0, visible[k], 0, sampled[k].length);
+        visibleKey[k] = sampledKey[k];
+        if (visibleKey[k] < 0) {
+            System.arraycopy(sampled[k], 0, visible[k], 0, sampled[k].length);
+        }
         pending[k] = false;
     }
 
@@ -243,6 +272,10 @@ final class RobotLink {
     private int[] seen(int k, long now) {
         if (pending[k] && deliverAt[k] <= now - Math.floorMod(now, Engine.TICK_NANOS)) {
             deliver(k);
+        }
+        if (visibleKey[k] >= 0) {
+            robot.fillLight(visibleKey[k], visible[k]);
+            visibleKey[k] = -1;
         }
         return visible[k];
     }

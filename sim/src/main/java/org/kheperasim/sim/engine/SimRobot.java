@@ -45,6 +45,14 @@ public final class SimRobot implements RobotLink.Robot {
     private long nextHardDue;
     /** Where the robot is for the sample being taken: x, y, cos, sin, left and right encoder. */
     private final double[] sense = new double[6];
+    /**
+     * The sample being taken falls this many ticks into the present move; its pose and counters
+     * are computed only when a sample needs them (a light sample in the dark and an encoder sample
+     * need no trigonometry, and most need no pose at all).
+     */
+    private long senseTicks;
+    private boolean poseKnown;
+    private boolean countersKnown;
 
     /**
      * @param id the robot's index in the engine
@@ -78,7 +86,7 @@ public final class SimRobot implements RobotLink.Robot {
         this.bodies = world.bodies();
         this.unseenMm = SensorPlacement.REACH_MM + model.proximity().profile().rangeMm() + 1;
         this.link = new RobotLink(model.link().timing(), this);
-        body.preview(0, sense);
+        senseAt(0);
         link.prime();
     }
 
@@ -98,7 +106,7 @@ public final class SimRobot implements RobotLink.Robot {
             return;
         }
         link.commandsDue(now);
-        body.preview(0, sense);
+        senseAt(0);
         link.pollDue(now);
         long due = StrictMath.min(link.nextCommandDue(), body.noiseDue(now));
         nextHardDue = StrictMath.min(due, onBoard.due(now));
@@ -170,7 +178,7 @@ public final class SimRobot implements RobotLink.Robot {
                 if (at >= endNanos) {
                     break;
                 }
-                body.preview((at - start) / Engine.TICK_NANOS, sense);
+                senseAt((at - start) / Engine.TICK_NANOS);
                 link.pollDue(at);
                 due = link.nextPollDue();
             }
@@ -200,13 +208,13 @@ public final class SimRobot implements RobotLink.Robot {
 
     /** Sample the proximity sensors where the robot is now. */
     void readProximityNow(int[] out) {
-        body.preview(0, sense);
+        senseAt(0);
         sampleProximity(out);
     }
 
     /** Sample the light sensors where the robot is now. */
     void readLightNow(int[] out) {
-        body.preview(0, sense);
+        senseAt(0);
         sampleLight(out);
     }
 
@@ -246,24 +254,69 @@ public final class SimRobot implements RobotLink.Robot {
         gripper.moveFingers(now, closed ? GripperState.CLOSED : GripperState.OPEN);
     }
 
+    /** Samples from now on are taken {@code ticks} ticks into the present move (before it is made). */
+    private void senseAt(long ticks) {
+        senseTicks = ticks;
+        poseKnown = false;
+        countersKnown = false;
+    }
+
+    private void knowPose() {
+        if (!poseKnown) {
+            body.preview(senseTicks, sense);
+            poseKnown = true;
+            countersKnown = true;
+        }
+    }
+
+    private void knowCounters() {
+        if (!countersKnown) {
+            body.previewCounters(senseTicks, sense);
+            countersKnown = true;
+        }
+    }
+
     @Override
     public void sampleProximity(int[] out) {
+        knowPose();
         proximity.sample(sense[0], sense[1], sense[2], sense[3], proximitySamples++, out);
         coverage.mark(sense[0], sense[1]);
     }
 
     @Override
     public void sampleLight(int[] out) {
+        knowPose();
         light.sample(sense[0], sense[1], sense[2], sense[3], lightSamples++, out);
     }
 
     @Override
+    public long pollLight(int[] out) {
+        if (light.deferDark() >= 0) {
+            return lightSamples++;
+        }
+        sampleLight(out);
+        return -1;
+    }
+
+    @Override
+    public int deferredLightChars() {
+        return light.deferDark();
+    }
+
+    @Override
+    public void fillLight(long key, int[] out) {
+        light.fillDark(key, out);
+    }
+
+    @Override
     public int sampleCounterLeft() {
+        knowCounters();
         return DriveBody.pulses(sense[4]);
     }
 
     @Override
     public int sampleCounterRight() {
+        knowCounters();
         return DriveBody.pulses(sense[5]);
     }
 
