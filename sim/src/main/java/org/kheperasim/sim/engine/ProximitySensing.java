@@ -26,6 +26,11 @@ final class ProximitySensing {
     private final SensorPlacement placement;
     private final ProximityProfile profile;
     private final double range;
+    /**
+     * Every beam of a sensor lies in the disc of this radius whose centre is this far ahead of the
+     * sensor (the circle through the sensor and the outermost beams' ends), mm.
+     */
+    private final double coneMid;
     private final double[] rayCos = new double[RAY_ANGLES_DEG.length];
     private final double[] raySin = new double[RAY_ANGLES_DEG.length];
     private final double[] reflectance;
@@ -59,6 +64,7 @@ final class ProximitySensing {
         double reading = model.noise().reading();
         this.profile = p.profile();
         this.range = profile.rangeMm();
+        this.coneMid = range / (2 * StrictMath.cos(StrictMath.toRadians(RAY_ANGLES_DEG[RAY_ANGLES_DEG.length - 1])));
         for (int r = 0; r < RAY_ANGLES_DEG.length; r++) {
             rayCos[r] = StrictMath.cos(StrictMath.toRadians(RAY_ANGLES_DEG[r]));
             raySin[r] = StrictMath.sin(StrictMath.toRadians(RAY_ANGLES_DEG[r]));
@@ -91,11 +97,12 @@ final class ProximitySensing {
         // Caps are not in the distance field: bound the beams' empty stretch by the nearest cap too.
         double capFree = caps.count() == 0 ? Double.POSITIVE_INFINITY
                 : caps.nearestSurface(robotX, robotY) - SensorPlacement.REACH_MM;
-        // Nothing within range of any sensor: every beam is empty (the clearance estimate is within
-        // NEAR_MM above the true one, and no sensor is farther than REACH_MM from the centre).
         gatherRobots(robotX, robotY);
-        boolean open = capFree >= range && near == 0
-                && field.clearance(robotX, robotY) - DriveBody.NEAR_MM - SensorPlacement.REACH_MM >= range;
+        // Only walls and lamps within any beam's reach: the distance field alone can prove a beam empty.
+        boolean wallsOnly = capFree >= range && near == 0;
+        // Nothing within range of any sensor: every beam is empty (no sensor is farther than
+        // REACH_MM from the centre, and the field's lower bound of the clearance is exceeded).
+        boolean open = wallsOnly && field.clearanceBelow(robotX, robotY) - SensorPlacement.REACH_MM > range;
         if (!open) {
             placement.place(robotX, robotY, c, s);
         }
@@ -109,6 +116,11 @@ final class ProximitySensing {
             double dx = placement.dx[i];
             double dy = placement.dy[i];
             double raw = 0;
+            if (wallsOnly && field.clearanceBelow(px + coneMid * dx, py + coneMid * dy) > coneMid) {
+                // Every beam of this sensor lies in a disc the field proves empty.
+                out[i] = reading(i, 0, sample);
+                continue;
+            }
             double free = field.clearance(px, py);
             if (capFree < free) {
                 free = StrictMath.min(free, capsAhead(px, py, dx, dy));
@@ -117,7 +129,7 @@ final class ProximitySensing {
                 free = StrictMath.min(free, robotsFrom(px, py));
             }
             if (free < range) {
-                raw = beams(px, py, dx, dy, StrictMath.max(0, free - DriveBody.NEAR_MM));
+                raw = beams(px, py, dx, dy, StrictMath.max(0, free - DriveBody.NEAR_MM), wallsOnly);
             }
             out[i] = reading(i, raw, sample);
         }
@@ -141,7 +153,7 @@ final class ProximitySensing {
      * The strongest beam response; nothing lies nearer than {@code skip} (the clearance less the
      * estimate's error), so the beams start there instead of walking the empty cells.
      */
-    private double beams(double px, double py, double dx, double dy, double skip) {
+    private double beams(double px, double py, double dx, double dy, double skip, boolean wallsOnly) {
         double raw = 0;
         for (int r = 0; r < rayCos.length; r++) {
             // A hit beyond `reach` could not beat the strongest response so far: march no farther.
@@ -153,6 +165,9 @@ final class ProximitySensing {
             double rx = dx * rayCos[r] - dy * raySin[r];
             double ry = dy * rayCos[r] + dx * raySin[r];
             double limit = StrictMath.min(range, reach);
+            if (wallsOnly && empty(px, py, rx, ry, skip, limit)) {
+                continue;
+            }
             double d = skip + grid.castRay(px + skip * rx, py + skip * ry, rx, ry, limit - skip, hit);
             double reflect = d == Double.POSITIVE_INFINITY ? 0 : reflectanceOf(hit.id);
             if (near > 0) {
@@ -170,6 +185,27 @@ final class ProximitySensing {
             }
         }
         return raw;
+    }
+
+    /**
+     * Does the distance field prove the beam from (px, py) along (rx, ry) empty between
+     * {@code from} and {@code to} (sphere tracing: every disc the field proves empty lets the beam
+     * on by its radius)? The grid march then has nothing to find, so skipping it changes nothing.
+     * Near an obstacle it gives up (false) and the march decides.
+     */
+    private boolean empty(double px, double py, double rx, double ry, double from, double to) {
+        double t = from;
+        for (int k = 0; k < 4; k++) {
+            double b = field.clearanceBelow(px + t * rx, py + t * ry);
+            if (b <= OccupancyGrid.CELL_MM) {
+                return false;
+            }
+            t += b;
+            if (t > to) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
