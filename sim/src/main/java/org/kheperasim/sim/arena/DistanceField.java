@@ -22,12 +22,14 @@ public final class DistanceField {
     /** Padded width and height: the grid plus one obstacle cell on every side. */
     private final int pw;
     private final int ph;
-    /**
-     * While the field is computed, the squared distance in cells from each padded cell's centre to
-     * its nearest obstacle centre; afterwards (as {@code float} bits) the lower bound of the
-     * clearance that {@link #clearanceBelow} returns for a point in that cell, mm.
-     */
+    /** Squared distance in cells from each padded cell's centre to its nearest obstacle centre. */
     private final int[] dist2;
+    /**
+     * For each padded cell, the lower bound of the clearance that {@link #clearanceBelow} returns
+     * for a point in it, in steps of {@link #BELOW_STEP_MM} (unsigned, saturating): a byte, so that
+     * the table is a quarter of the grid's size and stays in the cache.
+     */
+    private final byte[] below;
     /**
      * Padded column and row of each padded cell's nearest obstacle cell, packed as
      * {@code row << 16 | col} (a grid has fewer than 65,534 columns), so reading them takes no division.
@@ -51,6 +53,7 @@ public final class DistanceField {
                     + grid.cols() + " x " + grid.rows());
         }
         this.dist2 = new int[pw * ph];
+        this.below = new byte[pw * ph];
         this.nearest = new int[pw * ph];
         int n = Math.max(pw, ph);
         this.f = new int[n];
@@ -102,7 +105,8 @@ public final class DistanceField {
             }
         }
         for (int i = 0; i < dist2.length; i++) {
-            dist2[i] = Float.floatToRawIntBits((float) (Math.sqrt(dist2[i]) * OccupancyGrid.CELL_MM - BELOW_MARGIN_MM));
+            double bound = Math.sqrt(dist2[i]) * OccupancyGrid.CELL_MM - BELOW_MARGIN_MM;
+            below[i] = (byte) StrictMath.max(0, StrictMath.min(255, (int) Math.floor(bound / BELOW_STEP_MM)));
         }
     }
 
@@ -137,7 +141,8 @@ public final class DistanceField {
      *
      * @param x point, mm
      * @param y point, mm
-     * @return a lower bound of the clearance, mm (may be negative near an obstacle); 0 outside the grid
+     * @return a lower bound of the clearance, mm, at most 255 steps of {@link #BELOW_STEP_MM} (about
+     *     155 mm); 0 outside the grid
      */
     public double clearanceBelow(double x, double y) {
         int c = (int) Math.floor(x * INV_CELL);
@@ -146,12 +151,14 @@ public final class DistanceField {
             return 0;
         }
         // The point may lie a rounding error outside cell (c, r): the hair covers that too.
-        return Float.intBitsToFloat(dist2[(r + 1) * pw + c + 1]);
+        return (below[(r + 1) * pw + c + 1] & 0xFF) * BELOW_STEP_MM;
     }
 
     private static final double INV_CELL = 1 / OccupancyGrid.CELL_MM;
-    /** Two half diagonals of a cell, and 0.02 mm for rounding (to float, among others). */
-    private static final double BELOW_MARGIN_MM = StrictMath.sqrt(2) * OccupancyGrid.CELL_MM + 0.02;
+    /** Two half diagonals of a cell, and 0.01 mm for rounding. */
+    private static final double BELOW_MARGIN_MM = StrictMath.sqrt(2) * OccupancyGrid.CELL_MM + 0.01;
+    /** The unit of {@link #below}: a quarter cell, mm. */
+    private static final double BELOW_STEP_MM = OccupancyGrid.CELL_MM / 4;
 
     /**
      * Like {@link #clearance}, but takes the nearest obstacle of the point's cell and of its eight
