@@ -122,18 +122,26 @@ public final class SimRobot implements RobotLink.Robot {
     }
 
     /**
+     * @param wanted how many ticks the caller would glide at most
      * @return how many ticks the robot can glide from here along its arc with nothing to touch and
-     *     no region to enter on the way (0: the next tick must be stepped with contact handling)
+     *     no region to enter on the way (0: the next tick must be stepped with contact handling), or
+     *     any number of at least {@code wanted} when it can glide that far
      */
-    long glideTicks() {
+    long glideTicks(long wanted) {
         if (model.stepping() == RobotModel.Stepping.TICK || gripper.busy()) {
             return 0;
         }
         if (body.still()) {
             return Long.MAX_VALUE;
         }
-        double free = StrictMath.min(StrictMath.min(body.freeTravelMm(), othersFreeTravelMm()),
+        double others = StrictMath.min(othersFreeTravelMm(),
                 StrictMath.min(capContacts.freeTravelMm(body.x(), body.y()), coverage.freeTravelMm(body.x(), body.y())));
+        // The body's clearance is looked up only when its cheap lower bound does not already allow the glide wanted.
+        long ticks = glideTicksFor(StrictMath.min(body.freeTravelAtLeastMm(), others));
+        return ticks >= wanted ? ticks : glideTicksFor(StrictMath.min(body.freeTravelMm(), others));
+    }
+
+    private long glideTicksFor(double free) {
         double ticks = (free - 1e-6) / body.travelPerTickMm();
         return ticks >= 1 ? (long) StrictMath.min(ticks, 1e15) : 0;
     }
