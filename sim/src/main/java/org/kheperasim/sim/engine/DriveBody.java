@@ -53,8 +53,11 @@ final class DriveBody {
     private int collisions;
     private double distance;
 
-    // The last arc's turn and its trigonometry, reused while the turn per move does not change.
+    // The last arc's turn and its trigonometry, reused while the turn per move does not change: the
+    // half turn's (for the chord) and the whole turn's (for the heading) apart, as a sample's
+    // position may be wanted without its heading.
     private double lastTurn = Double.NaN;
+    private double lastFullTurn = Double.NaN;
     private double halfCos = 1;
     private double halfSin;
     private double fullCos = 1;
@@ -171,26 +174,40 @@ final class DriveBody {
      * left encoder, right encoder} into {@code out}. The engine samples sensors inside a glide this way.
      */
     void preview(long ticks, double[] out) {
+        previewPosition(ticks, out);
+        previewHeading(ticks, out);
+    }
+
+    /** The position and counters of {@link #preview} ({@code out[0, 1, 4, 5]}), without the heading's trigonometry. */
+    void previewPosition(long ticks, double[] out) {
         if (ticks == 0 || still()) {
             out[0] = x;
             out[1] = y;
-            out[2] = cos;
-            out[3] = sin;
             out[4] = encoderLeft;
             out[5] = encoderRight;
             return;
         }
-        double common = arc(ticks);
+        double common = halfArc(ticks);
         double diff = diff(ticks);
+        out[0] = x + common * chord * (cos * halfCos - sin * halfSin);
+        out[1] = y + common * chord * (sin * halfCos + cos * halfSin);
+        out[4] = encoderLeft + (common - diff) / mmPerPulse;
+        out[5] = encoderRight + (common + diff) / mmPerPulse;
+    }
+
+    /** The heading of {@link #preview} ({@code out[2, 3]}). */
+    void previewHeading(long ticks, double[] out) {
+        if (ticks == 0 || still()) {
+            out[2] = cos;
+            out[3] = sin;
+            return;
+        }
+        fullArc(turn(ticks));
         double c = cos * fullCos - sin * fullSin;
         double s = sin * fullCos + cos * fullSin;
         double n = 1.0 / StrictMath.sqrt(c * c + s * s);
-        out[0] = x + common * chord * (cos * halfCos - sin * halfSin);
-        out[1] = y + common * chord * (sin * halfCos + cos * halfSin);
         out[2] = c * n;
         out[3] = s * n;
-        out[4] = encoderLeft + (common - diff) / mmPerPulse;
-        out[5] = encoderRight + (common + diff) / mmPerPulse;
     }
 
     /**
@@ -302,6 +319,13 @@ final class DriveBody {
 
     /** Set up the arc of {@code ticks} ticks; returns the centre's path length (signed), mm. */
     private double arc(long ticks) {
+        double common = halfArc(ticks);
+        fullArc(lastTurn);
+        return common;
+    }
+
+    /** The half of {@link #arc} that places the centre: the half turn's trigonometry and the chord. */
+    private double halfArc(long ticks) {
         double dt = ticks * TICK_S;
         double dl = wheelLeft * dt;
         double dr = wheelRight * dt;
@@ -310,11 +334,24 @@ final class DriveBody {
             lastTurn = turn;
             halfCos = cosOf(turn * 0.5);
             halfSin = sinOf(turn * 0.5);
-            fullCos = cosOf(turn);
-            fullSin = sinOf(turn);
             chord = turn == 0 ? 1 : halfSin / (turn * 0.5);
         }
         return (dl + dr) * 0.5;
+    }
+
+    /** The whole turn's trigonometry, for the heading. */
+    private void fullArc(double turn) {
+        if (turn != lastFullTurn) {
+            lastFullTurn = turn;
+            fullCos = cosOf(turn);
+            fullSin = sinOf(turn);
+        }
+    }
+
+    /** The turn of an arc of {@code ticks} ticks, rad (as {@link #halfArc} computes it). */
+    private double turn(long ticks) {
+        double dt = ticks * TICK_S;
+        return (wheelRight * dt - wheelLeft * dt) / Khepera.WHEEL_BASE_MM;
     }
 
     private double diff(long ticks) {

@@ -51,6 +51,9 @@ final class ProximitySensing {
     private double[] nearX = new double[4];
     private double[] nearY = new double[4];
     private int near;
+    /** What {@link #open} found for the sample being taken: the nearest cap's surface less the sensors' reach, and whether only walls and lamps are within reach. */
+    private double capFree;
+    private boolean wallsOnly;
 
     ProximitySensing(World world, int self, SensorPlacement placement, RobotModel model, Miscalibration calibration,
             CounterNoise[] noise) {
@@ -94,23 +97,43 @@ final class ProximitySensing {
      * @param out receives the eight readings, 0..1023
      */
     void sample(double robotX, double robotY, double c, double s, long sample, int[] out) {
+        if (open(robotX, robotY)) {
+            sampleOpen(sample, out);
+        } else {
+            sampleNear(robotX, robotY, c, s, sample, out);
+        }
+    }
+
+    /**
+     * Look around a robot's centre before a sample: is nothing within reach of any beam (all the
+     * readings are then those of {@link #sampleOpen}, and the heading is not needed)? Otherwise
+     * {@link #sampleNear} takes the sample, with what this found.
+     */
+    boolean open(double robotX, double robotY) {
         // Caps are not in the distance field: bound the beams' empty stretch by the nearest cap too.
-        double capFree = caps.count() == 0 ? Double.POSITIVE_INFINITY
+        capFree = caps.count() == 0 ? Double.POSITIVE_INFINITY
                 : caps.nearestSurface(robotX, robotY) - SensorPlacement.REACH_MM;
         gatherRobots(robotX, robotY);
         // Only walls and lamps within any beam's reach: the distance field alone can prove a beam empty.
-        boolean wallsOnly = capFree >= range && near == 0;
+        wallsOnly = capFree >= range && near == 0;
         // Nothing within range of any sensor: every beam is empty (no sensor is farther than
         // REACH_MM from the centre, and the field's lower bound of the clearance is exceeded).
-        boolean open = wallsOnly && field.clearanceBelow(robotX, robotY) - SensorPlacement.REACH_MM > range;
-        if (!open) {
-            placement.place(robotX, robotY, c, s);
-        }
+        return wallsOnly && field.clearanceBelow(robotX, robotY) - SensorPlacement.REACH_MM > range;
+    }
+
+    /** The readings of a sample where {@link #open} found nothing in reach: no beam response, only noise. */
+    void sampleOpen(long sample, int[] out) {
         for (int i = 0; i < IrSensor.COUNT; i++) {
-            if (open) {
-                out[i] = reading(i, 0, sample);
-                continue;
-            }
+            out[i] = reading(i, 0, sample);
+        }
+    }
+
+    /** A sample where {@link #open} (just called at this centre) found something within reach. */
+    void sampleNear(double robotX, double robotY, double c, double s, long sample, int[] out) {
+        double capFree = this.capFree;
+        boolean wallsOnly = this.wallsOnly;
+        placement.place(robotX, robotY, c, s);
+        for (int i = 0; i < IrSensor.COUNT; i++) {
             double px = placement.x[i];
             double py = placement.y[i];
             double dx = placement.dx[i];

@@ -51,7 +51,8 @@ public final class SimRobot implements RobotLink.Robot {
      * need no trigonometry, and most need no pose at all).
      */
     private long senseTicks;
-    private boolean poseKnown;
+    private boolean positionKnown;
+    private boolean headingKnown;
     private boolean countersKnown;
 
     /**
@@ -265,15 +266,24 @@ public final class SimRobot implements RobotLink.Robot {
     /** Samples from now on are taken {@code ticks} ticks into the present move (before it is made). */
     private void senseAt(long ticks) {
         senseTicks = ticks;
-        poseKnown = false;
+        positionKnown = false;
+        headingKnown = false;
         countersKnown = false;
     }
 
-    private void knowPose() {
-        if (!poseKnown) {
-            body.preview(senseTicks, sense);
-            poseKnown = true;
+    private void knowPosition() {
+        if (!positionKnown) {
+            body.previewPosition(senseTicks, sense);
+            positionKnown = true;
             countersKnown = true;
+        }
+    }
+
+    private void knowPose() {
+        knowPosition();
+        if (!headingKnown) {
+            body.previewHeading(senseTicks, sense);
+            headingKnown = true;
         }
     }
 
@@ -286,8 +296,13 @@ public final class SimRobot implements RobotLink.Robot {
 
     @Override
     public void sampleProximity(int[] out) {
-        knowPose();
-        proximity.sample(sense[0], sense[1], sense[2], sense[3], proximitySamples++, out);
+        knowPosition();
+        if (proximity.open(sense[0], sense[1])) {
+            proximity.sampleOpen(proximitySamples++, out);
+        } else {
+            knowPose();
+            proximity.sampleNear(sense[0], sense[1], sense[2], sense[3], proximitySamples++, out);
+        }
         coverage.mark(sense[0], sense[1]);
     }
 
