@@ -53,16 +53,8 @@ final class DriveBody {
     private int collisions;
     private double distance;
 
-    // The last arc's turn and its trigonometry, reused while the turn per move does not change: the
-    // half turn's (for the chord) and the whole turn's (for the heading) apart, as a sample's
-    // position may be wanted without its heading.
-    private double lastTurn = Double.NaN;
-    private double lastFullTurn = Double.NaN;
-    private double halfCos = 1;
-    private double halfSin;
-    private double fullCos = 1;
-    private double fullSin;
-    private double chord = 1;
+    /** The last arc's trigonometry, reused while the turn per move does not change. */
+    private final ArcTrig trig = new ArcTrig();
 
     DriveBody(World world, int self, double x, double y, double headingDeg, RobotModel.Motors motors, double readingNoise,
             double calibrationLeft, double calibrationRight, CounterNoise noiseLeft, CounterNoise noiseRight) {
@@ -160,9 +152,9 @@ final class DriveBody {
             return;
         }
         double common = arc(ticks);
-        double nx = x + common * chord * (cos * halfCos - sin * halfSin);
-        double ny = y + common * chord * (sin * halfCos + cos * halfSin);
-        turnAndMove(nx, ny, cos * fullCos - sin * fullSin, sin * fullCos + cos * fullSin);
+        double nx = x + common * trig.chord * (cos * trig.halfCos - sin * trig.halfSin);
+        double ny = y + common * trig.chord * (sin * trig.halfCos + cos * trig.halfSin);
+        turnAndMove(nx, ny, cos * trig.fullCos - sin * trig.fullSin, sin * trig.fullCos + cos * trig.fullSin);
         clearanceKnown = false;
         count(common, diff(ticks), 1);
         blocked = false;
@@ -170,50 +162,38 @@ final class DriveBody {
     }
 
     /**
-     * Where a glide of {@code ticks} ticks from here would end, without moving: {x, y, cos, sin,
-     * left encoder, right encoder} into {@code out}. The engine samples sensors inside a glide this way.
+     * Where a glide of {@code ticks} ticks from here would end, without moving: the position and
+     * counters {x, y, -, -, left encoder, right encoder} into {@code out} (the heading is
+     * {@link #previewHeading}'s). The engine samples sensors inside a glide this way.
      */
-    void preview(long ticks, double[] out) {
-        previewPosition(ticks, out);
-        previewHeading(ticks, out);
-    }
-
-    /** The position and counters of {@link #preview} ({@code out[0, 1, 4, 5]}), without the heading's trigonometry. */
     void previewPosition(long ticks, double[] out) {
+        previewCounters(ticks, out);
         if (ticks == 0 || still()) {
             out[0] = x;
             out[1] = y;
-            out[4] = encoderLeft;
-            out[5] = encoderRight;
             return;
         }
         double common = halfArc(ticks);
-        double diff = diff(ticks);
-        out[0] = x + common * chord * (cos * halfCos - sin * halfSin);
-        out[1] = y + common * chord * (sin * halfCos + cos * halfSin);
-        out[4] = encoderLeft + (common - diff) / mmPerPulse;
-        out[5] = encoderRight + (common + diff) / mmPerPulse;
+        out[0] = x + common * trig.chord * (cos * trig.halfCos - sin * trig.halfSin);
+        out[1] = y + common * trig.chord * (sin * trig.halfCos + cos * trig.halfSin);
     }
 
-    /** The heading of {@link #preview} ({@code out[2, 3]}). */
+    /** The heading at the end of a glide of {@code ticks} ticks, {cos, sin} into {@code out[2, 3]}. */
     void previewHeading(long ticks, double[] out) {
         if (ticks == 0 || still()) {
             out[2] = cos;
             out[3] = sin;
             return;
         }
-        fullArc(turn(ticks));
-        double c = cos * fullCos - sin * fullSin;
-        double s = sin * fullCos + cos * fullSin;
+        trig.full(turn(ticks));
+        double c = cos * trig.fullCos - sin * trig.fullSin;
+        double s = sin * trig.fullCos + cos * trig.fullSin;
         double n = 1.0 / StrictMath.sqrt(c * c + s * s);
         out[2] = c * n;
         out[3] = s * n;
     }
 
-    /**
-     * The counters only of {@link #preview}: {@code out[4]} and {@code out[5]}, with the same
-     * arithmetic, without the arc's trigonometry.
-     */
+    /** The counters of {@link #previewPosition} ({@code out[4, 5]}), without the arc's trigonometry. */
     void previewCounters(long ticks, double[] out) {
         if (ticks == 0 || still()) {
             out[4] = encoderLeft;
@@ -240,9 +220,9 @@ final class DriveBody {
         }
         double common = arc(1);
         double diff = diff(1);
-        double stepLen = common * chord;
-        double midCos = cos * halfCos - sin * halfSin;
-        double midSin = sin * halfCos + cos * halfSin;
+        double stepLen = common * trig.chord;
+        double midCos = cos * trig.halfCos - sin * trig.halfSin;
+        double midSin = sin * trig.halfCos + cos * trig.halfSin;
         double nx = x + stepLen * midCos;
         double ny = y + stepLen * midSin;
         double newClearance = clearanceAt(nx, ny);
@@ -276,8 +256,8 @@ final class DriveBody {
                 nowBlocked = true;
             }
         }
-        double c = cos * fullCos - sin * fullSin;
-        double s = sin * fullCos + cos * fullSin;
+        double c = cos * trig.fullCos - sin * trig.fullSin;
+        double s = sin * trig.fullCos + cos * trig.fullSin;
         caps.clearBlocking();
         if (caps.near(nx, ny)) {
             double tx = nx - x;
@@ -320,7 +300,7 @@ final class DriveBody {
     /** Set up the arc of {@code ticks} ticks; returns the centre's path length (signed), mm. */
     private double arc(long ticks) {
         double common = halfArc(ticks);
-        fullArc(lastTurn);
+        trig.full(trig.turn());
         return common;
     }
 
@@ -329,23 +309,8 @@ final class DriveBody {
         double dt = ticks * TICK_S;
         double dl = wheelLeft * dt;
         double dr = wheelRight * dt;
-        double turn = (dr - dl) / Khepera.WHEEL_BASE_MM;
-        if (turn != lastTurn) {
-            lastTurn = turn;
-            halfCos = cosOf(turn * 0.5);
-            halfSin = sinOf(turn * 0.5);
-            chord = turn == 0 ? 1 : halfSin / (turn * 0.5);
-        }
+        trig.half((dr - dl) / Khepera.WHEEL_BASE_MM);
         return (dl + dr) * 0.5;
-    }
-
-    /** The whole turn's trigonometry, for the heading. */
-    private void fullArc(double turn) {
-        if (turn != lastFullTurn) {
-            lastFullTurn = turn;
-            fullCos = cosOf(turn);
-            fullSin = sinOf(turn);
-        }
     }
 
     /** The turn of an arc of {@code ticks} ticks, rad (as {@link #halfArc} computes it). */
@@ -389,24 +354,6 @@ final class DriveBody {
     private Contact sideOf(double obstacleX, double obstacleY) {
         double rel = StrictMath.atan2(obstacleY - y, obstacleX - x) - StrictMath.atan2(sin, cos);
         return Contact.ofAngle(rel);
-    }
-
-    /** sin of a turn: a Taylor series exact to double precision for |a| ≤ 0.1, else {@link StrictMath}. */
-    private static double sinOf(double a) {
-        if (StrictMath.abs(a) > 0.1) {
-            return StrictMath.sin(a);
-        }
-        double a2 = a * a;
-        return a * (1 - a2 / 6 * (1 - a2 / 20 * (1 - a2 / 42 * (1 - a2 / 72))));
-    }
-
-    /** cos of a turn; see {@link #sinOf}. */
-    private static double cosOf(double a) {
-        if (StrictMath.abs(a) > 0.1) {
-            return StrictMath.cos(a);
-        }
-        double a2 = a * a;
-        return 1 - a2 / 2 * (1 - a2 / 12 * (1 - a2 / 30 * (1 - a2 / 56 * (1 - a2 / 90))));
     }
 
     // ------------------------------------------------------------------ the robot's own counters

@@ -43,17 +43,8 @@ public final class SimRobot implements RobotLink.Robot {
     /** Simulated time the robot has been moved to, ns. */
     private long movedTo;
     private long nextHardDue;
-    /** Where the robot is for the sample being taken: x, y, cos, sin, left and right encoder. */
-    private final double[] sense = new double[6];
-    /**
-     * The sample being taken falls this many ticks into the present move; its pose and counters
-     * are computed only when a sample needs them (a light sample in the dark and an encoder sample
-     * need no trigonometry, and most need no pose at all).
-     */
-    private long senseTicks;
-    private boolean positionKnown;
-    private boolean headingKnown;
-    private boolean countersKnown;
+    /** Where the robot is for the sample being taken. */
+    private final SamplePose sense;
 
     /**
      * @param id the robot's index in the engine
@@ -77,6 +68,7 @@ public final class SimRobot implements RobotLink.Robot {
         Miscalibration calibration = new Miscalibration(model, systematic);
         this.body = new DriveBody(world, id, start.x(), start.y(), start.headingDeg(), model.motors(),
                 model.noise().reading(), calibration.calibrationLeft, calibration.calibrationRight, motorLeft, motorRight);
+        this.sense = new SamplePose(body);
         this.proximity = new ProximitySensing(world, id, placement, model, calibration, proxNoise);
         this.light = new LightSensing(world, placement, model, calibration, lightNoise);
         this.gripper = new GripperModel(id, world, body, model.gripper());
@@ -87,7 +79,7 @@ public final class SimRobot implements RobotLink.Robot {
         this.bodies = world.bodies();
         this.unseenMm = SensorPlacement.REACH_MM + model.proximity().profile().rangeMm() + 1;
         this.link = new RobotLink(model.link().timing(), this);
-        senseAt(0);
+        sense.at(0);
         link.prime();
     }
 
@@ -107,7 +99,7 @@ public final class SimRobot implements RobotLink.Robot {
             return;
         }
         link.commandsDue(now);
-        senseAt(0);
+        sense.at(0);
         link.pollDue(now);
         long due = StrictMath.min(link.nextCommandDue(), body.noiseDue(now));
         nextHardDue = StrictMath.min(due, onBoard.due(now));
@@ -187,7 +179,7 @@ public final class SimRobot implements RobotLink.Robot {
                 if (at >= endNanos) {
                     break;
                 }
-                senseAt((at - start) / Engine.TICK_NANOS);
+                sense.at((at - start) / Engine.TICK_NANOS);
                 link.pollDue(at);
                 due = link.nextPollDue();
             }
@@ -217,13 +209,13 @@ public final class SimRobot implements RobotLink.Robot {
 
     /** Sample the proximity sensors where the robot is now. */
     void readProximityNow(int[] out) {
-        senseAt(0);
+        sense.at(0);
         sampleProximity(out);
     }
 
     /** Sample the light sensors where the robot is now. */
     void readLightNow(int[] out) {
-        senseAt(0);
+        sense.at(0);
         sampleLight(out);
     }
 
@@ -263,53 +255,22 @@ public final class SimRobot implements RobotLink.Robot {
         gripper.moveFingers(now, closed ? GripperState.CLOSED : GripperState.OPEN);
     }
 
-    /** Samples from now on are taken {@code ticks} ticks into the present move (before it is made). */
-    private void senseAt(long ticks) {
-        senseTicks = ticks;
-        positionKnown = false;
-        headingKnown = false;
-        countersKnown = false;
-    }
-
-    private void knowPosition() {
-        if (!positionKnown) {
-            body.previewPosition(senseTicks, sense);
-            positionKnown = true;
-            countersKnown = true;
-        }
-    }
-
-    private void knowPose() {
-        knowPosition();
-        if (!headingKnown) {
-            body.previewHeading(senseTicks, sense);
-            headingKnown = true;
-        }
-    }
-
-    private void knowCounters() {
-        if (!countersKnown) {
-            body.previewCounters(senseTicks, sense);
-            countersKnown = true;
-        }
-    }
-
     @Override
     public void sampleProximity(int[] out) {
-        knowPosition();
-        if (proximity.open(sense[0], sense[1])) {
+        double[] at = sense.position();
+        if (proximity.open(at[0], at[1])) {
             proximity.sampleOpen(proximitySamples++, out);
         } else {
-            knowPose();
-            proximity.sampleNear(sense[0], sense[1], sense[2], sense[3], proximitySamples++, out);
+            at = sense.pose();
+            proximity.sampleNear(at[0], at[1], at[2], at[3], proximitySamples++, out);
         }
-        coverage.mark(sense[0], sense[1]);
+        coverage.mark(at[0], at[1]);
     }
 
     @Override
     public void sampleLight(int[] out) {
-        knowPose();
-        light.sample(sense[0], sense[1], sense[2], sense[3], lightSamples++, out);
+        double[] at = sense.pose();
+        light.sample(at[0], at[1], at[2], at[3], lightSamples++, out);
     }
 
     @Override
@@ -333,14 +294,12 @@ public final class SimRobot implements RobotLink.Robot {
 
     @Override
     public int sampleCounterLeft() {
-        knowCounters();
-        return DriveBody.pulses(sense[4]);
+        return DriveBody.pulses(sense.counters()[4]);
     }
 
     @Override
     public int sampleCounterRight() {
-        knowCounters();
-        return DriveBody.pulses(sense[5]);
+        return DriveBody.pulses(sense.counters()[5]);
     }
 
     // ------------------------------------------------------------------ the controller's side (through the link)
