@@ -226,14 +226,17 @@ final class RobotLink {
                 deliver(k);
             }
             // The reply is as long as the values it carries.
+            int[] values = sampled[k];
             int chars;
-            if (k == LIGHT && (sampledKey[k] = robot.pollLight(sampled[k])) >= 0) {
-                chars = 1 + IrSensor.COUNT + 2 + robot.deferredLightChars();
+            if (k == PROXIMITY) {
+                robot.sampleProximity(values);
+                chars = readingsReplyChars(values);
+            } else if (k == LIGHT) {
+                sampledKey[k] = robot.pollLight(values);
+                chars = sampledKey[k] >= 0 ? 1 + IrSensor.COUNT + 2 + robot.deferredLightChars() : readingsReplyChars(values);
             } else {
-                if (k != LIGHT) {
-                    take(CYCLE[k], sampled[k]);
-                }
-                chars = LinkTiming.replyChars(CYCLE[k], sampled[k]);
+                take(CYCLE[k], values);
+                chars = LinkTiming.replyChars(CYCLE[k], values);
             }
             deliverAt[k] = sampleAt + (chars < lineNanos.length ? lineNanos[chars] : timing.wireNanos(chars));
             pending[k] = true;
@@ -245,6 +248,18 @@ final class RobotLink {
     /** @return when the poll cycle's next sample is taken, ns ({@link Long#MAX_VALUE}: not polling) */
     long nextPollDue() {
         return polling ? sampleAt : Long.MAX_VALUE;
+    }
+
+    /** {@link LinkTiming#replyChars} of eight sensor readings (0..1023), counted without a loop per digit. */
+    private static int readingsReplyChars(int[] values) {
+        int chars = 1 + values.length + 2;
+        for (int v : values) {
+            if (v < 0 || v > 9999) {
+                return LinkTiming.replyChars(PollStep.PROXIMITY, values);
+            }
+            chars += SensorPlacement.digits(v);
+        }
+        return chars;
     }
 
     /** Take a step's sample on the robot now. */
@@ -263,7 +278,10 @@ final class RobotLink {
     private void deliver(int k) {
         visibleKey[k] = sampledKey[k];
         if (visibleKey[k] < 0) {
-            System.arraycopy(sampled[k], 0, visible[k], 0, sampled[k].length);
+            // The sample's array becomes the visible one; the old visible one takes the next sample.
+            int[] delivered = sampled[k];
+            sampled[k] = visible[k];
+            visible[k] = delivered;
         }
         pending[k] = false;
     }
