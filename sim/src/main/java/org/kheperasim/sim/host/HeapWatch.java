@@ -21,18 +21,38 @@ import javax.management.NotificationEmitter;
 final class HeapWatch {
     private static final int THRESHOLD_PERCENT = 80;
     private static final int FULL_PERCENT = 90;
-    private static final List<MemoryPoolMXBean> POOLS = ManagementFactory.getMemoryPoolMXBeans().stream()
-            .filter(p -> p.getType() == MemoryType.HEAP).toList();
     private static final List<Consumer<String>> LISTENERS = new CopyOnWriteArrayList<>();
     private static volatile byte[] reserve = new byte[1 << 20];
+    /** The heap's memory pools, once {@link #watchPools} has set them up (none before). */
+    private static volatile List<MemoryPoolMXBean> pools = List.of();
 
     static {
-        for (MemoryPoolMXBean pool : POOLS) {
+        // Setting up the pools' thresholds loads the JMX machinery, some tens of milliseconds: a
+        // thread of its own does it, so a run does not wait. Meanwhile the controller's thread's
+        // look every few API calls ({@link #pressed}) watches the heap alone.
+        Thread setUp = new Thread(HeapWatch::watchPools, "heap-watch-set-up");
+        setUp.setDaemon(true);
+        setUp.start();
+    }
+
+    private HeapWatch() {
+    }
+
+    /** Start watching the heap, if not yet (call it from the run's owner, before controllers run). */
+    static void prepare() {
+        // The class's initialisation starts the watch; nothing more to do.
+    }
+
+    private static void watchPools() {
+        List<MemoryPoolMXBean> heap = ManagementFactory.getMemoryPoolMXBeans().stream()
+                .filter(p -> p.getType() == MemoryType.HEAP).toList();
+        for (MemoryPoolMXBean pool : heap) {
             long max = pool.getUsage().getMax();
             if (pool.isUsageThresholdSupported() && max > 0) {
                 pool.setUsageThreshold(max / 100 * THRESHOLD_PERCENT);
             }
         }
+        pools = heap;
         if (ManagementFactory.getMemoryMXBean() instanceof NotificationEmitter emitter) {
             emitter.addNotificationListener((n, handback) -> {
                 if (MemoryNotificationInfo.MEMORY_THRESHOLD_EXCEEDED.equals(n.getType())) {
@@ -44,9 +64,6 @@ final class HeapWatch {
                 }
             }, null, null);
         }
-    }
-
-    private HeapWatch() {
     }
 
     /** @param listener told (on a JVM service thread) when the heap passes its threshold */
@@ -96,7 +113,7 @@ final class HeapWatch {
     }
 
     private static String nearlyFull(int percent, boolean afterCollection) {
-        for (MemoryPoolMXBean pool : POOLS) {
+        for (MemoryPoolMXBean pool : pools) {
             MemoryUsage u = afterCollection ? pool.getCollectionUsage() : pool.getUsage();
             if (u != null && u.getMax() > 0 && u.getUsed() * 100 > u.getMax() * percent) {
                 return String.format(Locale.ROOT, "the heap's %s was %d of %d MB full", pool.getName(),

@@ -57,6 +57,7 @@ public final class Lockstep {
         this.steps = List.copyOf(steps);
         this.hosts = new ArrayList<>(hosts);
         this.hangTimeoutNanos = hangTimeoutNanos;
+        HeapWatch.prepare();
         for (ControllerHost h : hosts) {
             byDriver.put(h, h);
             h.join(this);

@@ -5,7 +5,6 @@ import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
@@ -36,9 +35,13 @@ public final class Simulation {
         return new Builder();
     }
 
-    /** @return a new seed for a run that was given none (printed, so the run can be repeated) */
+    /**
+     * @return a new seed for a run that was given none (printed, so the run can be repeated); it
+     *     needs to differ from run to run, not to be secret, so no SecureRandom (whose providers take
+     *     tens of milliseconds to load)
+     */
     public static long randomSeed() {
-        return new SecureRandom().nextLong() & 0xFFFF_FFFFL;
+        return java.util.concurrent.ThreadLocalRandom.current().nextLong() & 0xFFFF_FFFFL;
     }
 
     /** Configures and runs a simulation. */
