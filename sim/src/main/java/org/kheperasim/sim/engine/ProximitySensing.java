@@ -51,6 +51,15 @@ final class ProximitySensing {
     private double[] nearX = new double[4];
     private double[] nearY = new double[4];
     private int near;
+    /**
+     * The last proofs that the field leaves a disc empty, for the robot's centre ({@code [COUNT]})
+     * and each sensor's cone: the disc's centre, and how far beyond the needed radius the bound
+     * reached. A disc whose centre has moved less than that is still empty, without a lookup.
+     */
+    private final double[] provenX = new double[IrSensor.COUNT + 1];
+    private final double[] provenY = new double[IrSensor.COUNT + 1];
+    private final double[] provenSlack = new double[IrSensor.COUNT + 1];
+
     /** What {@link #open} found for the sample being taken: the nearest cap's surface less the sensors' reach, and whether only walls and lamps are within reach. */
     private double capFree;
     private boolean wallsOnly;
@@ -118,7 +127,34 @@ final class ProximitySensing {
         wallsOnly = capFree >= range && near == 0;
         // Nothing within range of any sensor: every beam is empty (no sensor is farther than
         // REACH_MM from the centre, and the field's lower bound of the clearance is exceeded).
-        return wallsOnly && field.clearanceBelow(robotX, robotY) - SensorPlacement.REACH_MM > range;
+        return wallsOnly && discEmpty(IrSensor.COUNT, robotX, robotY, SensorPlacement.REACH_MM + range);
+    }
+
+    /**
+     * Does the distance field prove the disc of radius {@code radius} around (x, y) free of walls and
+     * lamps? Proof {@code k}'s disc, if its centre has moved less than its slack since, is still
+     * free (the clearance changes no faster than the point moves).
+     */
+    private boolean discEmpty(int k, double x, double y, double radius) {
+        double mx = x - provenX[k];
+        double my = y - provenY[k];
+        double slack = provenSlack[k];
+        if (mx * mx + my * my < slack * slack) {
+            return true;
+        }
+        double b = field.clearanceBelow(x, y) - radius;
+        if (b > 0) {
+            provenX[k] = x;
+            provenY[k] = y;
+            provenSlack[k] = b;
+            return true;
+        }
+        return false;
+    }
+
+    /** The arena was edited: the field's earlier proofs no longer hold. */
+    void arenaEdited() {
+        java.util.Arrays.fill(provenSlack, 0);
     }
 
     /** The readings of a sample where {@link #open} found nothing in reach: no beam response, only noise. */
@@ -139,7 +175,7 @@ final class ProximitySensing {
             double dx = placement.dx[i];
             double dy = placement.dy[i];
             double raw = 0;
-            if (wallsOnly && field.clearanceBelow(px + coneMid * dx, py + coneMid * dy) > coneMid) {
+            if (wallsOnly && discEmpty(i, px + coneMid * dx, py + coneMid * dy, coneMid)) {
                 // Every beam of this sensor lies in a disc the field proves empty.
                 out[i] = reading(i, 0, sample);
                 continue;

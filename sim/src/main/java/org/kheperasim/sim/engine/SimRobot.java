@@ -228,6 +228,7 @@ public final class SimRobot implements RobotLink.Robot {
     /** The arena was edited: check clearance, caps and regions again. */
     void arenaEdited() {
         body.arenaEdited();
+        proximity.arenaEdited();
         gripper.arenaEdited();
         capContacts.forget();
         coverage.arenaEdited();
