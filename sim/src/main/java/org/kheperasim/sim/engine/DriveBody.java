@@ -126,12 +126,29 @@ final class DriveBody {
     }
 
     /**
-     * @return a lower bound of {@link #freeTravelMm}, cheaper (a byte of the distance field, no
-     *     square root): where it already allows what is asked, the exact value is not needed
+     * @param lookUp false: only from the last look-up, less how far the robot has moved since (no
+     *     memory touched); true: look the field's bound up here too
+     * @return a lower bound of {@link #freeTravelMm}, cheaper (a byte of the distance field at most):
+     *     where it already allows what is asked, the exact value is not needed
      */
-    double freeTravelAtLeastMm() {
-        return field.clearanceBelow(x, y) - NEAR_MM - Khepera.BODY_RADIUS_MM - CONTACT_EPSILON_MM;
+    double freeTravelAtLeastMm(boolean lookUp) {
+        double mx = x - anchorX;
+        double my = y - anchorY;
+        // The clearance shrinks no faster than the robot moves away from where it was last looked up.
+        double below = anchorBelow - StrictMath.sqrt(mx * mx + my * my);
+        if (lookUp) {
+            anchorX = x;
+            anchorY = y;
+            anchorBelow = field.clearanceBelow(x, y);
+            below = StrictMath.max(below, anchorBelow);
+        }
+        return below - NEAR_MM - Khepera.BODY_RADIUS_MM - CONTACT_EPSILON_MM;
     }
+
+    /** Where the field's lower bound of the clearance was last looked up, and its value there (mm). */
+    private double anchorX;
+    private double anchorY;
+    private double anchorBelow = Double.NEGATIVE_INFINITY;
 
     private double clearance() {
         if (!clearanceKnown) {
@@ -347,6 +364,7 @@ final class DriveBody {
 
     /** The arena was edited: check the clearance again. */
     void arenaEdited() {
+        anchorBelow = Double.NEGATIVE_INFINITY;
         clearance = clearanceAt(x, y);
         clearanceKnown = true;
     }

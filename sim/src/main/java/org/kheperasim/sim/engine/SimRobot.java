@@ -130,7 +130,11 @@ public final class SimRobot implements RobotLink.Robot {
         double others = StrictMath.min(othersFreeTravelMm(),
                 StrictMath.min(capContacts.freeTravelMm(body.x(), body.y()), coverage.freeTravelMm(body.x(), body.y())));
         // The body's clearance is looked up only when its cheap lower bound does not already allow the glide wanted.
-        long ticks = glideTicksFor(StrictMath.min(body.freeTravelAtLeastMm(), others));
+        long ticks = glideTicksFor(StrictMath.min(body.freeTravelAtLeastMm(false), others));
+        if (ticks >= wanted) {
+            return ticks;
+        }
+        ticks = glideTicksFor(StrictMath.min(body.freeTravelAtLeastMm(true), others));
         return ticks >= wanted ? ticks : glideTicksFor(StrictMath.min(body.freeTravelMm(), others));
     }
 
