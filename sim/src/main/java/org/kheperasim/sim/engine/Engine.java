@@ -192,6 +192,10 @@ public final class Engine {
      * {@link Motion}).
      */
     private long quietTicks() {
+        if (hasDrivers && !anyDriverRunning()) {
+            // Every controller has ended: the run ends with this tick (the next advance returns null).
+            return 1;
+        }
         long limit = ceilTicks(endNanos) - tick;
         for (int i = 0; i < drivers.size(); i++) {
             RobotDriver d = drivers.get(i);
