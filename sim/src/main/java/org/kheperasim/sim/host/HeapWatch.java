@@ -25,11 +25,12 @@ final class HeapWatch {
     private static volatile byte[] reserve = new byte[1 << 20];
     /** The heap's memory pools, once {@link #watchPools} has set them up (none before). */
     private static volatile List<MemoryPoolMXBean> pools = List.of();
+    private static final java.util.concurrent.CountDownLatch READY = new java.util.concurrent.CountDownLatch(1);
 
     static {
         // Setting up the pools' thresholds loads the JMX machinery, some tens of milliseconds: a
-        // thread of its own does it, so a run does not wait. Meanwhile the controller's thread's
-        // look every few API calls ({@link #pressed}) watches the heap alone.
+        // thread of its own does it while the run is being set up (arena, controller classes);
+        // controllers start only when it is done (awaitReady).
         Thread setUp = new Thread(HeapWatch::watchPools, "heap-watch-set-up");
         setUp.setDaemon(true);
         setUp.start();
@@ -38,12 +39,29 @@ final class HeapWatch {
     private HeapWatch() {
     }
 
-    /** Start watching the heap, if not yet (call it from the run's owner, before controllers run). */
+    /** Start setting up the watch, if not yet (early, from the thread that sets a run up). */
     static void prepare() {
-        // The class's initialisation starts the watch; nothing more to do.
+        // The class's initialisation starts the set-up; nothing more to do.
+    }
+
+    /** Wait until the watch is set up (before any controller code runs), at most a few seconds. */
+    static void awaitReady() {
+        try {
+            READY.await(5, java.util.concurrent.TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     private static void watchPools() {
+        try {
+            setUpPools();
+        } finally {
+            READY.countDown();
+        }
+    }
+
+    private static void setUpPools() {
         List<MemoryPoolMXBean> heap = ManagementFactory.getMemoryPoolMXBeans().stream()
                 .filter(p -> p.getType() == MemoryType.HEAP).toList();
         for (MemoryPoolMXBean pool : heap) {

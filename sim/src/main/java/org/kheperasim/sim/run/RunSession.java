@@ -88,6 +88,7 @@ public final class RunSession implements AutoCloseable {
      */
     public RunSession(Arena arena, List<RobotSetup> setups, ControllerCatalog catalog, long seed, ConsoleSink console,
             ControllerHost.Options hostOptions) {
+        Lockstep.prepare();
         this.arena = Objects.requireNonNull(arena, "no arena given");
         if (setups.size() != arena.robots().size()) {
             throw new IllegalArgumentException("the arena " + arena.name() + " has " + arena.robots().size()
