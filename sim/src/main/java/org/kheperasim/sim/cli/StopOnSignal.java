@@ -13,7 +13,7 @@ import org.kheperasim.sim.trace.LineFileWriter;
 /**
  * Runs a simulation so that a signal that ends the JVM (SIGTERM, Ctrl-C, a controller's
  * {@code System.exit}) still ends the run properly: a shutdown hook asks the run to stop at its next
- * chunk of simulated time, then waits while the run finishes its trace and the result is reported.
+ * tick, then waits while the run finishes its trace and the result is reported.
  * Should the run not stop in time (a controller that holds on), the hook writes out the trace's
  * whole lines itself and says so. After kill -9 nothing runs, but the trace is readable anyway
  * ({@link LineFileWriter}).

@@ -23,6 +23,8 @@ final class Coverage {
     /** The body's footprint in cells, as (dc, dr) pairs, and its leading edge for each of the 8 steps. */
     private static final int[] FOOTPRINT = footprint(OccupancyGrid.CELL_MM);
     private static final int[][] EDGES = edges(FOOTPRINT);
+    /** No footprint cell is farther than this from the centre's cell along either axis. */
+    private static final int REACH = reach(FOOTPRINT);
 
     private final World world;
     private final OccupancyGrid grid;
@@ -77,18 +79,27 @@ final class Coverage {
     }
 
     private void stamp(int col, int row, int[] offsets) {
+        int cols = grid.cols();
+        int rows = grid.rows();
+        // Well inside the grid (the usual case) no cell needs its own bounds check.
+        boolean inside = col >= REACH && row >= REACH && col + REACH < cols && row + REACH < rows;
+        int lastT = -1;
+        long[] tile = null;
         for (int k = 0; k < offsets.length; k += 2) {
             int c = col + offsets[k];
             int r = row + offsets[k + 1];
-            if (c >= 0 && r >= 0 && c < grid.cols() && r < grid.rows()) {
+            if (inside || c >= 0 && r >= 0 && c < cols && r < rows) {
                 int t = (r >> TILE_SHIFT) * tilesAcross + (c >> TILE_SHIFT);
-                long[] tile = tiles[t];
-                if (tile == null) {
-                    tile = new long[TILE * TILE / 64];
-                    tiles[t] = tile;
+                if (t != lastT) {
+                    tile = tiles[t];
+                    if (tile == null) {
+                        tile = new long[TILE * TILE / 64];
+                        tiles[t] = tile;
+                    }
+                    lastT = t;
                 }
                 int bit = ((r & (TILE - 1)) << TILE_SHIFT) | (c & (TILE - 1));
-                tile[bit >> 6] |= 1L << (bit & 63);
+                tile[bit >> 6] |= 1L << bit;
             }
         }
     }
@@ -183,6 +194,14 @@ final class Coverage {
             }
         }
         return Arrays.copyOf(tmp, n);
+    }
+
+    private static int reach(int[] cells) {
+        int reach = 0;
+        for (int v : cells) {
+            reach = StrictMath.max(reach, StrictMath.abs(v));
+        }
+        return reach;
     }
 
     /** For each step (dc, dr) to a neighbouring cell: the footprint's cells not covered before the step. */

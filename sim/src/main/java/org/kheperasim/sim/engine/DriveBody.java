@@ -33,7 +33,9 @@ final class DriveBody {
     private double y;
     private double cos;
     private double sin;
+    /** The clearance where the robot is ({@link #clearanceAt}); after a glide, computed when first needed. */
     private double clearance;
+    private boolean clearanceKnown;
     private int speedLeft;
     private int speedRight;
     private double noiseFactorLeft = 1;
@@ -51,13 +53,8 @@ final class DriveBody {
     private int collisions;
     private double distance;
 
-    // The last arc's turn and its trigonometry, reused while the turn per move does not change.
-    private double lastTurn = Double.NaN;
-    private double halfCos = 1;
-    private double halfSin;
-    private double fullCos = 1;
-    private double fullSin;
-    private double chord = 1;
+    /** The last arc's trigonometry, reused while the turn per move does not change. */
+    private final ArcTrig trig = new ArcTrig();
 
     DriveBody(World world, int self, double x, double y, double headingDeg, RobotModel.Motors motors, double readingNoise,
             double calibrationLeft, double calibrationRight, CounterNoise noiseLeft, CounterNoise noiseRight) {
@@ -77,6 +74,7 @@ final class DriveBody {
         this.cos = StrictMath.cos(h);
         this.sin = StrictMath.sin(h);
         this.clearance = clearanceAt(x, y);
+        this.clearanceKnown = true;
         bodies.add(self, x, y);
     }
 
@@ -124,7 +122,40 @@ final class DriveBody {
      */
     double freeTravelMm() {
         // Both clearance estimates are upper bounds of the true clearance, within 2.2 cells of it.
-        return clearance - NEAR_MM - Khepera.BODY_RADIUS_MM - CONTACT_EPSILON_MM;
+        return clearance() - NEAR_MM - Khepera.BODY_RADIUS_MM - CONTACT_EPSILON_MM;
+    }
+
+    /**
+     * @param lookUp false: only from the last look-up, less how far the robot has moved since (no
+     *     memory touched); true: look the field's bound up here too
+     * @return a lower bound of {@link #freeTravelMm}, cheaper (a byte of the distance field at most):
+     *     where it already allows what is asked, the exact value is not needed
+     */
+    double freeTravelAtLeastMm(boolean lookUp) {
+        double mx = x - anchorX;
+        double my = y - anchorY;
+        // The clearance shrinks no faster than the robot moves away from where it was last looked up.
+        double below = anchorBelow - StrictMath.sqrt(mx * mx + my * my);
+        if (lookUp) {
+            anchorX = x;
+            anchorY = y;
+            anchorBelow = field.clearanceBelow(x, y);
+            below = StrictMath.max(below, anchorBelow);
+        }
+        return below - NEAR_MM - Khepera.BODY_RADIUS_MM - CONTACT_EPSILON_MM;
+    }
+
+    /** Where the field's lower bound of the clearance was last looked up, and its value there (mm). */
+    private double anchorX;
+    private double anchorY;
+    private double anchorBelow = Double.NEGATIVE_INFINITY;
+
+    private double clearance() {
+        if (!clearanceKnown) {
+            clearance = clearanceAt(x, y);
+            clearanceKnown = true;
+        }
+        return clearance;
     }
 
     // ------------------------------------------------------------------ moving
@@ -138,38 +169,57 @@ final class DriveBody {
             return;
         }
         double common = arc(ticks);
-        double nx = x + common * chord * (cos * halfCos - sin * halfSin);
-        double ny = y + common * chord * (sin * halfCos + cos * halfSin);
-        turnAndMove(nx, ny, cos * fullCos - sin * fullSin, sin * fullCos + cos * fullSin);
-        clearance = clearanceAt(x, y);
+        double nx = x + common * trig.chord * (cos * trig.halfCos - sin * trig.halfSin);
+        double ny = y + common * trig.chord * (sin * trig.halfCos + cos * trig.halfSin);
+        turnAndMove(nx, ny, cos * trig.fullCos - sin * trig.fullSin, sin * trig.fullCos + cos * trig.fullSin);
+        clearanceKnown = false;
         count(common, diff(ticks), 1);
         blocked = false;
         contact = Contact.NONE;
     }
 
     /**
-     * Where a glide of {@code ticks} ticks from here would end, without moving: {x, y, cos, sin,
-     * left encoder, right encoder} into {@code out}. The engine samples sensors inside a glide this way.
+     * Where a glide of {@code ticks} ticks from here would end, without moving: the position and
+     * counters {x, y, -, -, left encoder, right encoder} into {@code out} (the heading is
+     * {@link #previewHeading}'s). The engine samples sensors inside a glide this way.
      */
-    void preview(long ticks, double[] out) {
+    void previewPosition(long ticks, double[] out) {
+        previewCounters(ticks, out);
         if (ticks == 0 || still()) {
             out[0] = x;
             out[1] = y;
+            return;
+        }
+        double common = halfArc(ticks);
+        out[0] = x + common * trig.chord * (cos * trig.halfCos - sin * trig.halfSin);
+        out[1] = y + common * trig.chord * (sin * trig.halfCos + cos * trig.halfSin);
+    }
+
+    /** The heading at the end of a glide of {@code ticks} ticks, {cos, sin} into {@code out[2, 3]}. */
+    void previewHeading(long ticks, double[] out) {
+        if (ticks == 0 || still()) {
             out[2] = cos;
             out[3] = sin;
+            return;
+        }
+        trig.full(turn(ticks));
+        double c = cos * trig.fullCos - sin * trig.fullSin;
+        double s = sin * trig.fullCos + cos * trig.fullSin;
+        double n = 1.0 / StrictMath.sqrt(c * c + s * s);
+        out[2] = c * n;
+        out[3] = s * n;
+    }
+
+    /** The counters of {@link #previewPosition} ({@code out[4, 5]}), without the arc's trigonometry. */
+    void previewCounters(long ticks, double[] out) {
+        if (ticks == 0 || still()) {
             out[4] = encoderLeft;
             out[5] = encoderRight;
             return;
         }
-        double common = arc(ticks);
+        double dt = ticks * TICK_S;
+        double common = (wheelLeft * dt + wheelRight * dt) * 0.5;
         double diff = diff(ticks);
-        double c = cos * fullCos - sin * fullSin;
-        double s = sin * fullCos + cos * fullSin;
-        double n = 1.0 / StrictMath.sqrt(c * c + s * s);
-        out[0] = x + common * chord * (cos * halfCos - sin * halfSin);
-        out[1] = y + common * chord * (sin * halfCos + cos * halfSin);
-        out[2] = c * n;
-        out[3] = s * n;
         out[4] = encoderLeft + (common - diff) / mmPerPulse;
         out[5] = encoderRight + (common + diff) / mmPerPulse;
     }
@@ -187,14 +237,15 @@ final class DriveBody {
         }
         double common = arc(1);
         double diff = diff(1);
-        double stepLen = common * chord;
-        double midCos = cos * halfCos - sin * halfSin;
-        double midSin = sin * halfCos + cos * halfSin;
+        double stepLen = common * trig.chord;
+        double midCos = cos * trig.halfCos - sin * trig.halfSin;
+        double midSin = sin * trig.halfCos + cos * trig.halfSin;
         double nx = x + stepLen * midCos;
         double ny = y + stepLen * midSin;
         double newClearance = clearanceAt(nx, ny);
         double fraction = 1;
         boolean nowBlocked = false;
+        double clearance = clearance();
         if (newClearance < Khepera.BODY_RADIUS_MM && newClearance < clearance) {
             fraction = clearance > Khepera.BODY_RADIUS_MM
                     ? (clearance - Khepera.BODY_RADIUS_MM) / (clearance - newClearance) : 0;
@@ -222,8 +273,8 @@ final class DriveBody {
                 nowBlocked = true;
             }
         }
-        double c = cos * fullCos - sin * fullSin;
-        double s = sin * fullCos + cos * fullSin;
+        double c = cos * trig.fullCos - sin * trig.fullSin;
+        double s = sin * trig.fullCos + cos * trig.fullSin;
         caps.clearBlocking();
         if (caps.near(nx, ny)) {
             double tx = nx - x;
@@ -248,10 +299,11 @@ final class DriveBody {
         }
         blocked = nowBlocked;
         turnAndMove(nx, ny, c, s);
-        clearance = newClearance;
+        this.clearance = newClearance;
+        this.clearanceKnown = true;
         count(common, diff, fraction);
         int other = bodies.count() > 1 ? bodies.nearest(self, x, y, Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) : -1;
-        if (clearance <= Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) {
+        if (newClearance <= Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) {
             contact = sideOf(field.nearestObstacleX(x, y), field.nearestObstacleY(x, y));
         } else if (other >= 0) {
             contact = sideOf(bodies.x(other), bodies.y(other));
@@ -264,19 +316,24 @@ final class DriveBody {
 
     /** Set up the arc of {@code ticks} ticks; returns the centre's path length (signed), mm. */
     private double arc(long ticks) {
+        double common = halfArc(ticks);
+        trig.full(trig.turn());
+        return common;
+    }
+
+    /** The half of {@link #arc} that places the centre: the half turn's trigonometry and the chord. */
+    private double halfArc(long ticks) {
         double dt = ticks * TICK_S;
         double dl = wheelLeft * dt;
         double dr = wheelRight * dt;
-        double turn = (dr - dl) / Khepera.WHEEL_BASE_MM;
-        if (turn != lastTurn) {
-            lastTurn = turn;
-            halfCos = cosOf(turn * 0.5);
-            halfSin = sinOf(turn * 0.5);
-            fullCos = cosOf(turn);
-            fullSin = sinOf(turn);
-            chord = turn == 0 ? 1 : halfSin / (turn * 0.5);
-        }
+        trig.half((dr - dl) / Khepera.WHEEL_BASE_MM);
         return (dl + dr) * 0.5;
+    }
+
+    /** The turn of an arc of {@code ticks} ticks, rad (as {@link #halfArc} computes it). */
+    private double turn(long ticks) {
+        double dt = ticks * TICK_S;
+        return (wheelRight * dt - wheelLeft * dt) / Khepera.WHEEL_BASE_MM;
     }
 
     private double diff(long ticks) {
@@ -307,30 +364,14 @@ final class DriveBody {
 
     /** The arena was edited: check the clearance again. */
     void arenaEdited() {
+        anchorBelow = Double.NEGATIVE_INFINITY;
         clearance = clearanceAt(x, y);
+        clearanceKnown = true;
     }
 
     private Contact sideOf(double obstacleX, double obstacleY) {
         double rel = StrictMath.atan2(obstacleY - y, obstacleX - x) - StrictMath.atan2(sin, cos);
         return Contact.ofAngle(rel);
-    }
-
-    /** sin of a turn: a Taylor series exact to double precision for |a| ≤ 0.1, else {@link StrictMath}. */
-    private static double sinOf(double a) {
-        if (StrictMath.abs(a) > 0.1) {
-            return StrictMath.sin(a);
-        }
-        double a2 = a * a;
-        return a * (1 - a2 / 6 * (1 - a2 / 20 * (1 - a2 / 42 * (1 - a2 / 72))));
-    }
-
-    /** cos of a turn; see {@link #sinOf}. */
-    private static double cosOf(double a) {
-        if (StrictMath.abs(a) > 0.1) {
-            return StrictMath.cos(a);
-        }
-        double a2 = a * a;
-        return 1 - a2 / 2 * (1 - a2 / 12 * (1 - a2 / 30 * (1 - a2 / 56 * (1 - a2 / 90))));
     }
 
     // ------------------------------------------------------------------ the robot's own counters
@@ -353,7 +394,8 @@ final class DriveBody {
 
     /** @return the 32-bit counter's value for a wheel travel of {@code count} pulses (it wraps like the robot's) */
     static int pulses(double count) {
-        return (int) (long) StrictMath.floor(count);
+        // Math.floor is exact (as StrictMath.floor), and an intrinsic.
+        return (int) (long) Math.floor(count);
     }
 
     // ------------------------------------------------------------------ views

@@ -138,6 +138,11 @@ public final class Engine {
         this.endNanos = endNanos;
     }
 
+    /** @return where {@link #advance()} stops, ns (set by {@link #setEnd}) */
+    public long endNanos() {
+        return endNanos;
+    }
+
     /**
      * Advance the world until a driver must run, or until the end set by {@link #setEnd} is
      * reached or every driver has ended. Whoever holds the turn calls this, the engine's owner or a
@@ -183,10 +188,14 @@ public final class Engine {
     /**
      * How many ticks the world can move through at once: up to the next tick at which anything is
      * due (a command, a noise redraw, a position-move update, a controller's wake-up, a snapshot,
-     * the end); at least one. Each robot then moves through the stretch as cheaply as it can (see
+     * the end; for a lone robot, its own commands, redraws and updates do not count); at least one. Each robot then moves through the stretch as cheaply as it can (see
      * {@link Motion}).
      */
     private long quietTicks() {
+        if (hasDrivers && !anyDriverRunning()) {
+            // Every controller has ended: the run ends with this tick (the next advance returns null).
+            return 1;
+        }
         long limit = ceilTicks(endNanos) - tick;
         for (int i = 0; i < drivers.size(); i++) {
             RobotDriver d = drivers.get(i);
@@ -201,7 +210,9 @@ public final class Engine {
             long p = listeners.get(k).periodTicks;
             limit = StrictMath.min(limit, (tick / p + 1) * p - tick);
         }
-        for (int i = 0; i < robots.size() && limit > 1; i++) {
+        // A lone robot begins the ticks where its own commands and noise redraws fall due itself, inside
+        // its move (Motion.alone): nothing else happens at those ticks, so the world need not stop there.
+        for (int i = 0; i < robots.size() && limit > 1 && robots.size() > 1; i++) {
             long due = robots.get(i).nextDueNanos();
             if (due != Long.MAX_VALUE) {
                 limit = StrictMath.min(limit, ceilTicks(due) - tick);

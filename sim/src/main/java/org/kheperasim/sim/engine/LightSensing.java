@@ -27,6 +27,11 @@ final class LightSensing {
     private final double flickerDepth;
     private final double noiseRel;
     private final CounterNoise[] noise;
+    /**
+     * Characters the eight values of a sample in darkness take in a reply, or -1 when that depends
+     * on the flicker (a dark level close to a power of ten): then darkness is read at once.
+     */
+    private final int darkChars;
 
     LightSensing(World world, SensorPlacement placement, RobotModel model, Miscalibration calibration,
             CounterNoise[] noise) {
@@ -43,6 +48,57 @@ final class LightSensing {
         this.flickerDepth = l.flickerDepth();
         this.noiseRel = l.noiseRel() * reading;
         this.noise = noise;
+        this.darkChars = darkChars();
+    }
+
+    /** The reply characters of a dark sample, when every sensor's flicker keeps its number of digits. */
+    private int darkChars() {
+        int chars = 0;
+        for (int i = 0; i < IrSensor.COUNT; i++) {
+            // The flicker factor is monotone in its uniform draw, so its extremes bound the reading.
+            int low = SensorPlacement.reading(flicker(i, 0));
+            int high = SensorPlacement.reading(flicker(i, 1 - 0x1.0p-53));
+            int n = SensorPlacement.digits(low);
+            if (flickerRate > 0 && n != SensorPlacement.digits(high)) {
+                return -1;
+            }
+            chars += n;
+        }
+        return chars;
+    }
+
+    /** Sensor i's dark level with a flicker of uniform draw u. */
+    private double flicker(int i, double u) {
+        return dark[i] * (1 + flickerDepth * (u * 2 - 1));
+    }
+
+    /**
+     * Take sample {@code sample} where nothing is lit, if its reply's length is known without its
+     * values: an arena without lamps, a dark level far from a power of ten. The values are then
+     * computed only when somebody reads them ({@link #fillDark}); they are the same as if computed
+     * now, since darkness depends on nothing but the sample's draws.
+     *
+     * @return the reply's characters for the eight values, or -1 when the sample must be taken with
+     *     {@link #sample}
+     */
+    int deferDark() {
+        return world.arena().lights().isEmpty() ? darkChars : -1;
+    }
+
+    /** The eight readings of a sample in darkness ({@link #deferDark}): each sensor's dark level and flicker. */
+    void fillDark(long sample, int[] out) {
+        for (int i = 0; i < IrSensor.COUNT; i++) {
+            out[i] = SensorPlacement.reading(darkValue(i, sample * DRAWS));
+        }
+    }
+
+    private double darkValue(int i, long k) {
+        CounterNoise n = noise[i];
+        double value = dark[i];
+        if (flickerRate > 0 && n.uniform(k) < flickerRate) {
+            value = flicker(i, n.uniform(k + 1));
+        }
+        return value;
     }
 
     /**
@@ -71,10 +127,7 @@ final class LightSensing {
             long k = sample * DRAWS;
             double value;
             if (exposure <= 0) {
-                value = dark[i];
-                if (flickerRate > 0 && n.uniform(k) < flickerRate) {
-                    value *= 1 + flickerDepth * (n.uniform(k + 1) * 2 - 1);
-                }
+                value = darkValue(i, k);
             } else {
                 double e = StrictMath.min(1, exposure * gain[i]);
                 value = dark[i] - (dark[i] - bright) * e;

@@ -81,13 +81,13 @@ final class Motion {
             if (t > start) {
                 r.beginTick(t * Engine.TICK_NANOS);
             }
-            long k = StrictMath.min(end - t, r.glideTicks());
+            long k = end - t;
             long due = r.nextDueNanos();
             if (due != Long.MAX_VALUE) {
                 // Something of its own falls due on the way (its tick begins there).
                 k = StrictMath.min(k, -Math.floorDiv(-due, Engine.TICK_NANOS) - t);
             }
-            k = StrictMath.max(1, k);
+            k = StrictMath.max(1, StrictMath.min(k, r.glideTicks(k)));
             r.move(k, (t + k) * Engine.TICK_NANOS, k > 1);
             t += k;
         }

@@ -26,6 +26,11 @@ final class ProximitySensing {
     private final SensorPlacement placement;
     private final ProximityProfile profile;
     private final double range;
+    /**
+     * Every beam of a sensor lies in the disc of this radius whose centre is this far ahead of the
+     * sensor (the circle through the sensor and the outermost beams' ends), mm.
+     */
+    private final double coneMid;
     private final double[] rayCos = new double[RAY_ANGLES_DEG.length];
     private final double[] raySin = new double[RAY_ANGLES_DEG.length];
     private final double[] reflectance;
@@ -46,6 +51,18 @@ final class ProximitySensing {
     private double[] nearX = new double[4];
     private double[] nearY = new double[4];
     private int near;
+    /**
+     * The last proofs that the field leaves a disc empty, for the robot's centre ({@code [COUNT]})
+     * and each sensor's cone: the disc's centre, and how far beyond the needed radius the bound
+     * reached. A disc whose centre has moved less than that is still empty, without a lookup.
+     */
+    private final double[] provenX = new double[IrSensor.COUNT + 1];
+    private final double[] provenY = new double[IrSensor.COUNT + 1];
+    private final double[] provenSlack = new double[IrSensor.COUNT + 1];
+
+    /** What {@link #open} found for the sample being taken: the nearest cap's surface less the sensors' reach, and whether only walls and lamps are within reach. */
+    private double capFree;
+    private boolean wallsOnly;
 
     ProximitySensing(World world, int self, SensorPlacement placement, RobotModel model, Miscalibration calibration,
             CounterNoise[] noise) {
@@ -59,6 +76,7 @@ final class ProximitySensing {
         double reading = model.noise().reading();
         this.profile = p.profile();
         this.range = profile.rangeMm();
+        this.coneMid = range / (2 * StrictMath.cos(StrictMath.toRadians(RAY_ANGLES_DEG[RAY_ANGLES_DEG.length - 1])));
         for (int r = 0; r < RAY_ANGLES_DEG.length; r++) {
             rayCos[r] = StrictMath.cos(StrictMath.toRadians(RAY_ANGLES_DEG[r]));
             raySin[r] = StrictMath.sin(StrictMath.toRadians(RAY_ANGLES_DEG[r]));
@@ -88,27 +106,80 @@ final class ProximitySensing {
      * @param out receives the eight readings, 0..1023
      */
     void sample(double robotX, double robotY, double c, double s, long sample, int[] out) {
-        // Caps are not in the distance field: bound the beams' empty stretch by the nearest cap too.
-        double capFree = caps.count() == 0 ? Double.POSITIVE_INFINITY
-                : caps.nearestSurface(robotX, robotY) - SensorPlacement.REACH_MM;
-        // Nothing within range of any sensor: every beam is empty (the clearance estimate is within
-        // NEAR_MM above the true one, and no sensor is farther than REACH_MM from the centre).
-        gatherRobots(robotX, robotY);
-        boolean open = capFree >= range && near == 0
-                && field.clearance(robotX, robotY) - DriveBody.NEAR_MM - SensorPlacement.REACH_MM >= range;
-        if (!open) {
-            placement.place(robotX, robotY, c, s);
+        if (open(robotX, robotY)) {
+            sampleOpen(sample, out);
+        } else {
+            sampleNear(robotX, robotY, c, s, sample, out);
         }
+    }
+
+    /**
+     * Look around a robot's centre before a sample: is nothing within reach of any beam (all the
+     * readings are then those of {@link #sampleOpen}, and the heading is not needed)? Otherwise
+     * {@link #sampleNear} takes the sample, with what this found.
+     */
+    boolean open(double robotX, double robotY) {
+        // Caps are not in the distance field: bound the beams' empty stretch by the nearest cap too.
+        capFree = caps.count() == 0 ? Double.POSITIVE_INFINITY
+                : caps.nearestSurface(robotX, robotY) - SensorPlacement.REACH_MM;
+        gatherRobots(robotX, robotY);
+        // Only walls and lamps within any beam's reach: the distance field alone can prove a beam empty.
+        wallsOnly = capFree >= range && near == 0;
+        // Nothing within range of any sensor: every beam is empty (no sensor is farther than
+        // REACH_MM from the centre, and the field's lower bound of the clearance is exceeded).
+        return wallsOnly && discEmpty(IrSensor.COUNT, robotX, robotY, SensorPlacement.REACH_MM + range);
+    }
+
+    /**
+     * Does the distance field prove the disc of radius {@code radius} around (x, y) free of walls and
+     * lamps? Proof {@code k}'s disc, if its centre has moved less than its slack since, is still
+     * free (the clearance changes no faster than the point moves).
+     */
+    private boolean discEmpty(int k, double x, double y, double radius) {
+        double mx = x - provenX[k];
+        double my = y - provenY[k];
+        double slack = provenSlack[k];
+        if (mx * mx + my * my < slack * slack) {
+            return true;
+        }
+        double b = field.clearanceBelow(x, y) - radius;
+        if (b > 0) {
+            provenX[k] = x;
+            provenY[k] = y;
+            provenSlack[k] = b;
+            return true;
+        }
+        return false;
+    }
+
+    /** The arena was edited: the field's earlier proofs no longer hold. */
+    void arenaEdited() {
+        java.util.Arrays.fill(provenSlack, 0);
+    }
+
+    /** The readings of a sample where {@link #open} found nothing in reach: no beam response, only noise. */
+    void sampleOpen(long sample, int[] out) {
         for (int i = 0; i < IrSensor.COUNT; i++) {
-            if (open) {
-                out[i] = reading(i, 0, sample);
-                continue;
-            }
+            out[i] = reading(i, 0, sample);
+        }
+    }
+
+    /** A sample where {@link #open} (just called at this centre) found something within reach. */
+    void sampleNear(double robotX, double robotY, double c, double s, long sample, int[] out) {
+        double capFree = this.capFree;
+        boolean wallsOnly = this.wallsOnly;
+        placement.place(robotX, robotY, c, s);
+        for (int i = 0; i < IrSensor.COUNT; i++) {
             double px = placement.x[i];
             double py = placement.y[i];
             double dx = placement.dx[i];
             double dy = placement.dy[i];
             double raw = 0;
+            if (wallsOnly && discEmpty(i, px + coneMid * dx, py + coneMid * dy, coneMid)) {
+                // Every beam of this sensor lies in a disc the field proves empty.
+                out[i] = reading(i, 0, sample);
+                continue;
+            }
             double free = field.clearance(px, py);
             if (capFree < free) {
                 free = StrictMath.min(free, capsAhead(px, py, dx, dy));
@@ -117,7 +188,7 @@ final class ProximitySensing {
                 free = StrictMath.min(free, robotsFrom(px, py));
             }
             if (free < range) {
-                raw = beams(px, py, dx, dy, StrictMath.max(0, free - DriveBody.NEAR_MM));
+                raw = beams(px, py, dx, dy, StrictMath.max(0, free - DriveBody.NEAR_MM), wallsOnly);
             }
             out[i] = reading(i, raw, sample);
         }
@@ -141,7 +212,7 @@ final class ProximitySensing {
      * The strongest beam response; nothing lies nearer than {@code skip} (the clearance less the
      * estimate's error), so the beams start there instead of walking the empty cells.
      */
-    private double beams(double px, double py, double dx, double dy, double skip) {
+    private double beams(double px, double py, double dx, double dy, double skip, boolean wallsOnly) {
         double raw = 0;
         for (int r = 0; r < rayCos.length; r++) {
             // A hit beyond `reach` could not beat the strongest response so far: march no farther.
@@ -153,6 +224,9 @@ final class ProximitySensing {
             double rx = dx * rayCos[r] - dy * raySin[r];
             double ry = dy * rayCos[r] + dx * raySin[r];
             double limit = StrictMath.min(range, reach);
+            if (wallsOnly && empty(px, py, rx, ry, skip, limit)) {
+                continue;
+            }
             double d = skip + grid.castRay(px + skip * rx, py + skip * ry, rx, ry, limit - skip, hit);
             double reflect = d == Double.POSITIVE_INFINITY ? 0 : reflectanceOf(hit.id);
             if (near > 0) {
@@ -170,6 +244,27 @@ final class ProximitySensing {
             }
         }
         return raw;
+    }
+
+    /**
+     * Does the distance field prove the beam from (px, py) along (rx, ry) empty between
+     * {@code from} and {@code to} (sphere tracing: every disc the field proves empty lets the beam
+     * on by its radius)? The grid march then has nothing to find, so skipping it changes nothing.
+     * Near an obstacle it gives up (false) and the march decides.
+     */
+    private boolean empty(double px, double py, double rx, double ry, double from, double to) {
+        double t = from;
+        for (int k = 0; k < 4; k++) {
+            double b = field.clearanceBelow(px + t * rx, py + t * ry);
+            if (b <= OccupancyGrid.CELL_MM) {
+                return false;
+            }
+            t += b;
+            if (t > to) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**

@@ -41,6 +41,20 @@ final class RobotLink {
         /** Sample the light sensors now into {@code out}. */
         void sampleLight(int[] out);
 
+        /**
+         * Take the light sensors' sample for the poll cycle: into {@code out}, or, when the reply's
+         * length is known without the values (darkness), later ({@link #fillLight}).
+         *
+         * @return -1 when {@code out} holds the values, else the sample's key for {@link #fillLight}
+         */
+        long pollLight(int[] out);
+
+        /** @return the reply characters of the eight values of a deferred light sample */
+        int deferredLightChars();
+
+        /** The values of the deferred light sample {@code key}, the same as if taken at once. */
+        void fillLight(long key, int[] out);
+
         /** @return the robot's left counter for the sample being taken, pulses */
         int sampleCounterLeft();
 
@@ -68,6 +82,9 @@ final class RobotLink {
     private final int[][] visible = new int[CYCLE.length][];
     private final long[] deliverAt = new long[CYCLE.length];
     private final boolean[] pending = new boolean[CYCLE.length];
+    /** A step's sample (and its visible values) whose values are still to be computed: its key, or -1. */
+    private final long[] sampledKey = new long[CYCLE.length];
+    private final long[] visibleKey = new long[CYCLE.length];
 
     /** Wire time of a poll step's command and turnaround, per step; and of a line of n characters. */
     private final long[] commandNanos = new long[CYCLE.length];
@@ -86,6 +103,8 @@ final class RobotLink {
             int n = CYCLE[k] == PollStep.ENCODERS ? 2 : IrSensor.COUNT;
             sampled[k] = new int[n];
             visible[k] = new int[n];
+            sampledKey[k] = -1;
+            visibleKey[k] = -1;
         }
     }
 
@@ -206,9 +225,19 @@ final class RobotLink {
             if (pending[k]) {
                 deliver(k);
             }
-            take(CYCLE[k], sampled[k]);
             // The reply is as long as the values it carries.
-            int chars = LinkTiming.replyChars(CYCLE[k], sampled[k]);
+            int[] values = sampled[k];
+            int chars;
+            if (k == PROXIMITY) {
+                robot.sampleProximity(values);
+                chars = readingsReplyChars(values);
+            } else if (k == LIGHT) {
+                sampledKey[k] = robot.pollLight(values);
+                chars = sampledKey[k] >= 0 ? 1 + IrSensor.COUNT + 2 + robot.deferredLightChars() : readingsReplyChars(values);
+            } else {
+                take(CYCLE[k], values);
+                chars = LinkTiming.replyChars(CYCLE[k], values);
+            }
             deliverAt[k] = sampleAt + (chars < lineNanos.length ? lineNanos[chars] : timing.wireNanos(chars));
             pending[k] = true;
             step = k + 1 == CYCLE.length ? 0 : k + 1;
@@ -219,6 +248,18 @@ final class RobotLink {
     /** @return when the poll cycle's next sample is taken, ns ({@link Long#MAX_VALUE}: not polling) */
     long nextPollDue() {
         return polling ? sampleAt : Long.MAX_VALUE;
+    }
+
+    /** {@link LinkTiming#replyChars} of eight sensor readings (0..1023), counted without a loop per digit. */
+    private static int readingsReplyChars(int[] values) {
+        int chars = 1 + values.length + 2;
+        for (int v : values) {
+            if (v < 0 || v > 9999) {
+                return LinkTiming.replyChars(PollStep.PROXIMITY, values);
+            }
+            chars += SensorPlacement.digits(v);
+        }
+        return chars;
     }
 
     /** Take a step's sample on the robot now. */
@@ -235,7 +276,13 @@ final class RobotLink {
     }
 
     private void deliver(int k) {
-        System.arraycopy(sampled[k], 0, visible[k], 0, sampled[k].length);
+        visibleKey[k] = sampledKey[k];
+        if (visibleKey[k] < 0) {
+            // The sample's array becomes the visible one; the old visible one takes the next sample.
+            int[] delivered = sampled[k];
+            sampled[k] = visible[k];
+            visible[k] = delivered;
+        }
         pending[k] = false;
     }
 
@@ -243,6 +290,10 @@ final class RobotLink {
     private int[] seen(int k, long now) {
         if (pending[k] && deliverAt[k] <= now - Math.floorMod(now, Engine.TICK_NANOS)) {
             deliver(k);
+        }
+        if (visibleKey[k] >= 0) {
+            robot.fillLight(visibleKey[k], visible[k]);
+            visibleKey[k] = -1;
         }
         return visible[k];
     }

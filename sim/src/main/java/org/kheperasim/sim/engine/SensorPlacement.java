@@ -48,6 +48,12 @@ final class SensorPlacement {
         if (v >= 1023) {
             return 1023;
         }
-        return (int) StrictMath.floor(v + 0.5);
+        // v + 0.5 is positive here, so truncation is the floor (and much cheaper than StrictMath.floor).
+        return (int) (v + 0.5);
+    }
+
+    /** @param reading a reading, 0..1023 @return how many decimal digits a reply writes for it */
+    static int digits(int reading) {
+        return reading < 10 ? 1 : reading < 100 ? 2 : reading < 1000 ? 3 : 4;
     }
 }

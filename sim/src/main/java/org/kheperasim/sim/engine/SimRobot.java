@@ -43,8 +43,8 @@ public final class SimRobot implements RobotLink.Robot {
     /** Simulated time the robot has been moved to, ns. */
     private long movedTo;
     private long nextHardDue;
-    /** Where the robot is for the sample being taken: x, y, cos, sin, left and right encoder. */
-    private final double[] sense = new double[6];
+    /** Where the robot is for the sample being taken. */
+    private final SamplePose sense;
 
     /**
      * @param id the robot's index in the engine
@@ -68,6 +68,7 @@ public final class SimRobot implements RobotLink.Robot {
         Miscalibration calibration = new Miscalibration(model, systematic);
         this.body = new DriveBody(world, id, start.x(), start.y(), start.headingDeg(), model.motors(),
                 model.noise().reading(), calibration.calibrationLeft, calibration.calibrationRight, motorLeft, motorRight);
+        this.sense = new SamplePose(body);
         this.proximity = new ProximitySensing(world, id, placement, model, calibration, proxNoise);
         this.light = new LightSensing(world, placement, model, calibration, lightNoise);
         this.gripper = new GripperModel(id, world, body, model.gripper());
@@ -78,7 +79,7 @@ public final class SimRobot implements RobotLink.Robot {
         this.bodies = world.bodies();
         this.unseenMm = SensorPlacement.REACH_MM + model.proximity().profile().rangeMm() + 1;
         this.link = new RobotLink(model.link().timing(), this);
-        body.preview(0, sense);
+        sense.at(0);
         link.prime();
     }
 
@@ -98,7 +99,7 @@ public final class SimRobot implements RobotLink.Robot {
             return;
         }
         link.commandsDue(now);
-        body.preview(0, sense);
+        sense.at(0);
         link.pollDue(now);
         long due = StrictMath.min(link.nextCommandDue(), body.noiseDue(now));
         nextHardDue = StrictMath.min(due, onBoard.due(now));
@@ -114,18 +115,30 @@ public final class SimRobot implements RobotLink.Robot {
     }
 
     /**
+     * @param wanted how many ticks the caller would glide at most
      * @return how many ticks the robot can glide from here along its arc with nothing to touch and
-     *     no region to enter on the way (0: the next tick must be stepped with contact handling)
+     *     no region to enter on the way (0: the next tick must be stepped with contact handling), or
+     *     any number of at least {@code wanted} when it can glide that far
      */
-    long glideTicks() {
+    long glideTicks(long wanted) {
         if (model.stepping() == RobotModel.Stepping.TICK || gripper.busy()) {
             return 0;
         }
         if (body.still()) {
             return Long.MAX_VALUE;
         }
-        double free = StrictMath.min(StrictMath.min(body.freeTravelMm(), othersFreeTravelMm()),
+        double others = StrictMath.min(othersFreeTravelMm(),
                 StrictMath.min(capContacts.freeTravelMm(body.x(), body.y()), coverage.freeTravelMm(body.x(), body.y())));
+        // The body's clearance is looked up only when its cheap lower bound does not already allow the glide wanted.
+        long ticks = glideTicksFor(StrictMath.min(body.freeTravelAtLeastMm(false), others));
+        if (ticks >= wanted) {
+            return ticks;
+        }
+        ticks = glideTicksFor(StrictMath.min(body.freeTravelAtLeastMm(true), others));
+        return ticks >= wanted ? ticks : glideTicksFor(StrictMath.min(body.freeTravelMm(), others));
+    }
+
+    private long glideTicksFor(double free) {
         double ticks = (free - 1e-6) / body.travelPerTickMm();
         return ticks >= 1 ? (long) StrictMath.min(ticks, 1e15) : 0;
     }
@@ -170,7 +183,7 @@ public final class SimRobot implements RobotLink.Robot {
                 if (at >= endNanos) {
                     break;
                 }
-                body.preview((at - start) / Engine.TICK_NANOS, sense);
+                sense.at((at - start) / Engine.TICK_NANOS);
                 link.pollDue(at);
                 due = link.nextPollDue();
             }
@@ -200,13 +213,13 @@ public final class SimRobot implements RobotLink.Robot {
 
     /** Sample the proximity sensors where the robot is now. */
     void readProximityNow(int[] out) {
-        body.preview(0, sense);
+        sense.at(0);
         sampleProximity(out);
     }
 
     /** Sample the light sensors where the robot is now. */
     void readLightNow(int[] out) {
-        body.preview(0, sense);
+        sense.at(0);
         sampleLight(out);
     }
 
@@ -219,6 +232,7 @@ public final class SimRobot implements RobotLink.Robot {
     /** The arena was edited: check clearance, caps and regions again. */
     void arenaEdited() {
         body.arenaEdited();
+        proximity.arenaEdited();
         gripper.arenaEdited();
         capContacts.forget();
         coverage.arenaEdited();
@@ -248,23 +262,49 @@ public final class SimRobot implements RobotLink.Robot {
 
     @Override
     public void sampleProximity(int[] out) {
-        proximity.sample(sense[0], sense[1], sense[2], sense[3], proximitySamples++, out);
-        coverage.mark(sense[0], sense[1]);
+        double[] at = sense.position();
+        if (proximity.open(at[0], at[1])) {
+            proximity.sampleOpen(proximitySamples++, out);
+        } else {
+            at = sense.pose();
+            proximity.sampleNear(at[0], at[1], at[2], at[3], proximitySamples++, out);
+        }
+        coverage.mark(at[0], at[1]);
     }
 
     @Override
     public void sampleLight(int[] out) {
-        light.sample(sense[0], sense[1], sense[2], sense[3], lightSamples++, out);
+        double[] at = sense.pose();
+        light.sample(at[0], at[1], at[2], at[3], lightSamples++, out);
+    }
+
+    @Override
+    public long pollLight(int[] out) {
+        if (light.deferDark() >= 0) {
+            return lightSamples++;
+        }
+        sampleLight(out);
+        return -1;
+    }
+
+    @Override
+    public int deferredLightChars() {
+        return light.deferDark();
+    }
+
+    @Override
+    public void fillLight(long key, int[] out) {
+        light.fillDark(key, out);
     }
 
     @Override
     public int sampleCounterLeft() {
-        return DriveBody.pulses(sense[4]);
+        return DriveBody.pulses(sense.counters()[4]);
     }
 
     @Override
     public int sampleCounterRight() {
-        return DriveBody.pulses(sense[5]);
+        return DriveBody.pulses(sense.counters()[5]);
     }
 
     // ------------------------------------------------------------------ the controller's side (through the link)

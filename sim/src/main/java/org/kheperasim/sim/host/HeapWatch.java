@@ -21,18 +21,56 @@ import javax.management.NotificationEmitter;
 final class HeapWatch {
     private static final int THRESHOLD_PERCENT = 80;
     private static final int FULL_PERCENT = 90;
-    private static final List<MemoryPoolMXBean> POOLS = ManagementFactory.getMemoryPoolMXBeans().stream()
-            .filter(p -> p.getType() == MemoryType.HEAP).toList();
     private static final List<Consumer<String>> LISTENERS = new CopyOnWriteArrayList<>();
     private static volatile byte[] reserve = new byte[1 << 20];
+    /** The heap's memory pools, once {@link #watchPools} has set them up (none before). */
+    private static volatile List<MemoryPoolMXBean> pools = List.of();
+    private static final java.util.concurrent.CountDownLatch READY = new java.util.concurrent.CountDownLatch(1);
 
     static {
-        for (MemoryPoolMXBean pool : POOLS) {
+        // Setting up the pools' thresholds loads the JMX machinery, some tens of milliseconds: a
+        // thread of its own does it while the run is being set up (arena, controller classes);
+        // controllers start only when it is done (awaitReady).
+        Thread setUp = new Thread(HeapWatch::watchPools, "heap-watch-set-up");
+        setUp.setDaemon(true);
+        setUp.start();
+    }
+
+    private HeapWatch() {
+    }
+
+    /** Start setting up the watch, if not yet (early, from the thread that sets a run up). */
+    static void prepare() {
+        // The class's initialisation starts the set-up; nothing more to do.
+    }
+
+    /** Wait until the watch is set up (before any controller code runs), at most a few seconds. */
+    static void awaitReady() {
+        try {
+            READY.await(5, java.util.concurrent.TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private static void watchPools() {
+        try {
+            setUpPools();
+        } finally {
+            READY.countDown();
+        }
+    }
+
+    private static void setUpPools() {
+        List<MemoryPoolMXBean> heap = ManagementFactory.getMemoryPoolMXBeans().stream()
+                .filter(p -> p.getType() == MemoryType.HEAP).toList();
+        for (MemoryPoolMXBean pool : heap) {
             long max = pool.getUsage().getMax();
             if (pool.isUsageThresholdSupported() && max > 0) {
                 pool.setUsageThreshold(max / 100 * THRESHOLD_PERCENT);
             }
         }
+        pools = heap;
         if (ManagementFactory.getMemoryMXBean() instanceof NotificationEmitter emitter) {
             emitter.addNotificationListener((n, handback) -> {
                 if (MemoryNotificationInfo.MEMORY_THRESHOLD_EXCEEDED.equals(n.getType())) {
@@ -44,9 +82,6 @@ final class HeapWatch {
                 }
             }, null, null);
         }
-    }
-
-    private HeapWatch() {
     }
 
     /** @param listener told (on a JVM service thread) when the heap passes its threshold */
@@ -96,7 +131,7 @@ final class HeapWatch {
     }
 
     private static String nearlyFull(int percent, boolean afterCollection) {
-        for (MemoryPoolMXBean pool : POOLS) {
+        for (MemoryPoolMXBean pool : pools) {
             MemoryUsage u = afterCollection ? pool.getCollectionUsage() : pool.getUsage();
             if (u != null && u.getMax() > 0 && u.getUsed() * 100 > u.getMax() * percent) {
                 return String.format(Locale.ROOT, "the heap's %s was %d of %d MB full", pool.getName(),

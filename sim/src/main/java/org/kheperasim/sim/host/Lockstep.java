@@ -32,6 +32,10 @@ public final class Lockstep {
     private final Turn.Seat owner = new Turn.Seat(null);
     private final Turn turn = new Turn(owner);
     private volatile RuntimeException engineFailure;
+    /** Asked (by the owner, while it watches) whether the run should stop early; never null. */
+    private java.util.function.BooleanSupplier stopAsked = () -> false;
+    /** Set by the owner when {@link #stopAsked} said yes: whoever steps the world ends the run at the next tick. */
+    private volatile boolean stopping;
 
     /**
      * @param engine the engine whose drivers are the hosts
@@ -59,6 +63,14 @@ public final class Lockstep {
         }
     }
 
+    /**
+     * Start setting up the heap watch in the background: call it first when setting a run up, so
+     * that the watch is ready, at no cost in waiting, when the controllers start.
+     */
+    public static void prepare() {
+        HeapWatch.prepare();
+    }
+
     Engine engine() {
         return engine;
     }
@@ -74,6 +86,23 @@ public final class Lockstep {
      * @param endNanos simulated time to stop at, ns
      */
     public void run(long endNanos) {
+        run(endNanos, () -> false);
+    }
+
+    /**
+     * Run until simulated time reaches {@code endNanos}, every controller has ended, or {@code stop}
+     * says so. The owner asks {@code stop} each time it looks at the holder (about every millisecond
+     * of real time) and before it steps the world itself; once it says yes, the run ends at the next
+     * tick boundary, as if that were its end. Where exactly depends on the wall clock, like the
+     * signal that asks for it; a run that is not stopped is computed the same with or without it.
+     *
+     * @param endNanos simulated time to stop at, ns
+     * @param stop asked whether to stop early (e.g. on SIGTERM); cheap and thread-safe
+     */
+    public void run(long endNanos, java.util.function.BooleanSupplier stop) {
+        stopAsked = stop;
+        stopping = stop.getAsBoolean();
+        HeapWatch.awaitReady();
         owner.seat(Thread.currentThread());
         turn.giveTo(owner);
         engine.setEnd(endNanos);
@@ -116,6 +145,9 @@ public final class Lockstep {
      * @return the controller to hand the turn to, or null when the run is over
      */
     RobotDriver advance() {
+        if (stopping) {
+            engine.setEnd(StrictMath.min(engine.endNanos(), engine.timeNanos()));
+        }
         RobotDriver next = engine.advance();
         while (next instanceof StepHost step) {
             step.step();
@@ -174,6 +206,9 @@ public final class Lockstep {
         int watches = 0;
         while (!turn.heldBy(owner)) {
             turn.awaitFor(owner, WATCH_PERIOD_NANOS);
+            if (!stopping && stopAsked.getAsBoolean()) {
+                stopping = true;
+            }
             if (++watches % HEAP_WATCH_EVERY == 0) {
                 String full = HeapWatch.nearlyFull();
                 ControllerHost holder = hostAt(turn.holder());

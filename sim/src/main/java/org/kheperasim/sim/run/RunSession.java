@@ -88,6 +88,7 @@ public final class RunSession implements AutoCloseable {
      */
     public RunSession(Arena arena, List<RobotSetup> setups, ControllerCatalog catalog, long seed, ConsoleSink console,
             ControllerHost.Options hostOptions) {
+        Lockstep.prepare();
         this.arena = Objects.requireNonNull(arena, "no arena given");
         if (setups.size() != arena.robots().size()) {
             throw new IllegalArgumentException("the arena " + arena.name() + " has " + arena.robots().size()
@@ -163,10 +164,23 @@ public final class RunSession implements AutoCloseable {
      * @return true while the run can go on (some controller still runs)
      */
     public boolean runTo(long endNanos) {
+        return runTo(endNanos, () -> false);
+    }
+
+    /**
+     * Run until simulated time reaches {@code endNanos}, every controller has ended, or {@code stop}
+     * answers true (it is asked about every millisecond of real time; the run then ends at the next
+     * tick, so {@link #timeNanos()} may fall short of {@code endNanos}).
+     *
+     * @param endNanos simulated time, ns
+     * @param stop asked whether to stop early; cheap and thread-safe
+     * @return true while the run can go on (some controller still runs)
+     */
+    public boolean runTo(long endNanos, java.util.function.BooleanSupplier stop) {
         if (closed) {
             throw new IllegalStateException("this run has been stopped; reset to start a new one");
         }
-        lockstep.run(endNanos);
+        lockstep.run(endNanos, stop);
         return !finished();
     }
 

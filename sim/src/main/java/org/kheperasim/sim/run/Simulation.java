@@ -5,7 +5,6 @@ import java.io.UncheckedIOException;
 import java.io.Writer;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.security.SecureRandom;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
@@ -25,9 +24,6 @@ import org.kheperasim.sim.trace.LineFileWriter;
  * here, so they run the same thing.
  */
 public final class Simulation {
-    /** Simulated time between two looks at the stop request, ns. */
-    static final long CHUNK_NANOS = 100 * Engine.TICK_NANOS;
-
     private final Builder b;
 
     private Simulation(Builder b) {
@@ -39,9 +35,13 @@ public final class Simulation {
         return new Builder();
     }
 
-    /** @return a new seed for a run that was given none (printed, so the run can be repeated) */
+    /**
+     * @return a new seed for a run that was given none (printed, so the run can be repeated); it
+     *     needs to differ from run to run, not to be secret, so no SecureRandom (whose providers take
+     *     tens of milliseconds to load)
+     */
     public static long randomSeed() {
-        return new SecureRandom().nextLong() & 0xFFFF_FFFFL;
+        return java.util.concurrent.ThreadLocalRandom.current().nextLong() & 0xFFFF_FFFFL;
     }
 
     /** Configures and runs a simulation. */
@@ -219,9 +219,9 @@ public final class Simulation {
         }
 
         /**
-         * @param stop asked between chunks of simulated time (every 100 ms); when it answers true the run
-         *     ends there, as if that were its end (e.g. on SIGTERM): the trace is finished and the result is
-         *     the run so far
+         * @param stop asked about every millisecond of real time while the run goes on; when it answers
+         *     true the run ends at the next tick, as if that were its end (e.g. on SIGTERM): the trace is
+         *     finished and the result is the run so far
          * @return this
          */
         public Builder stopWhen(BooleanSupplier stop) {
@@ -298,8 +298,9 @@ public final class Simulation {
     }
 
     /**
-     * Runs to {@code target} in chunks of {@link #CHUNK_NANOS}, so that a request to stop (a
-     * signal) is seen soon; chunk boundaries never change what is computed.
+     * Runs to {@code target} in one go: the run's owner asks the stop request while it watches the
+     * controllers (about every millisecond of real time), so a signal is seen soon without handing
+     * the turn back and forth between threads every few simulated milliseconds.
      *
      * @return true when the run reached {@code target} and can go on
      */
@@ -308,7 +309,7 @@ public final class Simulation {
             if (b.stop.getAsBoolean()) {
                 return false;
             }
-            if (!session.runTo(Math.min(target, session.timeNanos() + CHUNK_NANOS))) {
+            if (!session.runTo(target, b.stop)) {
                 return false;
             }
         }
