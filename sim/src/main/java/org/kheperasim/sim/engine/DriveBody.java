@@ -33,9 +33,8 @@ final class DriveBody {
     private double y;
     private double cos;
     private double sin;
-    /** The clearance where the robot is ({@link #clearanceAt}); after a glide, computed when first needed. */
-    private double clearance;
-    private boolean clearanceKnown;
+    /** The body's clearance from walls and lamps, and its cheap bounds. */
+    private final BodyClearance room;
     private int speedLeft;
     private int speedRight;
     private double noiseFactorLeft = 1;
@@ -73,8 +72,7 @@ final class DriveBody {
         double h = StrictMath.toRadians(headingDeg);
         this.cos = StrictMath.cos(h);
         this.sin = StrictMath.sin(h);
-        this.clearance = clearanceAt(x, y);
-        this.clearanceKnown = true;
+        this.room = new BodyClearance(field, x, y);
         bodies.add(self, x, y);
     }
 
@@ -121,8 +119,7 @@ final class DriveBody {
      *     body radius and the touching margin: the centre can travel that far without a contact, mm
      */
     double freeTravelMm() {
-        // Both clearance estimates are upper bounds of the true clearance, within 2.2 cells of it.
-        return clearance() - NEAR_MM - Khepera.BODY_RADIUS_MM - CONTACT_EPSILON_MM;
+        return room.freeTravel(x, y);
     }
 
     /**
@@ -132,30 +129,7 @@ final class DriveBody {
      *     where it already allows what is asked, the exact value is not needed
      */
     double freeTravelAtLeastMm(boolean lookUp) {
-        double mx = x - anchorX;
-        double my = y - anchorY;
-        // The clearance shrinks no faster than the robot moves away from where it was last looked up.
-        double below = anchorBelow - StrictMath.sqrt(mx * mx + my * my);
-        if (lookUp) {
-            anchorX = x;
-            anchorY = y;
-            anchorBelow = field.clearanceBelow(x, y);
-            below = StrictMath.max(below, anchorBelow);
-        }
-        return below - NEAR_MM - Khepera.BODY_RADIUS_MM - CONTACT_EPSILON_MM;
-    }
-
-    /** Where the field's lower bound of the clearance was last looked up, and its value there (mm). */
-    private double anchorX;
-    private double anchorY;
-    private double anchorBelow = Double.NEGATIVE_INFINITY;
-
-    private double clearance() {
-        if (!clearanceKnown) {
-            clearance = clearanceAt(x, y);
-            clearanceKnown = true;
-        }
-        return clearance;
+        return room.freeTravelAtLeast(x, y, lookUp);
     }
 
     // ------------------------------------------------------------------ moving
@@ -172,7 +146,7 @@ final class DriveBody {
         double nx = x + common * trig.chord * (cos * trig.halfCos - sin * trig.halfSin);
         double ny = y + common * trig.chord * (sin * trig.halfCos + cos * trig.halfSin);
         turnAndMove(nx, ny, cos * trig.fullCos - sin * trig.fullSin, sin * trig.fullCos + cos * trig.fullSin);
-        clearanceKnown = false;
+        room.forget();
         count(common, diff(ticks), 1);
         blocked = false;
         contact = Contact.NONE;
@@ -242,16 +216,16 @@ final class DriveBody {
         double midSin = sin * trig.halfCos + cos * trig.halfSin;
         double nx = x + stepLen * midCos;
         double ny = y + stepLen * midSin;
-        double newClearance = clearanceAt(nx, ny);
+        double newClearance = room.at(nx, ny);
         double fraction = 1;
         boolean nowBlocked = false;
-        double clearance = clearance();
+        double clearance = room.here(x, y);
         if (newClearance < Khepera.BODY_RADIUS_MM && newClearance < clearance) {
             fraction = clearance > Khepera.BODY_RADIUS_MM
                     ? (clearance - Khepera.BODY_RADIUS_MM) / (clearance - newClearance) : 0;
             nx = x + fraction * stepLen * midCos;
             ny = y + fraction * stepLen * midSin;
-            newClearance = clearanceAt(nx, ny);
+            newClearance = room.at(nx, ny);
             nowBlocked = true;
             if (!blocked) {
                 collisions++;
@@ -266,7 +240,7 @@ final class DriveBody {
                 nx = x + f * tx;
                 ny = y + f * ty;
                 fraction *= f;
-                newClearance = clearanceAt(nx, ny);
+                newClearance = room.at(nx, ny);
                 if (!nowBlocked && !blocked) {
                     collisions++;
                 }
@@ -289,7 +263,7 @@ final class DriveBody {
                 nx = x + f * tx;
                 ny = y + f * ty;
                 fraction *= f;
-                newClearance = clearanceAt(nx, ny);
+                newClearance = room.at(nx, ny);
                 if (!nowBlocked && !blocked) {
                     collisions++;
                 }
@@ -299,8 +273,7 @@ final class DriveBody {
         }
         blocked = nowBlocked;
         turnAndMove(nx, ny, c, s);
-        this.clearance = newClearance;
-        this.clearanceKnown = true;
+        room.set(newClearance);
         count(common, diff, fraction);
         int other = bodies.count() > 1 ? bodies.nearest(self, x, y, Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) : -1;
         if (newClearance <= Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) {
@@ -356,17 +329,9 @@ final class DriveBody {
         distance += StrictMath.abs(moved);
     }
 
-    /** Clearance of the body's centre: the fast estimate, refined where contact is possible. */
-    private double clearanceAt(double px, double py) {
-        double c = field.clearance(px, py);
-        return c < Khepera.BODY_RADIUS_MM + NEAR_MM ? field.preciseClearance(px, py) : c;
-    }
-
     /** The arena was edited: check the clearance again. */
     void arenaEdited() {
-        anchorBelow = Double.NEGATIVE_INFINITY;
-        clearance = clearanceAt(x, y);
-        clearanceKnown = true;
+        room.arenaEdited(x, y);
     }
 
     private Contact sideOf(double obstacleX, double obstacleY) {

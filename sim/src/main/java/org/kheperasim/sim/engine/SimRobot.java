@@ -12,14 +12,15 @@ import org.kheperasim.sim.engine.noise.CounterNoise;
 /**
  * One simulated Khepera, assembled from the parts it models: the {@link DriveBody} on its wheels,
  * the {@link ProximitySensing} and {@link LightSensing}, the {@link GripperModel} with its
- * {@link CapContacts}, the {@link RobotLink} its controller talks through, the robot's own
+ * {@link CapContacts}, the {@link RobotLink} its controller talks through (and the {@link LinkEnd}
+ * where the link meets the parts), the robot's own
  * {@link OnBoardControl}, its {@link Coverage} and its {@link Miscalibration}.
  *
  * <p>This class wires them together and tells the engine when the robot next needs attention
  * ({@link #nextDueNanos}) and how far it can glide before a contact or a region entry could happen
  * ({@link #glideTicks}). Everything is deterministic given the robot's noise streams.
  */
-public final class SimRobot implements RobotLink.Robot {
+public final class SimRobot {
     private final int id;
     private final String name;
     private final Settings settings;
@@ -30,21 +31,21 @@ public final class SimRobot implements RobotLink.Robot {
     private final LightSensing light;
     private final GripperModel gripper;
     private final CapContacts capContacts;
-    private final Bodies bodies;
     /** Another robot's surface farther than this from the centre is out of every sensor's reach, mm. */
     private final double unseenMm;
     private final RobotLink link;
     private final OnBoardControl onBoard;
     private final Coverage coverage;
     private final GripperPort gripperPort;
-    private long proximitySamples;
-    private long lightSamples;
     private long nextDue;
     /** Simulated time the robot has been moved to, ns. */
     private long movedTo;
     private long nextHardDue;
     /** Where the robot is for the sample being taken. */
     private final SamplePose sense;
+    /** What the link's commands and poll samples do to the parts. */
+    private final LinkEnd end;
+    private final Glides glides;
 
     /**
      * @param id the robot's index in the engine
@@ -76,9 +77,10 @@ public final class SimRobot implements RobotLink.Robot {
         this.gripperPort = new GripperPort(gripper);
         this.onBoard = new OnBoardControl(this, body, gripper);
         this.coverage = new Coverage(world, start.x(), start.y());
-        this.bodies = world.bodies();
         this.unseenMm = SensorPlacement.REACH_MM + model.proximity().profile().rangeMm() + 1;
-        this.link = new RobotLink(model.link().timing(), this);
+        this.glides = new Glides(id, model, body, gripper, capContacts, coverage, world.bodies(), unseenMm);
+        this.end = new LinkEnd(body, sense, proximity, light, gripper, coverage);
+        this.link = new RobotLink(model.link().timing(), end);
         sense.at(0);
         link.prime();
     }
@@ -116,44 +118,11 @@ public final class SimRobot implements RobotLink.Robot {
 
     /**
      * @param wanted how many ticks the caller would glide at most
-     * @return how many ticks the robot can glide from here along its arc with nothing to touch and
-     *     no region to enter on the way (0: the next tick must be stepped with contact handling), or
-     *     any number of at least {@code wanted} when it can glide that far
+     * @return how many ticks the robot can glide from here with nothing to touch and no region to
+     *     enter on the way (0: step the next tick with contact handling), or at least {@code wanted}
      */
     long glideTicks(long wanted) {
-        if (model.stepping() == RobotModel.Stepping.TICK || gripper.busy()) {
-            return 0;
-        }
-        if (body.still()) {
-            return Long.MAX_VALUE;
-        }
-        double others = StrictMath.min(othersFreeTravelMm(),
-                StrictMath.min(capContacts.freeTravelMm(body.x(), body.y()), coverage.freeTravelMm(body.x(), body.y())));
-        // The body's clearance is looked up only when its cheap lower bound does not already allow the glide wanted.
-        long ticks = glideTicksFor(StrictMath.min(body.freeTravelAtLeastMm(false), others));
-        if (ticks >= wanted) {
-            return ticks;
-        }
-        ticks = glideTicksFor(StrictMath.min(body.freeTravelAtLeastMm(true), others));
-        return ticks >= wanted ? ticks : glideTicksFor(StrictMath.min(body.freeTravelMm(), others));
-    }
-
-    private long glideTicksFor(double free) {
-        double ticks = (free - 1e-6) / body.travelPerTickMm();
-        return ticks >= 1 ? (long) StrictMath.min(ticks, 1e15) : 0;
-    }
-
-    /**
-     * How far this robot may glide with the other robots in mind: while it glides they stay out of
-     * its sensors' reach and it out of theirs, so no beam could see a robot in between. Every robot
-     * that moves takes at most half the gap to its nearest neighbour, so two of them never close it.
-     */
-    private double othersFreeTravelMm() {
-        if (bodies.count() < 2) {
-            return Double.POSITIVE_INFINITY;
-        }
-        double gap = bodies.surface(id, body.x(), body.y(), LOOK_MM);
-        return (StrictMath.min(gap, LOOK_MM) - unseenMm) * 0.5;
+        return glides.ticks(wanted);
     }
 
     /** @return how far the centre travels in one tick at most at the present wheel speeds, mm */
@@ -166,8 +135,6 @@ public final class SimRobot implements RobotLink.Robot {
         return unseenMm;
     }
 
-    /** How far it looks for other robots when it glides, mm. */
-    private static final double LOOK_MM = 400;
 
     /**
      * Move through {@code ticks} ticks ending at {@code endNanos}: a glide, which {@link #glideTicks}
@@ -214,13 +181,13 @@ public final class SimRobot implements RobotLink.Robot {
     /** Sample the proximity sensors where the robot is now. */
     void readProximityNow(int[] out) {
         sense.at(0);
-        sampleProximity(out);
+        end.sampleProximity(out);
     }
 
     /** Sample the light sensors where the robot is now. */
     void readLightNow(int[] out) {
         sense.at(0);
-        sampleLight(out);
+        end.sampleLight(out);
     }
 
     /** A position move was started at {@code now}: the robot needs the engine from then on. */
@@ -236,75 +203,6 @@ public final class SimRobot implements RobotLink.Robot {
         gripper.arenaEdited();
         capContacts.forget();
         coverage.arenaEdited();
-    }
-
-    // ------------------------------------------------------------------ the link's robot end
-
-    @Override
-    public void applySpeeds(long now, int left, int right) {
-        body.setSpeeds(left, right);
-    }
-
-    @Override
-    public void applyCounters(int left, int right) {
-        body.setCounters(left, right);
-    }
-
-    @Override
-    public void applyArm(long now, int position) {
-        gripper.moveArm(now, position);
-    }
-
-    @Override
-    public void applyFingers(long now, boolean closed) {
-        gripper.moveFingers(now, closed ? GripperState.CLOSED : GripperState.OPEN);
-    }
-
-    @Override
-    public void sampleProximity(int[] out) {
-        double[] at = sense.position();
-        if (proximity.open(at[0], at[1])) {
-            proximity.sampleOpen(proximitySamples++, out);
-        } else {
-            at = sense.pose();
-            proximity.sampleNear(at[0], at[1], at[2], at[3], proximitySamples++, out);
-        }
-        coverage.mark(at[0], at[1]);
-    }
-
-    @Override
-    public void sampleLight(int[] out) {
-        double[] at = sense.pose();
-        light.sample(at[0], at[1], at[2], at[3], lightSamples++, out);
-    }
-
-    @Override
-    public long pollLight(int[] out) {
-        if (light.deferDark() >= 0) {
-            return lightSamples++;
-        }
-        sampleLight(out);
-        return -1;
-    }
-
-    @Override
-    public int deferredLightChars() {
-        return light.deferDark();
-    }
-
-    @Override
-    public void fillLight(long key, int[] out) {
-        light.fillDark(key, out);
-    }
-
-    @Override
-    public int sampleCounterLeft() {
-        return DriveBody.pulses(sense.counters()[4]);
-    }
-
-    @Override
-    public int sampleCounterRight() {
-        return DriveBody.pulses(sense.counters()[5]);
     }
 
     // ------------------------------------------------------------------ the controller's side (through the link)
