@@ -110,7 +110,7 @@ public final class MainWindow {
         actions.refresh();
         console.note("Loaded arena " + arena.name() + "; controller " + choices.controllerName
                 + ". Press Start (F5). Draw with the palette; File > Open recording replays a run; Help > Quick start"
-                + " explains the first hour.");
+                + " gets your own controller running in 15 minutes.");
         painter = new FramePainter(feed, player, replayBar, plot, sensorPanel, arenaView, console, status, runs, choices);
     }
 
