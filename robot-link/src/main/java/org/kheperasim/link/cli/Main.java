@@ -16,6 +16,9 @@ import picocli.CommandLine.Spec;
         subcommands = {PortsCommand.class, RunCommand.class, ConsoleCommand.class, CheckCommand.class,
                 BenchCommand.class})
 public final class Main implements Runnable {
+    static {
+        org.kheperasim.link.tool.PicocliStartup.skipUnusedConverters();
+    }
     @Spec
     CommandLine.Model.CommandSpec spec;
 

@@ -15,6 +15,9 @@ import picocli.CommandLine.Command;
             ListCommand.class, ServeCommand.class, ImportWsuCommand.class, VerifyCommand.class, GradeCommand.class,
             CommandLine.HelpCommand.class})
 public final class Main implements java.util.concurrent.Callable<Integer> {
+    static {
+        org.kheperasim.link.tool.PicocliStartup.skipUnusedConverters();
+    }
 
     @CommandLine.Spec
     private CommandLine.Model.CommandSpec spec;
