@@ -43,12 +43,13 @@ public final class FirstControllerLoopDriver {
             w.chooseSpeed(PacedRunner.MAX_SPEED);
             return null;
         });
-        RobotView start = runFor(20);
+        runFor(20);
         RobotView after = w.runner().latest().robots().get(0);
-        double moved = Math.hypot(after.x() - start.x(), after.y() - start.y());
-        check(moved > 200, "MyFirst drives off: " + Math.round(moved) + " mm from the start in 20 s");
+        // How far it drove since the run began (not how far from the start: it may have come back).
+        double moved = after.distanceMm();
+        check(moved > 200, "MyFirst drives off: " + Math.round(moved) + " mm driven in at least 20 s");
         GuiE2EDriver.shot(robot, w, target.resolve("first-1-running.png"));
-        System.out.printf("RUN OK: MyFirst moved %.0f mm in 20 simulated s%n", moved);
+        System.out.printf("RUN OK: MyFirst drove %.0f mm by %.1f simulated s%n", moved, w.runner().latest().timeSeconds());
 
         // Repeat, with a mistake: the compiler's message names the file and the line.
         Files.writeString(source, original.replace("setSpeeds(5, 5);", "setSpeeds(5, 5)"));
@@ -61,27 +62,28 @@ public final class FirstControllerLoopDriver {
         // Repeat, with a change: spin on the spot instead of driving ahead.
         Files.writeString(source, original.replace("setSpeeds(5, 5);", "setSpeeds(-3, 3);"));
         press(KeyEvent.VK_F10, "F10 recompiles the fix", () -> onEdtQuiet(w::consoleText).contains("Controller MyFirst loaded"));
-        RobotView again = runFor(20);
+        runFor(20);
         RobotView spun = w.runner().latest().robots().get(0);
-        double drift = Math.hypot(spun.x() - again.x(), spun.y() - again.y());
+        org.kheperasim.sim.arena.Pose home = onEdt(() -> w.model().arena().robots().get(0));
+        double drift = Math.hypot(spun.x() - home.x(), spun.y() - home.y());
         check(drift < 30, "the changed MyFirst spins on the spot: " + Math.round(drift) + " mm from the start");
-        check(Math.abs(spun.headingDeg() - again.headingDeg()) > 1, "and turns");
+        int left = spun.encoderLeft();
+        int right = spun.encoderRight();
+        check(left < -100 && right > 100, "and turns on the spot: encoders " + left + ", " + right);
         GuiE2EDriver.shot(robot, w, target.resolve("first-2-changed.png"));
         System.out.printf("REPEAT OK: the changed MyFirst stayed within %.0f mm%n", drift);
         System.exit(0);
     }
 
-    /** Press F5 and let the run go to {@code seconds} of simulated time. @return the robot at the start */
-    private static RobotView runFor(double seconds) throws Exception {
+    /** Press F5, let the run go to at least {@code seconds} of simulated time, and pause it (F6). */
+    private static void runFor(double seconds) throws Exception {
         press(KeyEvent.VK_F5, "F5 starts", () -> w.runner() != null && w.runner().state() == PacedRunner.State.RUNNING);
-        RobotView start = w.runner().latest().robots().get(0);
         long until = System.nanoTime() + 60_000_000_000L;
         while (w.runner().latest().timeSeconds() < seconds && System.nanoTime() < until) {
             Thread.sleep(20);
         }
         check(w.runner().latest().timeSeconds() >= seconds, "the run reached " + seconds + " s");
         press(KeyEvent.VK_F6, "F6 pauses", () -> w.runner().state() == PacedRunner.State.PAUSED);
-        return start;
     }
 
     private static void focusArena() throws Exception {
