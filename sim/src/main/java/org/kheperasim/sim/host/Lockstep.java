@@ -145,15 +145,21 @@ public final class Lockstep {
      * @return the controller to hand the turn to, or null when the run is over
      */
     RobotDriver advance() {
-        if (stopping) {
-            engine.setEnd(StrictMath.min(engine.endNanos(), engine.timeNanos()));
-        }
-        RobotDriver next = engine.advance();
-        while (next instanceof StepHost step) {
+        while (true) {
+            // Asked here too, not only while the owner watches: with only step controllers (or a
+            // thread that steps the world itself) nobody watches, and a signal must still end the run.
+            if (!stopping && stopAsked.getAsBoolean()) {
+                stopping = true;
+            }
+            if (stopping) {
+                engine.setEnd(StrictMath.min(engine.endNanos(), engine.timeNanos()));
+            }
+            RobotDriver next = engine.advance();
+            if (!(next instanceof StepHost step)) {
+                return next;
+            }
             step.step();
-            next = engine.advance();
         }
-        return next;
     }
 
     /** Stop every controller (at the end of a run); returns when they have unwound or been left behind. */
