@@ -1,18 +1,13 @@
 package org.kheperasim.sim.gui;
 
-import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 
 import java.io.File;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -76,33 +71,7 @@ class GuiEndToEndTest {
     @Test
     @Timeout(value = 180, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void drawAWallAcrossTheRobotsPathAndBraitenbergTurnsAway() throws Exception {
-        Path xvfb = xvfb();
-        if (xvfb == null) {
-            if ("true".equals(System.getenv("CI"))) {
-                fail("Xvfb is not installed, and CI=true requires the GUI end-to-end test to run: apt-get install xvfb xauth");
-            }
-            Assumptions.assumeTrue(false, "Xvfb is not installed; the GUI end-to-end test needs it");
-        }
-        int[] display = new int[1];
-        Process x = startXvfb(xvfb, display);
-        Path target = Path.of("target").toAbsolutePath();
-        Files.createDirectories(target);
-        Path log = target.resolve("e2e-driver.log");
-        try {
-            Process child = childJvm(display[0], GuiE2EDriver.class.getName(), log, target.toString());
-            boolean done = child.waitFor(150, TimeUnit.SECONDS);
-            if (!done) {
-                child.destroyForcibly();
-            }
-            String out = Files.readString(log, StandardCharsets.UTF_8);
-            assertTrue(done, "the driver did not finish in 150 s:\n" + out);
-            assertEquals(0, child.exitValue(), out);
-            assertTrue(out.contains("E2E OK"), out);
-            assertTrue(Files.size(target.resolve("e2e-3-turned-away.png")) > 10_000, "a screenshot was saved");
-            System.out.println(out);
-        } finally {
-            x.destroy();
-            x.waitFor(5, TimeUnit.SECONDS);
-        }
+        WindowDriverRun.run("the GUI end-to-end test", GuiE2EDriver.class, null, 150, new String[] {"E2E OK"});
+        assertTrue(Files.size(WindowDriverRun.target().resolve("e2e-3-turned-away.png")) > 10_000, "a screenshot was saved");
     }
 }
