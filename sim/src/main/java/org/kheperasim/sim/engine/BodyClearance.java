@@ -12,10 +12,8 @@ final class BodyClearance {
     private final DistanceField field;
     private double value;
     private boolean known;
-    /** Where the field's lower bound of the clearance was last looked up, and its value there (mm). */
-    private double anchorX;
-    private double anchorY;
-    private double anchorBelow = Double.NEGATIVE_INFINITY;
+    /** The field's lower bound of the clearance where it was last looked up. */
+    private final ClearanceProof anchor = new ClearanceProof();
 
     BodyClearance(DistanceField field, double x, double y) {
         this.field = field;
@@ -63,22 +61,18 @@ final class BodyClearance {
      *     where it already allows what is asked, the exact value is not needed
      */
     double freeTravelAtLeast(double x, double y, boolean lookUp) {
-        double mx = x - anchorX;
-        double my = y - anchorY;
-        // The clearance shrinks no faster than the body moves away from where it was last looked up.
-        double below = anchorBelow - StrictMath.sqrt(mx * mx + my * my);
+        double below = anchor.at(x, y);
         if (lookUp) {
-            anchorX = x;
-            anchorY = y;
-            anchorBelow = field.clearanceBelow(x, y);
-            below = StrictMath.max(below, anchorBelow);
+            double here = field.clearanceBelow(x, y);
+            anchor.set(x, y, here);
+            below = StrictMath.max(below, here);
         }
         return below - DriveBody.NEAR_MM - Khepera.BODY_RADIUS_MM - DriveBody.CONTACT_EPSILON_MM;
     }
 
     /** The arena was edited: forget the bounds and look the clearance up again. */
     void arenaEdited(double x, double y) {
-        anchorBelow = Double.NEGATIVE_INFINITY;
+        anchor.forget();
         set(at(x, y));
     }
 }

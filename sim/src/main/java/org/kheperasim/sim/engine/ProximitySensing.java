@@ -53,12 +53,10 @@ final class ProximitySensing {
     private int near;
     /**
      * The last proofs that the field leaves a disc empty, for the robot's centre ({@code [COUNT]})
-     * and each sensor's cone: the disc's centre, and how far beyond the needed radius the bound
-     * reached. A disc whose centre has moved less than that is still empty, without a lookup.
+     * and each sensor's cone: a disc whose centre has moved less than the proof's slack is still
+     * empty, without a lookup.
      */
-    private final double[] provenX = new double[IrSensor.COUNT + 1];
-    private final double[] provenY = new double[IrSensor.COUNT + 1];
-    private final double[] provenSlack = new double[IrSensor.COUNT + 1];
+    private final ClearanceProof[] proven = new ClearanceProof[IrSensor.COUNT + 1];
 
     /** What {@link #open} found for the sample being taken: the nearest cap's surface less the sensors' reach, and whether only walls and lamps are within reach. */
     private double capFree;
@@ -76,6 +74,9 @@ final class ProximitySensing {
         double reading = model.noise().reading();
         this.profile = p.profile();
         this.range = profile.rangeMm();
+        for (int k = 0; k < proven.length; k++) {
+            proven[k] = new ClearanceProof();
+        }
         this.coneMid = range / (2 * StrictMath.cos(StrictMath.toRadians(RAY_ANGLES_DEG[RAY_ANGLES_DEG.length - 1])));
         for (int r = 0; r < RAY_ANGLES_DEG.length; r++) {
             rayCos[r] = StrictMath.cos(StrictMath.toRadians(RAY_ANGLES_DEG[r]));
@@ -136,17 +137,12 @@ final class ProximitySensing {
      * free (the clearance changes no faster than the point moves).
      */
     private boolean discEmpty(int k, double x, double y, double radius) {
-        double mx = x - provenX[k];
-        double my = y - provenY[k];
-        double slack = provenSlack[k];
-        if (mx * mx + my * my < slack * slack) {
+        if (proven[k].proves(x, y, radius)) {
             return true;
         }
-        double b = field.clearanceBelow(x, y) - radius;
-        if (b > 0) {
-            provenX[k] = x;
-            provenY[k] = y;
-            provenSlack[k] = b;
+        double below = field.clearanceBelow(x, y);
+        if (below - radius > 0) {
+            proven[k].set(x, y, below);
             return true;
         }
         return false;
@@ -154,7 +150,9 @@ final class ProximitySensing {
 
     /** The arena was edited: the field's earlier proofs no longer hold. */
     void arenaEdited() {
-        java.util.Arrays.fill(provenSlack, 0);
+        for (ClearanceProof p : proven) {
+            p.forget();
+        }
     }
 
     /** The readings of a sample where {@link #open} found nothing in reach: no beam response, only noise. */
