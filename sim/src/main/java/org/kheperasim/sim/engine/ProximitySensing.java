@@ -58,9 +58,8 @@ final class ProximitySensing {
      */
     private final ClearanceProof[] proven = new ClearanceProof[IrSensor.COUNT + 1];
 
-    /** What {@link #open} found for the sample being taken: the nearest cap's surface less the sensors' reach, and whether only walls and lamps are within reach. */
+    /** What {@link #open} found for the sample being taken: the nearest cap's surface less the sensors' reach. */
     private double capFree;
-    private boolean wallsOnly;
 
     ProximitySensing(World world, int self, SensorPlacement placement, RobotModel model, Miscalibration calibration,
             CounterNoise[] noise) {
@@ -125,7 +124,7 @@ final class ProximitySensing {
                 : caps.nearestSurface(robotX, robotY) - SensorPlacement.REACH_MM;
         gatherRobots(robotX, robotY);
         // Only walls and lamps within any beam's reach: the distance field alone can prove a beam empty.
-        wallsOnly = capFree >= range && near == 0;
+        boolean wallsOnly = capFree >= range && near == 0;
         // Nothing within range of any sensor: every beam is empty (no sensor is farther than
         // REACH_MM from the centre, and the field's lower bound of the clearance is exceeded).
         return wallsOnly && discEmpty(IrSensor.COUNT, robotX, robotY, SensorPlacement.REACH_MM + range);
@@ -165,7 +164,9 @@ final class ProximitySensing {
     /** A sample where {@link #open} (just called at this centre) found something within reach. */
     void sampleNear(double robotX, double robotY, double c, double s, long sample, int[] out) {
         double capFree = this.capFree;
-        boolean wallsOnly = this.wallsOnly;
+        // No cap within any beam's reach: the distance field alone can prove a beam free of walls,
+        // lamps and caps (the other robots, not in the grid, are looked at on their own).
+        boolean noCaps = capFree >= range;
         placement.place(robotX, robotY, c, s);
         for (int i = 0; i < IrSensor.COUNT; i++) {
             double px = placement.x[i];
@@ -173,8 +174,10 @@ final class ProximitySensing {
             double dx = placement.dx[i];
             double dy = placement.dy[i];
             double raw = 0;
-            if (wallsOnly && discEmpty(i, px + coneMid * dx, py + coneMid * dy, coneMid)) {
-                // Every beam of this sensor lies in a disc the field proves empty.
+            double midX = px + coneMid * dx;
+            double midY = py + coneMid * dy;
+            if (noCaps && robotsOutside(midX, midY, coneMid) && discEmpty(i, midX, midY, coneMid)) {
+                // Every beam of this sensor lies in a disc that the field proves empty and that no robot enters.
                 out[i] = reading(i, 0, sample);
                 continue;
             }
@@ -186,7 +189,7 @@ final class ProximitySensing {
                 free = StrictMath.min(free, robotsFrom(px, py));
             }
             if (free < range) {
-                raw = beams(px, py, dx, dy, StrictMath.max(0, free - DriveBody.NEAR_MM), wallsOnly);
+                raw = beams(px, py, dx, dy, StrictMath.max(0, free - DriveBody.NEAR_MM), noCaps);
             }
             out[i] = reading(i, raw, sample);
         }
@@ -210,7 +213,7 @@ final class ProximitySensing {
      * The strongest beam response; nothing lies nearer than {@code skip} (the clearance less the
      * estimate's error), so the beams start there instead of walking the empty cells.
      */
-    private double beams(double px, double py, double dx, double dy, double skip, boolean wallsOnly) {
+    private double beams(double px, double py, double dx, double dy, double skip, boolean noCaps) {
         double raw = 0;
         for (int r = 0; r < rayCos.length; r++) {
             // A hit beyond `reach` could not beat the strongest response so far: march no farther.
@@ -222,11 +225,19 @@ final class ProximitySensing {
             double rx = dx * rayCos[r] - dy * raySin[r];
             double ry = dy * rayCos[r] + dx * raySin[r];
             double limit = StrictMath.min(range, reach);
-            if (wallsOnly && empty(px, py, rx, ry, skip, limit)) {
-                continue;
+            double d;
+            double reflect;
+            if (noCaps && empty(px, py, rx, ry, skip, limit)) {
+                // The grid march would find nothing: no wall, lamp or cap along the beam.
+                if (near == 0) {
+                    continue;
+                }
+                d = Double.POSITIVE_INFINITY;
+                reflect = 0;
+            } else {
+                d = skip + grid.castRay(px + skip * rx, py + skip * ry, rx, ry, limit - skip, hit);
+                reflect = d == Double.POSITIVE_INFINITY ? 0 : reflectanceOf(hit.id);
             }
-            double d = skip + grid.castRay(px + skip * rx, py + skip * ry, rx, ry, limit - skip, hit);
-            double reflect = d == Double.POSITIVE_INFINITY ? 0 : reflectanceOf(hit.id);
             if (near > 0) {
                 double dr = robotAlong(px, py, rx, ry);
                 if (dr < d && dr <= limit) {
@@ -311,6 +322,22 @@ final class ProximitySensing {
             nearY[near] = robotY + dy;
             near++;
         });
+    }
+
+    /**
+     * @return true when none of those robots' bodies comes within the disc of radius {@code radius}
+     *     around (x, y), with a margin for rounding
+     */
+    private boolean robotsOutside(double x, double y, double radius) {
+        double clear = radius + Khepera.BODY_RADIUS_MM + 1e-6;
+        for (int k = 0; k < near; k++) {
+            double ex = nearX[k] - x;
+            double ey = nearY[k] - y;
+            if (ex * ex + ey * ey <= clear * clear) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** @return the distance from a sensor to the nearest of those robots' surfaces, mm */
