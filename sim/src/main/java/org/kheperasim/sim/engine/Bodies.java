@@ -133,6 +133,22 @@ final class Bodies {
 
     /** @return the other robot whose surface is nearest to (px, py) within {@code within}, or -1 */
     int nearest(int self, double px, double py, double within) {
+        return scan(self, px, py, within, false);
+    }
+
+    /**
+     * The robot a contact is reported against when several touch: the lowest-numbered one whose
+     * surface lies within {@code within} of (px, py). Not the nearest: two robots pressed against
+     * one from both sides lie at the touching distance to within rounding, and which of them is a
+     * few 1e-15 mm nearer would decide the reported side by chance.
+     *
+     * @return that robot, or -1
+     */
+    int firstTouching(int self, double px, double py, double within) {
+        return scan(self, px, py, within, true);
+    }
+
+    private int scan(int self, double px, double py, double within, boolean lowestIndex) {
         if (count < 2) {
             return -1;
         }
@@ -151,7 +167,7 @@ final class Bodies {
                         double dy = y[k] - py;
                         double d = StrictMath.sqrt(dx * dx + dy * dy) - R;
                         // Ties go to the lower index, whatever the buckets' order.
-                        if (d <= within && (d < best || d == best && k < which)) {
+                        if (d <= within && (lowestIndex ? which < 0 || k < which : d < best || d == best && k < which)) {
                             best = d;
                             which = k;
                         }

@@ -275,7 +275,7 @@ final class DriveBody {
         turnAndMove(nx, ny, c, s);
         room.set(newClearance);
         count(common, diff, fraction);
-        int other = bodies.count() > 1 ? bodies.nearest(self, x, y, Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) : -1;
+        int other = bodies.count() > 1 ? bodies.firstTouching(self, x, y, Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) : -1;
         if (newClearance <= Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) {
             contact = sideOf(field.nearestObstacleX(x, y), field.nearestObstacleY(x, y));
         } else if (other >= 0) {

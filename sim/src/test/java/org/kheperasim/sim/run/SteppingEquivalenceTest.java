@@ -1,6 +1,5 @@
 package org.kheperasim.sim.run;
 
-import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -11,8 +10,6 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.kheperasim.sim.engine.CapView;
-import org.kheperasim.sim.engine.RobotView;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.Snapshot;
 
@@ -26,7 +23,6 @@ import org.kheperasim.sim.engine.Snapshot;
 @Timeout(value = 600, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class SteppingEquivalenceTest {
     private static final double SECONDS = 300;
-    private static final double POSE_MM = 1e-3;
 
     static Stream<Arguments> runs() {
         List<Arguments> out = new ArrayList<>();
@@ -55,35 +51,7 @@ class SteppingEquivalenceTest {
         Run events = run(arena, controller, "events");
         assertEquals(tick.snapshots.size(), events.snapshots.size(), "snapshots");
         assertTrue(tick.snapshots.size() > SECONDS * 90, "a snapshot every 10 ms");
-        for (int k = 0; k < tick.snapshots.size(); k++) {
-            Snapshot a = tick.snapshots.get(k);
-            Snapshot b = events.snapshots.get(k);
-            String at = " at " + a.timeSeconds() + " s";
-            assertEquals(a.timeNanos(), b.timeNanos(), "time" + at);
-            for (int i = 0; i < a.robots().size(); i++) {
-                RobotView p = a.robots().get(i);
-                RobotView q = b.robots().get(i);
-                assertArrayEquals(p.proximity(), q.proximity(), "proximity readings" + at);
-                assertArrayEquals(p.light(), q.light(), "light readings" + at);
-                assertEquals(p.speedLeft(), q.speedLeft(), "left speed" + at);
-                assertEquals(p.speedRight(), q.speedRight(), "right speed" + at);
-                assertEquals(p.encoderLeft(), q.encoderLeft(), "left encoder" + at);
-                assertEquals(p.encoderRight(), q.encoderRight(), "right encoder" + at);
-                assertEquals(p.contact(), q.contact(), "contact" + at);
-                assertEquals(p.collisions(), q.collisions(), "collisions" + at);
-                assertEquals(p.gripper(), q.gripper(), "gripper" + at);
-                assertEquals(p.x(), q.x(), POSE_MM, "x" + at);
-                assertEquals(p.y(), q.y(), POSE_MM, "y" + at);
-                assertEquals(0, StrictMath.sin(StrictMath.toRadians(p.headingDeg() - q.headingDeg())), 1e-6, "heading" + at);
-            }
-            for (int c = 0; c < a.caps().size(); c++) {
-                CapView p = a.caps().get(c);
-                CapView q = b.caps().get(c);
-                assertEquals(p.heldBy(), q.heldBy(), "cap " + c + " holder" + at);
-                assertEquals(p.x(), q.x(), POSE_MM, "cap " + c + " x" + at);
-                assertEquals(p.y(), q.y(), POSE_MM, "cap " + c + " y" + at);
-            }
-        }
+        SameRun.assertSameSnapshots(tick.snapshots, events.snapshots);
         assertEquals(tick.result.first().regionsEntered(), events.result.first().regionsEntered(), "regions entered");
         assertEquals(tick.result.capsInRegions(), events.result.capsInRegions(), "caps in regions");
     }
