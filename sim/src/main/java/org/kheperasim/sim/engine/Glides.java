@@ -39,13 +39,21 @@ final class Glides {
      *     any number of at least {@code wanted} when it can glide that far
      */
     long ticks(long wanted) {
+        return ticks(wanted, false);
+    }
+
+    /**
+     * @param othersApart true when the caller knows that no other robot can come within touch of
+     *     this one while it glides, nor a sample be taken on the way: the other robots then set no bound
+     */
+    long ticks(long wanted, boolean othersApart) {
         if (model.stepping() == RobotModel.Stepping.TICK || gripper.busy()) {
             return 0;
         }
         if (body.still()) {
             return Long.MAX_VALUE;
         }
-        double others = StrictMath.min(othersFreeTravelMm(),
+        double others = StrictMath.min(othersApart ? Double.POSITIVE_INFINITY : othersFreeTravelMm(),
                 StrictMath.min(capContacts.freeTravelMm(body.x(), body.y()), coverage.freeTravelMm(body.x(), body.y())));
         // The body's clearance is looked up only when its cheap lower bound does not already allow the glide wanted.
         long ticks = glideTicksFor(StrictMath.min(body.freeTravelAtLeastMm(false), others));

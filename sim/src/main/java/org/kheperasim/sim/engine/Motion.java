@@ -12,8 +12,11 @@ import java.util.List;
  *       seen, even if both drive straight at each other) moves on its own: it glides as far as its
  *       own clearance allows, and steps a tick with contact handling where it must, its poll
  *       samples taken on the way (exactly what a lone robot does);</li>
- *   <li>robots that may meet move together, a tick at a time, in robot order, so each sees the
- *       others where they are at that tick.</li>
+ *   <li>robots that may see each other move on their own between their samples, each sample
+ *       seeing the others where they are at its tick, and those that may touch each other a tick at
+ *       a time, in robot order ({@link Crowd});</li>
+ *   <li>when a robot among them may push or carry a cap, or its gripper moves, they all move a
+ *       tick at a time, in robot order, so each sees the others where they are at that tick.</li>
  * </ul>
  * So a robot near a wall no longer makes a far-away one step every tick, and the cost of a swarm
  * grows with the robots that are near each other, not with all of them.
@@ -25,10 +28,12 @@ final class Motion {
     private final List<SimRobot> robots;
     private final Bodies bodies;
     private final List<SimRobot> together = new ArrayList<>();
+    private final Crowd crowd;
 
     Motion(List<SimRobot> robots, Bodies bodies) {
         this.robots = robots;
         this.bodies = bodies;
+        this.crowd = new Crowd(robots, bodies);
     }
 
     /**
@@ -53,7 +58,7 @@ final class Motion {
                 together.add(r);
             }
         }
-        if (together.isEmpty()) {
+        if (together.isEmpty() || crowd.move(together, start, n, fastest)) {
             return;
         }
         for (long k = 0; k < n; k++) {

@@ -220,7 +220,15 @@ final class RobotLink {
      * {@code now}. Call it for every tick at which {@link #nextPollDue} falls, in order.
      */
     void pollDue(long now) {
-        while (polling && sampleAt <= now) {
+        pollDue(now, true);
+    }
+
+    /**
+     * As {@link #pollDue(long)}, but with {@code proximityToo} false it stops before a proximity
+     * sample (one that must see the other robots where they are at {@code now}).
+     */
+    void pollDue(long now, boolean proximityToo) {
+        while (polling && sampleAt <= now && (proximityToo || step != PROXIMITY)) {
             int k = step;
             if (pending[k]) {
                 deliver(k);
@@ -243,6 +251,11 @@ final class RobotLink {
             step = k + 1 == CYCLE.length ? 0 : k + 1;
             sampleAt = deliverAt[k] + commandNanos[step];
         }
+    }
+
+    /** @return true when the poll cycle's next sample is a proximity sample */
+    boolean proximityNext() {
+        return step == PROXIMITY;
     }
 
     /** @return when the poll cycle's next sample is taken, ns ({@link Long#MAX_VALUE}: not polling) */

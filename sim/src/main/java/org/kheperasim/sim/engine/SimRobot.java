@@ -2,8 +2,6 @@ package org.kheperasim.sim.engine;
 
 import java.util.Map;
 import java.util.SplittableRandom;
-import org.kheperasim.api.ArmPosition;
-import org.kheperasim.api.GripperState;
 import org.kheperasim.api.IrSensor;
 import org.kheperasim.link.timing.LinkTiming;
 import org.kheperasim.sim.arena.Pose;
@@ -46,6 +44,7 @@ public final class SimRobot {
     /** What the link's commands and poll samples do to the parts. */
     private final LinkEnd end;
     private final Glides glides;
+    private final ControllerLink controls;
 
     /**
      * @param id the robot's index in the engine
@@ -81,6 +80,7 @@ public final class SimRobot {
         this.glides = new Glides(id, model, body, gripper, capContacts, coverage, world.bodies(), unseenMm);
         this.end = new LinkEnd(body, sense, proximity, light, gripper, coverage);
         this.link = new RobotLink(model.link().timing(), end);
+        this.controls = new ControllerLink(this, link);
         sense.at(0);
         link.prime();
     }
@@ -168,6 +168,44 @@ public final class SimRobot {
         return -Math.floorDiv(-nanos, Engine.TICK_NANOS) * Engine.TICK_NANOS;
     }
 
+    // ------------------------------------------------------------------ moving among others (Crowd)
+
+    /** @return the tick at whose start the poll cycle's next sample is taken (far in the future: never) */
+    long nextPollTick() {
+        long due = link.nextPollDue();
+        return due == Long.MAX_VALUE ? Long.MAX_VALUE / 2 : -Math.floorDiv(-due, Engine.TICK_NANOS);
+    }
+
+    /** @return true when the poll cycle's next sample is a proximity sample (it sees the other robots) */
+    boolean proximityNext() {
+        return link.proximityNext();
+    }
+
+    /**
+     * Take the poll samples due at the tick at {@code now}, where the robot has been moved to;
+     * with {@code proximityToo} false, stop before a proximity sample.
+     */
+    void sampleAt(long now, boolean proximityToo) {
+        sense.at(0);
+        link.pollDue(now, proximityToo);
+        nextDue = StrictMath.min(nextHardDue, link.nextPollDue());
+    }
+
+    /** As {@link #glideTicks}, for a caller that knows no other robot can come within touch meanwhile. */
+    long glideTicksApart(long wanted) {
+        return glides.ticks(wanted, true);
+    }
+
+    /**
+     * @return true when the robot can move on its own among the others for {@code reachMm} of
+     *     travel: its model does not step every tick, its gripper neither moves nor carries a cap,
+     *     and no cap is within that reach of its pushing parts
+     */
+    boolean movesApartFromCaps(double reachMm) {
+        return model.stepping() != RobotModel.Stepping.TICK && !gripper.busy() && gripper.heldCap() < 0
+                && capContacts.freeTravelMm(body.x(), body.y()) > reachMm;
+    }
+
     /** A protocol client drives the robot itself: the simulated controller's link stops polling. */
     void servedDirectly() {
         link.stopPolling();
@@ -207,38 +245,20 @@ public final class SimRobot {
 
     // ------------------------------------------------------------------ the controller's side (through the link)
 
-    /** A controller asks for wheel speeds at simulated time {@code now}, units; they act after the wire time. */
-    public void commandSpeeds(long now, int left, int right) {
-        link.commandSpeeds(now, left, right);
-        commandQueued();
+    /** @return what a controller does to this robot and reads from it, through the simulated serial link */
+    public ControllerLink controls() {
+        return controls;
     }
 
-    private void commandQueued() {
+    /** A command went onto the link: the robot needs the engine when it arrives. */
+    void commandQueued() {
         nextHardDue = StrictMath.min(nextHardDue, link.nextCommandDue());
         nextDue = StrictMath.min(nextDue, nextHardDue);
     }
 
-    /** A controller sets the position counters ({@code G}), pulses. */
-    public void commandPositions(long now, int left, int right) {
-        link.commandPositions(now, left, right);
-        commandQueued();
-    }
-
-    /** A controller moves the arm up or down ({@code T,1,E,pos}). */
-    public void commandArm(long now, ArmPosition position) {
-        commandArm(now, position == ArmPosition.DOWN ? GripperTurret.ARM_DOWN : GripperTurret.ARM_UP);
-    }
-
-    /** A controller moves the arm to a position, 0..255, larger = lower. */
-    public void commandArm(long now, int position) {
-        link.commandArm(now, position);
-        commandQueued();
-    }
-
-    /** A controller opens or closes the fingers ({@code T,1,D,0|1}). */
-    public void commandFingers(long now, GripperState state) {
-        link.commandFingers(now, state == GripperState.CLOSED);
-        commandQueued();
+    /** @return simulated time the robot has been moved to, ns */
+    long movedTo() {
+        return movedTo;
     }
 
     /** Stop the wheels at once: the controller has ended, failed or been stopped (robot-link sends D,0,0). */
@@ -246,46 +266,6 @@ public final class SimRobot {
         onBoard.speedMode();
         link.reset();
         body.setSpeeds(0, 0);
-    }
-
-    /** @param i sensor index @return the proximity value a controller sees at the time the robot has been moved to */
-    public int visibleProximity(int i) {
-        return link.visibleProximity(movedTo, i);
-    }
-
-    /** @param i sensor index @return the light value a controller sees at the time the robot has been moved to */
-    public int visibleLight(int i) {
-        return link.visibleLight(movedTo, i);
-    }
-
-    /** @param now the controller's simulated time, ns @param i sensor index @return the proximity value it sees */
-    public int visibleProximity(long now, int i) {
-        return link.visibleProximity(now, i);
-    }
-
-    /** @param now the controller's simulated time, ns @param i sensor index @return the light value it sees */
-    public int visibleLight(long now, int i) {
-        return link.visibleLight(now, i);
-    }
-
-    /** @param now the controller's simulated time, ns @return the left position counter it sees, pulses */
-    public int visibleEncoderLeft(long now) {
-        return link.visibleCounterLeft(now);
-    }
-
-    /** @param now the controller's simulated time, ns @return the right position counter it sees, pulses */
-    public int visibleEncoderRight(long now) {
-        return link.visibleCounterRight(now);
-    }
-
-    /** @return the left speed the controller last asked for, units */
-    public int askedLeft() {
-        return link.askedLeft();
-    }
-
-    /** @return the right speed the controller last asked for, units */
-    public int askedRight() {
-        return link.askedRight();
     }
 
     /** @return the gripper turret, as the controller and a protocol client see it */

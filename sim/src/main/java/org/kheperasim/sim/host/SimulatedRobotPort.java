@@ -23,7 +23,7 @@ final class SimulatedRobotPort implements RobotPort {
     @Override
     public int proximity(int index) {
         clock.enter();
-        int v = robot.visibleProximity(clock.now(), index);
+        int v = robot.controls().visibleProximity(clock.now(), index);
         clock.leave();
         return v;
     }
@@ -31,7 +31,7 @@ final class SimulatedRobotPort implements RobotPort {
     @Override
     public int ambientLight(int index) {
         clock.enter();
-        int v = robot.visibleLight(clock.now(), index);
+        int v = robot.controls().visibleLight(clock.now(), index);
         clock.leave();
         return v;
     }
@@ -39,14 +39,14 @@ final class SimulatedRobotPort implements RobotPort {
     @Override
     public void setSpeeds(int left, int right) {
         clock.enter();
-        robot.commandSpeeds(clock.now(), left, right);
+        robot.controls().commandSpeeds(clock.now(), left, right);
         clock.leave();
     }
 
     @Override
     public int leftSpeed() {
         clock.enter();
-        int v = robot.askedLeft();
+        int v = robot.controls().askedLeft();
         clock.leave();
         return v;
     }
@@ -54,7 +54,7 @@ final class SimulatedRobotPort implements RobotPort {
     @Override
     public int rightSpeed() {
         clock.enter();
-        int v = robot.askedRight();
+        int v = robot.controls().askedRight();
         clock.leave();
         return v;
     }
@@ -62,7 +62,7 @@ final class SimulatedRobotPort implements RobotPort {
     @Override
     public int leftPosition() {
         clock.enter();
-        int v = robot.visibleEncoderLeft(clock.now());
+        int v = robot.controls().visibleEncoderLeft(clock.now());
         clock.leave();
         return v;
     }
@@ -70,7 +70,7 @@ final class SimulatedRobotPort implements RobotPort {
     @Override
     public int rightPosition() {
         clock.enter();
-        int v = robot.visibleEncoderRight(clock.now());
+        int v = robot.controls().visibleEncoderRight(clock.now());
         clock.leave();
         return v;
     }
@@ -78,14 +78,14 @@ final class SimulatedRobotPort implements RobotPort {
     @Override
     public void setPositions(int left, int right) {
         clock.enter();
-        robot.commandPositions(clock.now(), left, right);
+        robot.controls().commandPositions(clock.now(), left, right);
         clock.leave();
     }
 
     @Override
     public void setArm(ArmPosition position) {
         clock.enter();
-        robot.commandArm(clock.now(), position);
+        robot.controls().commandArm(clock.now(), position);
         clock.leave();
     }
 
@@ -108,7 +108,7 @@ final class SimulatedRobotPort implements RobotPort {
     @Override
     public void setFingers(GripperState fingers) {
         clock.enter();
-        robot.commandFingers(clock.now(), fingers);
+        robot.controls().commandFingers(clock.now(), fingers);
         clock.leave();
     }
 

@@ -43,7 +43,7 @@ class CapPushTest {
     void headOnPushCarriesTheCapStraightAhead() {
         SimRobot[] r = new SimRobot[1];
         Engine e = engine("cap 360 600\n", r);
-        r[0].commandSpeeds(0, 5, 5);
+        r[0].controls().commandSpeeds(0, 5, 5);
         run(e, 3);
         CapView c = cap(e, 0);
         assertTrue(c.x() > 360 + 60, "the cap is carried ahead: x " + c.x());
@@ -59,7 +59,7 @@ class CapPushTest {
     void glancingTouchSlidesTheCapToThatSide(double offset, int side) {
         SimRobot[] r = new SimRobot[1];
         Engine e = engine("cap 360 " + (600 + offset) + "\n", r);
-        r[0].commandSpeeds(0, 5, 5);
+        r[0].controls().commandSpeeds(0, 5, 5);
         run(e, 4);
         CapView c = cap(e, 0);
         double dir = direction(360, 600 + offset, c);
@@ -75,7 +75,7 @@ class CapPushTest {
         SimRobot[] r = new SimRobot[1];
         // The wall's face is at x = 496.
         Engine e = engine("cap 360 600\nwall 500 300 500 900 8\n", r);
-        r[0].commandSpeeds(0, 5, 5);
+        r[0].controls().commandSpeeds(0, 5, 5);
         run(e, 6);
         CapView c = cap(e, 0);
         assertEquals(496 - 9, c.x(), 2.5, "the cap stops at the wall's face");
@@ -88,7 +88,7 @@ class CapPushTest {
         run(e, 1);
         assertEquals(enc, r[0].encoderLeft(), "the encoders stall as against a wall");
 
-        r[0].commandSpeeds(e.timeNanos(), -5, -5);
+        r[0].controls().commandSpeeds(e.timeNanos(), -5, -5);
         run(e, 1);
         assertFalse(r[0].blocked(), "it may back away");
         assertEquals(c.x(), cap(e, 0).x(), 0.0, "the cap stays at the wall");
@@ -98,7 +98,7 @@ class CapPushTest {
     void twoCapsInARowAreBothPushedAhead() {
         SimRobot[] r = new SimRobot[1];
         Engine e = engine("cap 360 600\ncap 379 600\n", r);
-        r[0].commandSpeeds(0, 5, 5);
+        r[0].controls().commandSpeeds(0, 5, 5);
         run(e, 3);
         CapView first = cap(e, 0);
         CapView second = cap(e, 1);
@@ -114,7 +114,7 @@ class CapPushTest {
     void aRowOfCapsAgainstAWallBlocksTheRobot() {
         SimRobot[] r = new SimRobot[1];
         Engine e = engine("cap 360 600\ncap 379 600\nwall 440 300 440 900 8\n", r);
-        r[0].commandSpeeds(0, 5, 5);
+        r[0].controls().commandSpeeds(0, 5, 5);
         run(e, 5);
         assertTrue(r[0].blocked());
         CapView first = cap(e, 0);
@@ -128,10 +128,10 @@ class CapPushTest {
         SimRobot[] r = new SimRobot[1];
         Engine withCap = engine("cap 345 600\n", r);
         run(withCap, 0.1);
-        int seen = StrictMath.max(r[0].visibleProximity(2), r[0].visibleProximity(3));
+        int seen = StrictMath.max(r[0].controls().visibleProximity(2), r[0].controls().visibleProximity(3));
         Engine without = engine("", r);
         run(without, 0.1);
-        int empty = StrictMath.max(r[0].visibleProximity(2), r[0].visibleProximity(3));
+        int empty = StrictMath.max(r[0].controls().visibleProximity(2), r[0].controls().visibleProximity(3));
         assertTrue(seen > 300, "a cap 11 mm ahead reads high: " + seen);
         assertTrue(empty < 50, "nothing ahead reads low: " + empty);
     }

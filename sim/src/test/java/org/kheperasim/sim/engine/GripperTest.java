@@ -22,7 +22,7 @@ class GripperTest {
         SimRobot[] r = new SimRobot[1];
         Engine e = engine("", r);
         SimRobot robot = r[0];
-        robot.commandArm(0, ArmPosition.DOWN);
+        robot.controls().commandArm(0, ArmPosition.DOWN);
         run(e, 0.010);
         assertTrue(robot.gripper().armMoving(), "the command has arrived (its wire time is ~3 ms at 38400 baud)");
         run(e, 0.490);
@@ -38,7 +38,7 @@ class GripperTest {
         Settings slow = Settings.defaults().withNoise(0).with("gripper.armTravelMs", "3000");
         Engine e2 = new Engine(new World(e.world().arena()), 1);
         SimRobot r2 = e2.addRobot("slow", new org.kheperasim.sim.arena.Pose(300, 600, 0), slow);
-        r2.commandArm(0, ArmPosition.DOWN);
+        r2.controls().commandArm(0, ArmPosition.DOWN);
         run(e2, 2.0);
         assertTrue(r2.gripper().armMoving(), "a 3 s arm is still travelling after 2 s");
     }
@@ -47,7 +47,7 @@ class GripperTest {
     void theFingersTakeTheirTimeToClose() {
         SimRobot[] r = new SimRobot[1];
         Engine e = engine("", r);
-        r[0].commandFingers(0, GripperState.CLOSED);
+        r[0].controls().commandFingers(0, GripperState.CLOSED);
         run(e, 0.3);
         assertSame(GripperState.OPEN, r[0].gripper().fingers(), "still closing after 0.3 s of 0.4 s");
         run(e, 0.2);
@@ -61,19 +61,19 @@ class GripperTest {
         SimRobot[] r = new SimRobot[1];
         Engine e = engine("cap " + GRIP_X + " 610\n", r);
         assertFalse(r[0].gripper().objectPresent(), "with the arm up the barrier is above the cap");
-        r[0].commandArm(0, ArmPosition.DOWN);
+        r[0].controls().commandArm(0, ArmPosition.DOWN);
         run(e, 1.1);
         assertTrue(r[0].gripper().objectPresent(), "a cap 10 mm off the axis still crosses the line");
 
         SimRobot[] empty = new SimRobot[1];
         Engine e2 = engine("cap " + GRIP_X + " 630\n", empty);
-        empty[0].commandArm(0, ArmPosition.DOWN);
+        empty[0].controls().commandArm(0, ArmPosition.DOWN);
         run(e2, 1.1);
         assertFalse(empty[0].gripper().objectPresent(), "a cap beside the fingers does not");
 
         SimRobot[] wall = new SimRobot[1];
         Engine e3 = engine("wall " + GRIP_X + " 500 " + GRIP_X + " 700 4\n", wall);
-        wall[0].commandArm(0, ArmPosition.DOWN);
+        wall[0].controls().commandArm(0, ArmPosition.DOWN);
         run(e3, 1.1);
         assertTrue(wall[0].gripper().objectPresent(), "anything breaking the line is detected, a wall too");
     }
@@ -86,9 +86,9 @@ class GripperTest {
                 + "wall 600 0 600 540 8\nwall 600 660 600 1219.2 8\n"
                 + "region target 700 400 1100 800\n", r);
         SimRobot robot = r[0];
-        robot.commandArm(0, ArmPosition.DOWN);
+        robot.controls().commandArm(0, ArmPosition.DOWN);
         run(e, 1.1);
-        robot.commandFingers(e.timeNanos(), GripperState.CLOSED);
+        robot.controls().commandFingers(e.timeNanos(), GripperState.CLOSED);
         run(e, 0.5);
         assertSame(GripperState.CLOSED, robot.gripper().fingers());
         assertEquals(0, robot.gripper().heldCap(), "the cap between the fingers is held");
@@ -96,11 +96,11 @@ class GripperTest {
         assertEquals(120, robot.gripper().resistivity(), "a held cap reads the cap's resistivity");
         assertEquals(OccupancyGridIds.FLOOR, e.world().grid().idAt(GRIP_X, 600), "a held cap leaves the grid");
 
-        robot.commandArm(e.timeNanos(), ArmPosition.UP);
+        robot.controls().commandArm(e.timeNanos(), ArmPosition.UP);
         run(e, 1.1);
-        robot.commandSpeeds(e.timeNanos(), 5, 5);
+        robot.controls().commandSpeeds(e.timeNanos(), 5, 5);
         run(e, 14);   // about 540 mm: through the doorway into the other room
-        robot.commandSpeeds(e.timeNanos(), 0, 0);
+        robot.controls().commandSpeeds(e.timeNanos(), 0, 0);
         run(e, 0.1);
         assertTrue(robot.x() > 700, "through the doorway: x " + robot.x());
         CapView carried = cap(e, 0);
@@ -108,9 +108,9 @@ class GripperTest {
         assertEquals(robot.x() + GripperTurret.GRIP_MM, carried.x(), 1e-6, "the cap travels in the gripper");
         assertEquals(0, e.world().capsInRegions().get("target"), "a held cap does not lie in a region");
 
-        robot.commandArm(e.timeNanos(), ArmPosition.DOWN);
+        robot.controls().commandArm(e.timeNanos(), ArmPosition.DOWN);
         run(e, 1.1);
-        robot.commandFingers(e.timeNanos(), GripperState.OPEN);
+        robot.controls().commandFingers(e.timeNanos(), GripperState.OPEN);
         run(e, 0.5);
         CapView dropped = cap(e, 0);
         assertFalse(dropped.held());
@@ -128,22 +128,22 @@ class GripperTest {
         // Cap 0 at the grip point; cap 1 ahead, where the grip point will be after a short drive.
         Engine e = engine("cap " + GRIP_X + " 600\ncap " + (GRIP_X + 40) + " 600\n", r);
         SimRobot robot = r[0];
-        robot.commandArm(0, ArmPosition.DOWN);
+        robot.controls().commandArm(0, ArmPosition.DOWN);
         run(e, 1.1);
-        robot.commandFingers(e.timeNanos(), GripperState.CLOSED);
+        robot.controls().commandFingers(e.timeNanos(), GripperState.CLOSED);
         run(e, 0.5);
         assertEquals(0, robot.gripper().heldCap());
-        robot.commandArm(e.timeNanos(), ArmPosition.UP);
+        robot.controls().commandArm(e.timeNanos(), ArmPosition.UP);
         run(e, 1.1);
-        robot.commandSpeeds(e.timeNanos(), 2, 2);   // 16 mm/s: about 30 mm, short of touching cap 1 (40 mm)
+        robot.controls().commandSpeeds(e.timeNanos(), 2, 2);   // 16 mm/s: about 30 mm, short of touching cap 1 (40 mm)
         run(e, 1.9);
-        robot.commandSpeeds(e.timeNanos(), 0, 0);
+        robot.controls().commandSpeeds(e.timeNanos(), 0, 0);
         run(e, 0.1);
         double gripX = robot.x() + GripperTurret.GRIP_MM;
         CapView other = cap(e, 1);
         assertTrue(StrictMath.hypot(other.x() - gripX, other.y() - 600) < 18, "the spot under the gripper is taken");
 
-        robot.commandFingers(e.timeNanos(), GripperState.OPEN);
+        robot.controls().commandFingers(e.timeNanos(), GripperState.OPEN);
         run(e, 0.5);
         CapView dropped = cap(e, 0);
         assertFalse(dropped.held());

@@ -30,7 +30,7 @@ class LightSensorTest {
         for (int k = 1; k <= 3000; k++) {
             e.runUntil(k * cycle + cycle / 2);
             for (int i = 0; i < 8; i++) {
-                int v = r.visibleLight(i);
+                int v = r.controls().visibleLight(i);
                 readings++;
                 assertTrue(StrictMath.abs(v - 480) <= 3, "darkness deviates by at most 0.5%: " + v);
                 if (v != 480) {
@@ -45,8 +45,8 @@ class LightSensorTest {
     @Test
     void aLampAheadBrightensTheFrontSensorsAndNotTheBackOnes() {
         SimRobot r = robotIn("light 420 600 range 400\n", Settings.defaults().withNoise(0));
-        int front = r.visibleLight(2);
-        int back = r.visibleLight(6);
+        int front = r.controls().visibleLight(2);
+        int back = r.controls().visibleLight(6);
         assertTrue(front < 300, "front sensors see the lamp 95 mm ahead: " + front);
         assertEquals(480, back, "back sensors face away from the lamp");
     }
@@ -55,13 +55,13 @@ class LightSensorTest {
     void aWallBetweenTheLampAndTheRobotCastsAShadow() {
         SimRobot lit = robotIn("light 420 600 range 400\n", Settings.defaults().withNoise(0));
         SimRobot shaded = robotIn("light 420 600 range 400\nwall 380 500 380 700 8\n", Settings.defaults().withNoise(0));
-        assertTrue(lit.visibleLight(2) < 300);
-        assertEquals(480, shaded.visibleLight(2), "the wall hides the lamp");
+        assertTrue(lit.controls().visibleLight(2) < 300);
+        assertEquals(480, shaded.controls().visibleLight(2), "the wall hides the lamp");
     }
 
     @Test
     void aLampOutOfRangeIsDark() {
         SimRobot r = robotIn("light 1000 600 range 300\n", Settings.defaults().withNoise(0));
-        assertEquals(480, r.visibleLight(2));
+        assertEquals(480, r.controls().visibleLight(2));
     }
 }

@@ -31,7 +31,7 @@ class MotionTest {
     void straightAtFiveUnitsCovers40MillimetresASecond() {
         SimRobot[] r = new SimRobot[1];
         Engine e = engine(r, new Pose(300, 600, 0));
-        r[0].commandSpeeds(0, 5, 5);
+        r[0].controls().commandSpeeds(0, 5, 5);
         run(e, 5);
         // The command takes its wire time (~2.4 ms at 38400 baud) to reach the robot.
         double delay = r[0].link().speedCommandDelayNanos(5, 5) / 1e9;
@@ -46,7 +46,7 @@ class MotionTest {
     void opposedWheelsTurnOnTheSpot() {
         SimRobot[] r = new SimRobot[1];
         Engine e = engine(r, new Pose(300, 600, 0));
-        r[0].commandSpeeds(0, -3, 3);
+        r[0].controls().commandSpeeds(0, -3, 3);
         run(e, 1.0);
         double seconds = 1.0 - StrictMath.ceil(r[0].link().speedCommandDelayNanos(-3, 3) / 1e6) / 1000;
         double expectedDeg = StrictMath.toDegrees(2 * 24.0 * seconds / Khepera.WHEEL_BASE_MM);
@@ -60,7 +60,7 @@ class MotionTest {
     void encodersStallWhileTheRobotIsPushedAgainstAWall() {
         SimRobot[] r = new SimRobot[1];
         Engine e = engine(r, new Pose(800, 600, 0));
-        r[0].commandSpeeds(0, 3, 3);
+        r[0].controls().commandSpeeds(0, 3, 3);
         run(e, 8);
         assertTrue(r[0].blocked(), "the robot should be stopped by the wall");
         assertSame(Contact.FRONT, r[0].contact());
@@ -77,7 +77,7 @@ class MotionTest {
         assertEquals(896 - Khepera.BODY_RADIUS_MM, r[0].x(), 2.5);
 
         // It may back away: the encoders count again.
-        r[0].commandSpeeds(e.timeNanos(), -3, -3);
+        r[0].controls().commandSpeeds(e.timeNanos(), -3, -3);
         run(e, 1);
         assertTrue(r[0].encoderLeft() < left - 250, "backing away counts down");
         assertSame(Contact.NONE, r[0].contact());
@@ -87,13 +87,13 @@ class MotionTest {
     void turningAwayFromAWallIsAllowedWhileTouching() {
         SimRobot[] r = new SimRobot[1];
         Engine e = engine(r, new Pose(800, 600, 0));
-        r[0].commandSpeeds(0, 3, 3);
+        r[0].controls().commandSpeeds(0, 3, 3);
         run(e, 8);
         assertTrue(r[0].blocked());
-        r[0].commandSpeeds(e.timeNanos(), -3, 3);
+        r[0].controls().commandSpeeds(e.timeNanos(), -3, 3);
         run(e, 2);
         assertTrue(r[0].headingDeg() > 80, "turned on the spot: " + r[0].headingDeg());
-        r[0].commandSpeeds(e.timeNanos(), 3, 3);
+        r[0].controls().commandSpeeds(e.timeNanos(), 3, 3);
         run(e, 2);
         assertTrue(r[0].y() > 640, "drives off along the wall: y = " + r[0].y());
     }

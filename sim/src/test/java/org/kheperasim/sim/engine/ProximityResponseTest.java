@@ -40,8 +40,8 @@ class ProximityResponseTest {
         int last = -1;
         for (int t = 0; t < 20_000; t++) {
             engine.step();
-            int v2 = robot.visibleProximity(2);
-            int v3 = robot.visibleProximity(3);
+            int v2 = robot.controls().visibleProximity(2);
+            int v3 = robot.controls().visibleProximity(3);
             assertTrue(StrictMath.abs(v2 - expected) <= 5 * sigma + 1,
                     "sensor 2 read " + v2 + ", expected " + expected + " +/- " + 5 * sigma);
             assertTrue(StrictMath.abs(v3 - expected) <= 5 * sigma + 1,

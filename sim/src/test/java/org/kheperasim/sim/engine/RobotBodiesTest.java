@@ -29,8 +29,8 @@ class RobotBodiesTest {
         Engine e = engine("");
         SimRobot a = e.addRobot("a", new Pose(300, 600, 0), EXACT);
         SimRobot b = e.addRobot("b", new Pose(500, 605, 180), EXACT);
-        a.commandSpeeds(0, 5, 5);
-        b.commandSpeeds(0, 5, 5);
+        a.controls().commandSpeeds(0, 5, 5);
+        b.controls().commandSpeeds(0, 5, 5);
         double closest = Double.POSITIVE_INFINITY;
         for (int ms = 0; ms < 6000; ms += 10) {
             e.runUntil(e.timeNanos() + 10_000_000L);
@@ -53,7 +53,7 @@ class RobotBodiesTest {
         Engine e = engine("");
         SimRobot a = e.addRobot("a", new Pose(300, 600, 0), EXACT);
         SimRobot b = e.addRobot("b", new Pose(355, 600, 0), EXACT);
-        a.commandSpeeds(0, -3, -3);
+        a.controls().commandSpeeds(0, -3, -3);
         e.runUntil(1_000_000_000L);
         assertTrue(a.x() < 290, "it backed away from the robot it touched: x " + a.x());
         assertEquals(0, a.collisions());
@@ -70,11 +70,11 @@ class RobotBodiesTest {
         e.runUntil(200_000_000L);
         // Sensors 2 and 3 look straight ahead.
         for (int i : new int[] {2, 3}) {
-            int seen = a.visibleProximity(i);
-            int empty = solo.visibleProximity(i);
+            int seen = a.controls().visibleProximity(i);
+            int empty = solo.controls().visibleProximity(i);
             assertTrue(seen > empty + 200, "front sensor " + i + " sees the robot: " + seen + " (nothing ahead: " + empty + ")");
         }
-        int back = a.visibleProximity(6);
+        int back = a.controls().visibleProximity(6);
         assertTrue(back < 100, "the back sensors see nothing: " + back);
     }
 
@@ -88,8 +88,8 @@ class RobotBodiesTest {
         // The other robot's nearest point is where the wall's face is: 36 mm ahead of the sensors' rim.
         e.addRobot("b", new Pose(363.5 + R, 600, 0), EXACT);
         e.runUntil(200_000_000L);
-        int wall = StrictMath.max(w.visibleProximity(2), w.visibleProximity(3));
-        int robot = StrictMath.max(a.visibleProximity(2), a.visibleProximity(3));
+        int wall = StrictMath.max(w.controls().visibleProximity(2), w.controls().visibleProximity(3));
+        int robot = StrictMath.max(a.controls().visibleProximity(2), a.controls().visibleProximity(3));
         assertTrue(robot < wall && robot > 0.5 * wall, "robot (reflectance 0.8, and round) " + robot + " vs wall " + wall);
     }
 
@@ -98,7 +98,7 @@ class RobotBodiesTest {
         Engine e = engine("cap 360 600\n");
         SimRobot pusher = e.addRobot("a", new Pose(300, 600, 0), EXACT);
         SimRobot still = e.addRobot("b", new Pose(460, 600, 0), EXACT);
-        pusher.commandSpeeds(0, 5, 5);
+        pusher.controls().commandSpeeds(0, 5, 5);
         e.runUntil(6_000_000_000L);
         CapView c = e.world().caps().get(0);
         double capToStill = StrictMath.hypot(c.x() - still.x(), c.y() - still.y());

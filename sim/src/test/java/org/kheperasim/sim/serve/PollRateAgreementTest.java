@@ -48,7 +48,7 @@ class PollRateAgreementTest {
         for (long t = Engine.TICK_NANOS; t <= end; t += Engine.TICK_NANOS) {
             engine.runUntil(t);
             for (int i = 0; i < 8; i++) {
-                now[i] = robot.visibleProximity(t, i);
+                now[i] = robot.controls().visibleProximity(t, i);
             }
             if (!Arrays.equals(now, last)) {
                 changes++;

@@ -1,0 +1,205 @@
+package org.kheperasim.sim.engine;
+
+import java.util.Arrays;
+import java.util.List;
+
+/**
+ * Moves the robots that may see each other during a stretch, without stepping them all tick by
+ * tick. Within a stretch nothing but poll samples falls due (no command, noise redraw, controller
+ * or snapshot), so a robot's path depends only on the walls and on what it may touch; the other
+ * robots matter to it only through its proximity samples, which must see them where they are at
+ * the sample's tick.
+ *
+ * <p>So each robot, or each group of robots that may touch each other during the stretch, moves on
+ * its own, gliding as far as the walls allow, from one sample to the next. The samples are taken
+ * in the order of their ticks (and of the robots within a tick); before a proximity sample, the
+ * robots that may come within its sight are moved to its tick too. A sample therefore sees every
+ * robot where the tick-by-tick reference has it, and each robot's path is the one it would drive
+ * there. Robots that may touch a cap, or whose gripper moves or holds one, keep to the tick-by-tick
+ * lockstep: a cap they push moves while others may be looking at it.
+ */
+final class Crowd implements Bodies.Visitor {
+    /** Two robots' centres farther apart than this neither touch nor report a contact, mm. */
+    private static final double TOUCH_MM = 2 * Khepera.BODY_RADIUS_MM + DriveBody.CONTACT_EPSILON_MM + 1e-6;
+    /** Robot ids are packed below the tick in an event's key. */
+    private static final int ID_BITS = 24;
+
+    private final List<SimRobot> robots;
+    private final Bodies bodies;
+    private final LongHeap events = new LongHeap();
+    private int stretch;
+    /** Per robot id: the stretch it is in the crowd for (a stamp), its unit (union-find), the next member of its unit. */
+    private int[] inCrowd = new int[0];
+    private int[] parent = new int[0];
+    private int[] nextMember = new int[0];
+    private int[] lastMember = new int[0];
+    /** Per unit root: the tick its robots have been moved to. */
+    private long[] movedTo = new long[0];
+    /** Per robot id: its sight neighbours, {@code sight[first[i] .. first[i + 1])}. */
+    private int[] first = new int[0];
+    private int[] sight = new int[64];
+    private int sightCount;
+
+    // The robot whose neighbours are being visited.
+    private SimRobot looking;
+    private double lookingReach;
+    private long ticks;
+
+    Crowd(List<SimRobot> robots, Bodies bodies) {
+        this.robots = robots;
+        this.bodies = bodies;
+    }
+
+    /**
+     * Move {@code crowd} (in robot order) through ticks {@code start .. start + n - 1}, the caller
+     * having begun tick {@code start} for each.
+     *
+     * @param fastest the most any robot travels in a tick during the stretch, mm
+     * @return false, having moved nothing, when a robot of the crowd must keep to the lockstep
+     */
+    boolean move(List<SimRobot> crowd, long start, long n, double fastest) {
+        for (int i = 0; i < crowd.size(); i++) {
+            SimRobot r = crowd.get(i);
+            if (!r.movesApartFromCaps(r.travelPerTickMm() * n + 1e-6)) {
+                return false;
+            }
+        }
+        prepare(crowd, n, fastest);
+        long end = start + n;
+        events.clear();
+        for (int i = 0; i < crowd.size(); i++) {
+            SimRobot r = crowd.get(i);
+            movedTo[r.id()] = start;
+            schedule(r, end);
+        }
+        while (!events.isEmpty()) {
+            long key = events.pop();
+            long tick = key >>> ID_BITS;
+            SimRobot r = robots.get((int) (key & ((1 << ID_BITS) - 1)));
+            advance(find(r.id()), tick);
+            boolean proximity = r.proximityNext();
+            if (proximity) {
+                for (int k = first[r.id()]; k < first[r.id() + 1]; k++) {
+                    advance(find(sight[k]), tick);
+                }
+            }
+            r.sampleAt(tick * Engine.TICK_NANOS, proximity);
+            schedule(r, end);
+        }
+        for (int i = 0; i < crowd.size(); i++) {
+            advance(find(crowd.get(i).id()), end);
+        }
+        return true;
+    }
+
+    private void schedule(SimRobot r, long end) {
+        long tick = r.nextPollTick();
+        if (tick < end) {
+            events.push(tick << ID_BITS | r.id());
+        }
+    }
+
+    /** Find each robot's sight neighbours and join the robots that may touch into units. */
+    private void prepare(List<SimRobot> crowd, long n, double fastest) {
+        int count = robots.size();
+        if (inCrowd.length < count) {
+            inCrowd = Arrays.copyOf(inCrowd, count);
+            parent = new int[count];
+            nextMember = new int[count];
+            lastMember = new int[count];
+            movedTo = new long[count];
+            first = new int[count + 1];
+        }
+        stretch++;
+        for (int i = 0; i < crowd.size(); i++) {
+            int id = crowd.get(i).id();
+            inCrowd[id] = stretch;
+            parent[id] = id;
+            nextMember[id] = -1;
+            lastMember[id] = id;
+        }
+        ticks = n;
+        sightCount = 0;
+        double unseen = 0;
+        for (int i = 0; i < crowd.size(); i++) {
+            unseen = StrictMath.max(unseen, crowd.get(i).unseenMm());
+        }
+        for (int i = 0; i < crowd.size(); i++) {
+            SimRobot r = crowd.get(i);
+            looking = r;
+            lookingReach = r.travelPerTickMm() * n;
+            first[r.id()] = sightCount;
+            double radius = lookingReach + fastest * n + unseen + Khepera.BODY_RADIUS_MM;
+            bodies.visit(r.id(), r.x(), r.y(), radius, this);
+            first[r.id() + 1] = sightCount;
+        }
+        // Each unit's members in robot order, listed from its root.
+        for (int i = 0; i < crowd.size(); i++) {
+            int id = crowd.get(i).id();
+            int root = find(id);
+            if (root != id) {
+                nextMember[lastMember[root]] = id;
+                lastMember[root] = id;
+            }
+        }
+    }
+
+    @Override
+    public void visit(int k, double dx, double dy) {
+        if (inCrowd[k] != stretch) {
+            return;
+        }
+        SimRobot o = robots.get(k);
+        double apart = StrictMath.sqrt(dx * dx + dy * dy) - lookingReach - o.travelPerTickMm() * ticks;
+        if (apart - StrictMath.max(looking.unseenMm(), o.unseenMm()) - Khepera.BODY_RADIUS_MM < 0) {
+            if (sightCount == sight.length) {
+                sight = Arrays.copyOf(sight, sightCount * 2);
+            }
+            sight[sightCount++] = k;
+        }
+        if (apart < TOUCH_MM) {
+            union(looking.id(), k);
+        }
+    }
+
+    private int find(int id) {
+        while (parent[id] != id) {
+            parent[id] = parent[parent[id]];
+            id = parent[id];
+        }
+        return id;
+    }
+
+    /** Join two units; the lower id stays the root, so a unit's members list from its lowest. */
+    private void union(int a, int b) {
+        int ra = find(a);
+        int rb = find(b);
+        if (ra != rb) {
+            parent[StrictMath.max(ra, rb)] = StrictMath.min(ra, rb);
+        }
+    }
+
+    /** Move the unit whose root is {@code root} on to {@code tick}: no sample of its robots falls due before. */
+    private void advance(int root, long tick) {
+        long t = movedTo[root];
+        if (t >= tick) {
+            return;
+        }
+        movedTo[root] = tick;
+        if (nextMember[root] < 0) {
+            SimRobot r = robots.get(root);
+            while (t < tick) {
+                long k = StrictMath.max(1, StrictMath.min(tick - t, r.glideTicksApart(tick - t)));
+                r.move(k, (t + k) * Engine.TICK_NANOS, k > 1);
+                t += k;
+            }
+            return;
+        }
+        // Robots that may touch each other step together, tick by tick, in robot order.
+        for (; t < tick; t++) {
+            for (int id = root; id >= 0; id = nextMember[id]) {
+                robots.get(id).move(1, (t + 1) * Engine.TICK_NANOS, false);
+            }
+        }
+    }
+}
