@@ -27,9 +27,7 @@ final class Crowd implements Bodies.Visitor {
     private final List<SimRobot> robots;
     private final Bodies bodies;
     private final LongHeap events = new LongHeap();
-    private int stretch;
-    /** Per robot id: the stretch it is in the crowd for (a stamp), its unit (union-find), the next member of its unit. */
-    private int[] inCrowd = new int[0];
+    /** Per robot id: its unit (union-find), the next and the last member of its unit. */
     private int[] parent = new int[0];
     private int[] nextMember = new int[0];
     private int[] lastMember = new int[0];
@@ -51,20 +49,19 @@ final class Crowd implements Bodies.Visitor {
     }
 
     /**
-     * Move {@code crowd} (in robot order) through ticks {@code start .. start + n - 1}, the caller
-     * having begun tick {@code start} for each.
+     * Move {@code crowd} (in robot order: the robots {@link #look} found not {@link #unseen})
+     * through ticks {@code start .. start + n - 1}, the caller having begun tick {@code start} for
+     * each.
      *
-     * @param fastest the most any robot travels in a tick during the stretch, mm
      * @return false, having moved nothing, when a robot of the crowd must keep to the lockstep
      */
-    boolean move(List<SimRobot> crowd, long start, long n, double fastest) {
+    boolean move(List<SimRobot> crowd, long start, long n) {
         for (int i = 0; i < crowd.size(); i++) {
             SimRobot r = crowd.get(i);
             if (!r.movesApartFromCaps(r.travelPerTickMm() * n + 1e-6)) {
                 return false;
             }
         }
-        prepare(crowd, n, fastest);
         long end = start + n;
         events.clear();
         for (int i = 0; i < crowd.size(); i++) {
@@ -99,43 +96,42 @@ final class Crowd implements Bodies.Visitor {
         }
     }
 
-    /** Find each robot's sight neighbours and join the robots that may touch into units. */
-    private void prepare(List<SimRobot> crowd, long n, double fastest) {
+    /**
+     * Before a stretch of {@code n} ticks: find each robot's sight neighbours (the robots that may
+     * come within sight of it, or it of them, whatever they do at their present speeds) and join
+     * the robots that may touch into units.
+     */
+    void look(long n) {
         int count = robots.size();
-        if (inCrowd.length < count) {
-            inCrowd = Arrays.copyOf(inCrowd, count);
+        if (parent.length < count) {
             parent = new int[count];
             nextMember = new int[count];
             lastMember = new int[count];
             movedTo = new long[count];
             first = new int[count + 1];
         }
-        stretch++;
-        for (int i = 0; i < crowd.size(); i++) {
-            int id = crowd.get(i).id();
-            inCrowd[id] = stretch;
+        double fastest = 0;
+        double unseen = 0;
+        for (int id = 0; id < count; id++) {
+            SimRobot r = robots.get(id);
+            fastest = StrictMath.max(fastest, r.travelPerTickMm());
+            unseen = StrictMath.max(unseen, r.unseenMm());
             parent[id] = id;
             nextMember[id] = -1;
             lastMember[id] = id;
         }
         ticks = n;
         sightCount = 0;
-        double unseen = 0;
-        for (int i = 0; i < crowd.size(); i++) {
-            unseen = StrictMath.max(unseen, crowd.get(i).unseenMm());
-        }
-        for (int i = 0; i < crowd.size(); i++) {
-            SimRobot r = crowd.get(i);
+        for (int id = 0; id < count; id++) {
+            SimRobot r = robots.get(id);
             looking = r;
             lookingReach = r.travelPerTickMm() * n;
-            first[r.id()] = sightCount;
-            double radius = lookingReach + fastest * n + unseen + Khepera.BODY_RADIUS_MM;
-            bodies.visit(r.id(), r.x(), r.y(), radius, this);
-            first[r.id() + 1] = sightCount;
+            first[id] = sightCount;
+            bodies.visit(id, r.x(), r.y(), lookingReach + fastest * n + unseen + Khepera.BODY_RADIUS_MM, this);
+            first[id + 1] = sightCount;
         }
-        // Each unit's members in robot order, listed from its root.
-        for (int i = 0; i < crowd.size(); i++) {
-            int id = crowd.get(i).id();
+        // Each unit's members in robot order, listed from its root (its lowest id).
+        for (int id = 0; id < count; id++) {
             int root = find(id);
             if (root != id) {
                 nextMember[lastMember[root]] = id;
@@ -144,11 +140,13 @@ final class Crowd implements Bodies.Visitor {
         }
     }
 
+    /** @return true when {@link #look} found no robot that may come within sight of {@code r}, nor it of theirs */
+    boolean unseen(SimRobot r) {
+        return first[r.id()] == first[r.id() + 1];
+    }
+
     @Override
     public void visit(int k, double dx, double dy) {
-        if (inCrowd[k] != stretch) {
-            return;
-        }
         SimRobot o = robots.get(k);
         double apart = StrictMath.sqrt(dx * dx + dy * dy) - lookingReach - o.travelPerTickMm() * ticks;
         if (apart - StrictMath.max(looking.unseenMm(), o.unseenMm()) - Khepera.BODY_RADIUS_MM < 0) {
@@ -189,7 +187,7 @@ final class Crowd implements Bodies.Visitor {
         if (nextMember[root] < 0) {
             SimRobot r = robots.get(root);
             while (t < tick) {
-                long k = StrictMath.max(1, StrictMath.min(tick - t, r.glideTicksApart(tick - t)));
+                long k = StrictMath.max(1, StrictMath.min(tick - t, r.glideTicks(tick - t)));
                 r.move(k, (t + k) * Engine.TICK_NANOS, k > 1);
                 t += k;
             }

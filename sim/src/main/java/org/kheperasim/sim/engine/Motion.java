@@ -22,17 +22,12 @@ import java.util.List;
  * grows with the robots that are near each other, not with all of them.
  */
 final class Motion {
-    /** How far a robot looks for others that could reach it, mm. */
-    private static final double LOOK_MM = 400;
-
     private final List<SimRobot> robots;
-    private final Bodies bodies;
     private final List<SimRobot> together = new ArrayList<>();
     private final Crowd crowd;
 
     Motion(List<SimRobot> robots, Bodies bodies) {
         this.robots = robots;
-        this.bodies = bodies;
         this.crowd = new Crowd(robots, bodies);
     }
 
@@ -45,20 +40,17 @@ final class Motion {
             alone(robots.get(0), start, n);
             return;
         }
-        double fastest = 0;
-        for (int i = 0; i < robots.size(); i++) {
-            fastest = StrictMath.max(fastest, robots.get(i).travelPerTickMm());
-        }
+        crowd.look(n);
         together.clear();
         for (int i = 0; i < robots.size(); i++) {
             SimRobot r = robots.get(i);
-            if (onItsOwn(r, n, fastest)) {
+            if (crowd.unseen(r)) {
                 alone(r, start, n);
             } else {
                 together.add(r);
             }
         }
-        if (together.isEmpty() || crowd.move(together, start, n, fastest)) {
+        if (together.isEmpty() || crowd.move(together, start, n)) {
             return;
         }
         for (long k = 0; k < n; k++) {
@@ -96,27 +88,5 @@ final class Motion {
             r.move(k, (t + k) * Engine.TICK_NANOS, k > 1);
             t += k;
         }
-    }
-
-    /**
-     * @return true when no other robot can come within sight or touch of {@code r} (nor it of
-     *     theirs) in {@code n} ticks, whatever they do: each drives at most its present speed
-     */
-    private boolean onItsOwn(SimRobot r, long n, double fastest) {
-        double reach = r.travelPerTickMm() * n;
-        double margin = r.unseenMm() + Khepera.BODY_RADIUS_MM;
-        if (LOOK_MM - reach - fastest * n < margin) {
-            return false;
-        }
-        double[] worst = {Double.POSITIVE_INFINITY};
-        bodies.visit(r.id(), r.x(), r.y(), LOOK_MM, (k, dx, dy) -> {
-            SimRobot o = robots.get(k);
-            double room = StrictMath.sqrt(dx * dx + dy * dy) - reach - o.travelPerTickMm() * n
-                    - StrictMath.max(margin, o.unseenMm() + Khepera.BODY_RADIUS_MM);
-            if (room < worst[0]) {
-                worst[0] = room;
-            }
-        });
-        return worst[0] >= 0;
     }
 }

@@ -77,7 +77,7 @@ public final class SimRobot {
         this.onBoard = new OnBoardControl(this, body, gripper);
         this.coverage = new Coverage(world, start.x(), start.y());
         this.unseenMm = SensorPlacement.REACH_MM + model.proximity().profile().rangeMm() + 1;
-        this.glides = new Glides(id, model, body, gripper, capContacts, coverage, world.bodies(), unseenMm);
+        this.glides = new Glides(model, body, gripper, capContacts, coverage);
         this.end = new LinkEnd(body, sense, proximity, light, gripper, coverage);
         this.link = new RobotLink(model.link().timing(), end);
         this.controls = new ControllerLink(this, link);
@@ -118,8 +118,9 @@ public final class SimRobot {
 
     /**
      * @param wanted how many ticks the caller would glide at most
-     * @return how many ticks the robot can glide from here with nothing to touch and no region to
-     *     enter on the way (0: step the next tick with contact handling), or at least {@code wanted}
+     * @return how many ticks the robot can glide from here with no wall, lamp or cap to touch and no
+     *     region to enter on the way (0: step the next tick with contact handling), or at least
+     *     {@code wanted}; the caller has made sure that no other robot can touch it meanwhile
      */
     long glideTicks(long wanted) {
         return glides.ticks(wanted);
@@ -189,11 +190,6 @@ public final class SimRobot {
         sense.at(0);
         link.pollDue(now, proximityToo);
         nextDue = StrictMath.min(nextHardDue, link.nextPollDue());
-    }
-
-    /** As {@link #glideTicks}, for a caller that knows no other robot can come within touch meanwhile. */
-    long glideTicksApart(long wanted) {
-        return glides.ticks(wanted, true);
     }
 
     /**
