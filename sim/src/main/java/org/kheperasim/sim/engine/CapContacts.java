@@ -41,6 +41,17 @@ final class CapContacts {
         return caps.count() == 0 ? Double.POSITIVE_INFINITY : caps.nearestSurface(px, py) - reachMm();
     }
 
+    /** @return how far the nearest cap, on the floor or held, is from (px, py), to its surface, mm (infinite with no caps) */
+    double nearestCapMm(double px, double py) {
+        double best = Double.POSITIVE_INFINITY;
+        for (int k = 0; k < caps.count(); k++) {
+            double dx = caps.x(k) - px;
+            double dy = caps.y(k) - py;
+            best = StrictMath.min(best, StrictMath.sqrt(dx * dx + dy * dy) - caps.radius(k));
+        }
+        return best;
+    }
+
     void clearBlocking() {
         blocking = -1;
     }

@@ -15,8 +15,9 @@ import java.util.List;
  * in the order of their ticks (and of the robots within a tick); before a proximity sample, the
  * robots that may come within its sight are moved to its tick too. A sample therefore sees every
  * robot where the tick-by-tick reference has it, and each robot's path is the one it would drive
- * there. Robots that may touch a cap, or whose gripper moves or holds one, keep to the tick-by-tick
- * lockstep: a cap they push moves while others may be looking at it.
+ * there. While any robot may touch a cap, or its gripper moves or holds one, {@link Motion} keeps
+ * these robots to the tick-by-tick lockstep instead: a cap pushed moves while others may be looking
+ * at it.
  */
 final class Crowd implements Bodies.Visitor {
     /** Two robots' centres farther apart than this neither touch nor report a contact, mm. */
@@ -51,17 +52,10 @@ final class Crowd implements Bodies.Visitor {
     /**
      * Move {@code crowd} (in robot order: the robots {@link #look} found not {@link #unseen})
      * through ticks {@code start .. start + n - 1}, the caller having begun tick {@code start} for
-     * each.
-     *
-     * @return false, having moved nothing, when a robot of the crowd must keep to the lockstep
+     * each. No robot may move a cap meanwhile ({@link CapsInReach#driftMm} is 0 for every robot):
+     * the caps stay where every sample sees them.
      */
-    boolean move(List<SimRobot> crowd, long start, long n) {
-        for (int i = 0; i < crowd.size(); i++) {
-            SimRobot r = crowd.get(i);
-            if (!r.movesApartFromCaps(r.travelPerTickMm() * n + 1e-6)) {
-                return false;
-            }
-        }
+    void move(List<SimRobot> crowd, long start, long n) {
         long end = start + n;
         events.clear();
         for (int i = 0; i < crowd.size(); i++) {
@@ -86,7 +80,6 @@ final class Crowd implements Bodies.Visitor {
         for (int i = 0; i < crowd.size(); i++) {
             advance(find(crowd.get(i).id()), end);
         }
-        return true;
     }
 
     private void schedule(SimRobot r, long end) {

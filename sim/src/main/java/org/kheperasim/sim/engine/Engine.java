@@ -35,6 +35,8 @@ public final class Engine {
     private boolean inTick;
     private int driverCursor;
     private boolean hasDrivers;
+    /** A robot steps by ticks ({@code engine.stepping=tick}): the world stops at every tick, the reference. */
+    private boolean ticking;
 
     private record Subscription(SnapshotListener listener, long periodTicks) {
     }
@@ -62,6 +64,7 @@ public final class Engine {
     public SimRobot addRobot(String name, Pose start, Settings settings) {
         SimRobot r = new SimRobot(robots.size(), name, world, start, settings, seeds.split());
         robots.add(r);
+        ticking |= r.steppingByTicks();
         drivers.add(null);
         driverStatus.add(x -> "none");
         return r;
@@ -192,8 +195,8 @@ public final class Engine {
      * {@link Motion}).
      */
     private long quietTicks() {
-        if (hasDrivers && !anyDriverRunning()) {
-            // Every controller has ended: the run ends with this tick (the next advance returns null).
+        if (ticking || (hasDrivers && !anyDriverRunning())) {
+            // The reference stepping stops at every tick; a run whose controllers have all ended ends with this tick.
             return 1;
         }
         long limit = ceilTicks(endNanos) - tick;

@@ -29,6 +29,7 @@ public final class SimRobot {
     private final LightSensing light;
     private final GripperModel gripper;
     private final CapContacts capContacts;
+    private final CapsInReach capsInReach;
     /** Another robot's surface farther than this from the centre is out of every sensor's reach, mm. */
     private final double unseenMm;
     private final RobotLink link;
@@ -77,6 +78,7 @@ public final class SimRobot {
         this.onBoard = new OnBoardControl(this, body, gripper);
         this.coverage = new Coverage(world, start.x(), start.y());
         this.unseenMm = SensorPlacement.REACH_MM + model.proximity().profile().rangeMm() + 1;
+        this.capsInReach = new CapsInReach(body, gripper, capContacts, steppingByTicks(), unseenMm);
         this.glides = new Glides(model, body, gripper, capContacts, coverage);
         this.end = new LinkEnd(body, sense, proximity, light, gripper, coverage);
         this.link = new RobotLink(model.link().timing(), end);
@@ -192,14 +194,14 @@ public final class SimRobot {
         nextDue = StrictMath.min(nextHardDue, link.nextPollDue());
     }
 
-    /**
-     * @return true when the robot can move on its own among the others for {@code reachMm} of
-     *     travel: its model does not step every tick, its gripper neither moves nor carries a cap,
-     *     and no cap is within that reach of its pushing parts
-     */
-    boolean movesApartFromCaps(double reachMm) {
-        return model.stepping() != RobotModel.Stepping.TICK && !gripper.busy() && gripper.heldCap() < 0
-                && capContacts.freeTravelMm(body.x(), body.y()) > reachMm;
+    /** @return what the robot may do to the caps, or see of them, during a stretch */
+    CapsInReach capsInReach() {
+        return capsInReach;
+    }
+
+    /** @return true when the robot's model steps every tick, the reference the event stepping is tested against */
+    boolean steppingByTicks() {
+        return model.stepping() == RobotModel.Stepping.TICK;
     }
 
     /** A protocol client drives the robot itself: the simulated controller's link stops polling. */
