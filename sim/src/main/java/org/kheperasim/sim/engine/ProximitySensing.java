@@ -73,6 +73,7 @@ final class ProximitySensing {
         double reading = model.noise().reading();
         this.profile = p.profile();
         this.range = profile.rangeMm();
+        this.reachable = SensorPlacement.REACH_MM + range + Khepera.BODY_RADIUS_MM;
         for (int k = 0; k < proven.length; k++) {
             proven[k] = new ClearanceProof();
         }
@@ -309,19 +310,29 @@ final class ProximitySensing {
         if (bodies.count() < 2) {
             return;
         }
-        bodies.visit(self, robotX, robotY, SensorPlacement.REACH_MM + range + Khepera.BODY_RADIUS_MM, (k, dx, dy) -> {
-            double reachable = SensorPlacement.REACH_MM + range + Khepera.BODY_RADIUS_MM;
-            if (dx * dx + dy * dy >= reachable * reachable) {
-                return;
-            }
-            if (near == nearX.length) {
-                nearX = java.util.Arrays.copyOf(nearX, near * 2);
-                nearY = java.util.Arrays.copyOf(nearY, near * 2);
-            }
-            nearX[near] = robotX + dx;
-            nearY[near] = robotY + dy;
-            near++;
-        });
+        gatherX = robotX;
+        gatherY = robotY;
+        bodies.visit(self, robotX, robotY, reachable, gather);
+    }
+
+    /** Another robot's centre farther than this from the sampling robot's is out of every beam's reach, mm. */
+    private final double reachable;
+    private double gatherX;
+    private double gatherY;
+    /** Notes the robots within {@link #reachable} of ({@link #gatherX}, {@link #gatherY}); made once, not per sample. */
+    private final Bodies.Visitor gather = this::noteRobot;
+
+    private void noteRobot(int k, double dx, double dy) {
+        if (dx * dx + dy * dy >= reachable * reachable) {
+            return;
+        }
+        if (near == nearX.length) {
+            nearX = java.util.Arrays.copyOf(nearX, near * 2);
+            nearY = java.util.Arrays.copyOf(nearY, near * 2);
+        }
+        nearX[near] = gatherX + dx;
+        nearY[near] = gatherY + dy;
+        near++;
     }
 
     /**

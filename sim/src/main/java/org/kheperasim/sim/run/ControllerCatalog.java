@@ -19,6 +19,8 @@ public final class ControllerCatalog {
 
     private final List<Path> classpath;
     private final boolean trusted;
+    /** The bundled controllers' names, read once (a run loads one class per robot). */
+    private volatile List<String> bundledNames;
 
     /** @param classpath folders and jars with the user's compiled classes (may be empty) */
     public ControllerCatalog(List<Path> classpath) {
@@ -53,7 +55,12 @@ public final class ControllerCatalog {
     public Class<?> load(String name) {
         ControllerClassLoader loader = new ControllerClassLoader(classpath, ControllerCatalog.class.getClassLoader(), !trusted);
         try {
-            return ControllerNames.resolve(name, loader, bundled(), classpath, "khepera-sim.jar");
+            List<String> names = bundledNames;
+            if (names == null) {
+                names = List.copyOf(bundled());
+                bundledNames = names;
+            }
+            return ControllerNames.resolve(name, loader, names, classpath, "khepera-sim.jar");
         } catch (ControllerPolicyError e) {
             throw new ControllerException("controller " + name + " was refused: " + e.getMessage(), e);
         }
