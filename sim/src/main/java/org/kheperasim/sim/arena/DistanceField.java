@@ -79,34 +79,69 @@ public final class DistanceField {
 
     /** Recomputes the whole field from the grid's current cells, reusing all storage. */
     public void recompute() {
-        // Pass 1, down each padded column: distance to the nearest obstacle in the same column.
-        for (int x = 0; x < pw; x++) {
-            for (int y = 0; y < ph; y++) {
-                f[y] = isObstacle(x, y) ? 0 : INF;
-            }
-            envelope(ph);
-            for (int y = 0; y < ph; y++) {
-                dist2[y * pw + x] = out[y];
-                nearest[y * pw + x] = arg[y];   // for now: the obstacle's row
-            }
+        // Pass 1, down each padded column: distance to the nearest obstacle in the same column (the
+        // one above on a tie). Obstacles have no extent here, so two sweeps over the rows find it,
+        // reading the grid in its own order: downwards the nearest above, upwards the nearest below.
+        // (A method per row, so that a cold JVM compiles it soon.)
+        for (int y = 0; y < ph; y++) {
+            nearestAbove(y);
+        }
+        for (int y = ph - 1; y >= 0; y--) {
+            nearestBelow(y);
         }
         // Pass 2, along each padded row: combine the column distances.
         for (int y = 0; y < ph; y++) {
-            int base = y * pw;
-            for (int x = 0; x < pw; x++) {
-                f[x] = dist2[base + x];
-                lineNearest[x] = nearest[base + x];
+            combineRow(y * pw);
+            belowRow(y * pw);
+        }
+    }
+
+    /** Pass 2 along the row starting at {@code base}: the nearest obstacle of all the columns'. */
+    private void combineRow(int base) {
+        for (int x = 0; x < pw; x++) {
+            f[x] = dist2[base + x];
+            lineNearest[x] = nearest[base + x];
+        }
+        envelope(pw);
+        for (int x = 0; x < pw; x++) {
+            int q = arg[x];
+            dist2[base + x] = out[x];
+            nearest[base + x] = lineNearest[q] << 16 | q;
+        }
+    }
+
+    /** Row y of pass 1, downwards: {@code lineNearest[x]} is the last obstacle row seen in column x. */
+    private void nearestAbove(int y) {
+        int base = y * pw;
+        for (int x = 0; x < pw; x++) {
+            if (isObstacle(x, y)) {
+                lineNearest[x] = y;
             }
-            envelope(pw);
-            for (int x = 0; x < pw; x++) {
-                int q = arg[x];
-                dist2[base + x] = out[x];
-                nearest[base + x] = lineNearest[q] << 16 | q;
+            int d = y - lineNearest[x];   // row 0 is padding: an obstacle above is always found
+            dist2[base + x] = d * d;
+            nearest[base + x] = lineNearest[x];   // for now: the obstacle's row
+        }
+    }
+
+    /** Row y of pass 1, upwards: an obstacle below that is strictly nearer replaces the one above. */
+    private void nearestBelow(int y) {
+        int base = y * pw;
+        for (int x = 0; x < pw; x++) {
+            if (dist2[base + x] == 0) {
+                lineNearest[x] = y;
+            }
+            int d = lineNearest[x] - y;   // the last row is padding too
+            if (d * d < dist2[base + x]) {
+                dist2[base + x] = d * d;
+                nearest[base + x] = lineNearest[x];
             }
         }
-        for (int i = 0; i < dist2.length; i++) {
-            double bound = Math.sqrt(dist2[i]) * OccupancyGrid.CELL_MM - BELOW_MARGIN_MM;
-            below[i] = (byte) StrictMath.max(0, StrictMath.min(255, (int) Math.floor(bound / BELOW_STEP_MM)));
+    }
+
+    private void belowRow(int base) {
+        for (int i = base; i < base + pw; i++) {
+            int d2 = dist2[i];
+            below[i] = d2 < BELOW_OF.length ? BELOW_OF[d2] : (byte) 255;
         }
     }
 
@@ -159,6 +194,23 @@ public final class DistanceField {
     private static final double BELOW_MARGIN_MM = StrictMath.sqrt(2) * OccupancyGrid.CELL_MM + 0.01;
     /** The unit of {@link #below}: a quarter cell, mm. */
     private static final double BELOW_STEP_MM = OccupancyGrid.CELL_MM / 4;
+    /**
+     * {@link #below}'s entry for each squared distance in cells, up to the first that saturates it
+     * (about 4,250): the same value computed once per distance instead of once per cell.
+     */
+    private static final byte[] BELOW_OF = belowTable();
+
+    private static byte[] belowTable() {
+        java.io.ByteArrayOutputStream table = new java.io.ByteArrayOutputStream();
+        for (int d2 = 0; ; d2++) {
+            double bound = Math.sqrt(d2) * OccupancyGrid.CELL_MM - BELOW_MARGIN_MM;
+            int steps = StrictMath.max(0, StrictMath.min(255, (int) Math.floor(bound / BELOW_STEP_MM)));
+            if (steps == 255) {
+                return table.toByteArray();
+            }
+            table.write(steps);
+        }
+    }
 
     /**
      * Like {@link #clearance}, but takes the nearest obstacle of the point's cell and of its eight
