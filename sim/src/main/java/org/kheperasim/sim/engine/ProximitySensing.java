@@ -177,8 +177,10 @@ final class ProximitySensing {
             double raw = 0;
             double midX = px + coneMid * dx;
             double midY = py + coneMid * dy;
-            if (noCaps && robotsOutside(midX, midY, coneMid) && discEmpty(i, midX, midY, coneMid)) {
-                // Every beam of this sensor lies in a disc that the field proves empty and that no robot enters.
+            // Every beam of this sensor lies in this disc: proven free of walls, lamps and caps, only
+            // robots can answer them.
+            boolean coneFree = noCaps && discEmpty(i, midX, midY, coneMid);
+            if (coneFree && robotsOutside(midX, midY, coneMid)) {
                 out[i] = reading(i, 0, sample);
                 continue;
             }
@@ -190,7 +192,7 @@ final class ProximitySensing {
                 free = StrictMath.min(free, robotsFrom(px, py));
             }
             if (free < range) {
-                raw = beams(px, py, dx, dy, StrictMath.max(0, free - DriveBody.NEAR_MM), noCaps);
+                raw = beams(px, py, dx, dy, StrictMath.max(0, free - DriveBody.NEAR_MM), noCaps, coneFree);
             }
             out[i] = reading(i, raw, sample);
         }
@@ -212,9 +214,11 @@ final class ProximitySensing {
 
     /**
      * The strongest beam response; nothing lies nearer than {@code skip} (the clearance less the
-     * estimate's error), so the beams start there instead of walking the empty cells.
+     * estimate's error), so the beams start there instead of walking the empty cells. With
+     * {@code coneFree} the field has proven the sensor's cone free of walls and lamps (and there
+     * are no caps within reach), so only the other robots are looked at.
      */
-    private double beams(double px, double py, double dx, double dy, double skip, boolean noCaps) {
+    private double beams(double px, double py, double dx, double dy, double skip, boolean noCaps, boolean coneFree) {
         double raw = 0;
         for (int r = 0; r < rayCos.length; r++) {
             // A hit beyond `reach` could not beat the strongest response so far: march no farther.
@@ -228,7 +232,7 @@ final class ProximitySensing {
             double limit = StrictMath.min(range, reach);
             double d;
             double reflect;
-            if (noCaps && empty(px, py, rx, ry, skip, limit)) {
+            if (coneFree || noCaps && empty(px, py, rx, ry, skip, limit)) {
                 // The grid march would find nothing: no wall, lamp or cap along the beam.
                 if (near == 0) {
                     continue;
