@@ -117,8 +117,10 @@ public final class DistanceField {
             if (isObstacle(x, y)) {
                 lineNearest[x] = y;
             }
-            int d = y - lineNearest[x];   // row 0 is padding: an obstacle above is always found
-            dist2[base + x] = d * d;
+            long d = y - lineNearest[x];   // row 0 is padding: an obstacle above is always found
+            // Far above, the square may pass an int's range; the obstacle below is then nearer (the
+            // nearest of the two is at most half a column away, 32,767 cells) and replaces it.
+            dist2[base + x] = (int) StrictMath.min(d * d, Integer.MAX_VALUE);
             nearest[base + x] = lineNearest[x];   // for now: the obstacle's row
         }
     }
@@ -130,9 +132,9 @@ public final class DistanceField {
             if (dist2[base + x] == 0) {
                 lineNearest[x] = y;
             }
-            int d = lineNearest[x] - y;   // the last row is padding too
+            long d = lineNearest[x] - y;   // the last row is padding too
             if (d * d < dist2[base + x]) {
-                dist2[base + x] = d * d;
+                dist2[base + x] = (int) (d * d);
                 nearest[base + x] = lineNearest[x];
             }
         }

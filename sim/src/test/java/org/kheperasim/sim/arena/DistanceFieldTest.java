@@ -88,6 +88,22 @@ class DistanceFieldTest {
         }
     }
 
+    /** A column longer than 46,340 cells: a distance's square there passes an int's range. */
+    @Test
+    void aVeryLongColumnFindsItsNearestObstacle() {
+        OccupancyGrid g = new OccupancyGrid(3, 46_400);
+        DistanceField df = DistanceField.of(g);
+        for (int r : new int[] {0, 1, 20_000, 23_199, 23_200, 46_398, 46_399}) {
+            double x = g.cellCentreX(1);
+            double y = g.cellCentreY(r);
+            int nc = g.col(df.nearestObstacleX(x, y));
+            int nr = g.row(df.nearestObstacleY(x, y));
+            long d2 = (long) (nc - 1) * (nc - 1) + (long) (nr - r) * (nr - r);
+            assertEquals(bruteDist2(g, 1, r), d2, "row " + r);
+            assertTrue(df.clearanceBelow(x, y) <= df.clearance(x, y), "row " + r);
+        }
+    }
+
     @Test
     void clearanceOfAnyPointIsWithinACoupleOfCellsOfTheTruth() {
         OccupancyGrid g = randomGrid(42, 40, 30, 0.04);
