@@ -18,6 +18,8 @@ final class CapContacts {
     private double checkX;
     private double checkY;
     private double slack;
+    /** The parts' reach when {@link #near} last looked: lowering the arm or gripping a cap widens it. */
+    private double checkedReach;
 
     /** The robot whose parts push: other robots block the caps it pushes. */
     private final int robot;
@@ -28,9 +30,22 @@ final class CapContacts {
         this.robot = robot;
     }
 
-    /** @return how far any pushing part reaches from the robot's centre now, mm */
+    /**
+     * @return how far any pushing part reaches from the robot's centre now, mm: the body, or with the
+     *     arm low the fingers' tips (wider apart round a large cap held) and the cap held
+     */
     double reachMm() {
-        return gripper.armLow() ? GripperTurret.REACH_MM : Khepera.BODY_RADIUS_MM;
+        if (!gripper.armLow()) {
+            return Khepera.BODY_RADIUS_MM;
+        }
+        int held = gripper.heldCap();
+        if (held < 0) {
+            return GripperTurret.REACH_MM;
+        }
+        double r = caps.radius(held);
+        double half = StrictMath.max(GripperTurret.OPEN_HALF_GAP_MM, r + GripperTurret.FINGER_RADIUS_MM);
+        return StrictMath.max(GripperTurret.GRIP_MM + r,
+                StrictMath.hypot(GripperTurret.FINGER_TIP_MM, half) + GripperTurret.FINGER_RADIUS_MM);
     }
 
     /**
@@ -39,17 +54,6 @@ final class CapContacts {
      */
     double freeTravelMm(double px, double py) {
         return caps.count() == 0 ? Double.POSITIVE_INFINITY : caps.nearestSurface(px, py) - reachMm();
-    }
-
-    /** @return how far the nearest cap, on the floor or held, is from (px, py), to its surface, mm (infinite with no caps) */
-    double nearestCapMm(double px, double py) {
-        double best = Double.POSITIVE_INFINITY;
-        for (int k = 0; k < caps.count(); k++) {
-            double dx = caps.x(k) - px;
-            double dy = caps.y(k) - py;
-            best = StrictMath.min(best, StrictMath.sqrt(dx * dx + dy * dy) - caps.radius(k));
-        }
-        return best;
     }
 
     void clearBlocking() {
@@ -71,7 +75,8 @@ final class CapContacts {
 
     /**
      * Whether a cap could touch the robot at (px, py) in any heading. Cheap when none is near: the
-     * answer holds until the robot has moved by the distance to the nearest cap or a cap has moved.
+     * answer holds until the robot has moved by the distance to the nearest cap, a cap has moved or
+     * the gripper's reach has changed.
      */
     boolean near(double px, double py) {
         if (caps.count() == 0) {
@@ -79,10 +84,12 @@ final class CapContacts {
         }
         double dx = px - checkX;
         double dy = py - checkY;
-        if (caps.version() == checkedVersion && dx * dx + dy * dy < slack * slack) {
+        double reach = reachMm();
+        if (caps.version() == checkedVersion && reach == checkedReach && dx * dx + dy * dy < slack * slack) {
             return false;
         }
         checkedVersion = caps.version();
+        checkedReach = reach;
         checkX = px;
         checkY = py;
         double gap = freeTravelMm(px, py);

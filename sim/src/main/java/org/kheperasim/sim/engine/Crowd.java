@@ -52,7 +52,7 @@ final class Crowd implements Bodies.Visitor {
     /**
      * Move {@code crowd} (in robot order: the robots {@link #look} found not {@link #unseen})
      * through ticks {@code start .. start + n - 1}, the caller having begun tick {@code start} for
-     * each. No robot may move a cap meanwhile ({@link CapsInReach#driftMm} is 0 for every robot):
+     * each. No robot may move a cap meanwhile ({@link SimRobot#mayMoveCaps} is false for every robot):
      * the caps stay where every sample sees them.
      */
     void move(List<SimRobot> crowd, long start, long n) {

@@ -115,16 +115,6 @@ final class DriveBody {
     }
 
     /**
-     * @param reachMm a point's distance from the centre, mm
-     * @return how far a point of the robot that far from its centre travels in one tick at most at
-     *     the present wheel speeds, mm (the centre's travel plus the turn's sweep)
-     */
-    double partTravelPerTickMm(double reachMm) {
-        return (travelPerTickMm() + StrictMath.abs(wheelRight - wheelLeft) / Khepera.WHEEL_BASE_MM * reachMm * TICK_S)
-                * (1 + 1e-9);
-    }
-
-    /**
      * @return a lower bound of the distance from the centre to the nearest wall or lamp, less the
      *     body radius and the touching margin: the centre can travel that far without a contact, mm
      */

@@ -23,8 +23,11 @@ public final class GripperTurret {
     public static final double OPEN_HALF_GAP_MM = 16;
     /** Where a gripped cap's centre is, and where the optical barrier crosses, mm ahead of the centre. */
     public static final double GRIP_MM = 36.5;
-    /** How far any part of the lowered gripper (or a cap it holds) reaches from the robot's centre, mm. */
-    public static final double REACH_MM = 51;
+    /**
+     * How far the open fingers' tips reach from the robot's centre, mm (about 54.5): the farthest
+     * part of the lowered gripper but for a large cap it holds (see {@code CapContacts.reachMm}).
+     */
+    public static final double REACH_MM = StrictMath.hypot(FINGER_TIP_MM, OPEN_HALF_GAP_MM) + FINGER_RADIUS_MM;
 
     private GripperTurret() {
     }

@@ -15,10 +15,10 @@ import java.util.List;
  *   <li>robots that may see each other move on their own between their samples, each sample
  *       seeing the others where they are at its tick, and those that may touch each other a tick at
  *       a time, in robot order ({@link Crowd});</li>
- *   <li>when a robot may push or carry a cap, or its gripper moves, the robots that may see a cap
- *       that moves, and all the robots that may see each other, move a tick at a time, in robot
- *       order, so each sees the others and the caps where they are at that tick; a robot alone
- *       and far from every cap still moves on its own.</li>
+ *   <li>when a robot may push or carry a cap, or its gripper moves, every robot moves a tick at a
+ *       time, in robot order, so each sees the others and the caps where they are at that tick: a
+ *       cap may jump by as much as a part newly overlaps it (fingers lowered beside it, a grip
+ *       closing, caps overlapping in a row), so no distance bounds who may see it move.</li>
  * </ul>
  * So a robot near a wall no longer makes a far-away one step every tick, and the cost of a swarm
  * grows with the robots that are near each other, not with all of them.
@@ -43,18 +43,14 @@ final class Motion {
             return;
         }
         crowd.look(n);
-        // How far a cap may be moved during the stretch: by then any robot may see it anywhere within that.
-        double capDrift = 0;
         boolean capsMove = false;
-        for (int i = 0; i < robots.size(); i++) {
-            double drift = robots.get(i).capsInReach().driftMm(n);
-            capsMove |= drift > 0;
-            capDrift = StrictMath.max(capDrift, drift);
+        for (int i = 0; i < robots.size() && !capsMove; i++) {
+            capsMove = robots.get(i).mayMoveCaps(n);
         }
         together.clear();
         for (int i = 0; i < robots.size(); i++) {
             SimRobot r = robots.get(i);
-            if (capsMove ? crowd.unseen(r) && !r.capsInReach().watched(n, capDrift) : crowd.unseen(r)) {
+            if (!capsMove && crowd.unseen(r)) {
                 alone(r, start, n);
             } else {
                 together.add(r);

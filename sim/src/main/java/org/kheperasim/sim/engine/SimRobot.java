@@ -29,7 +29,6 @@ public final class SimRobot {
     private final LightSensing light;
     private final GripperModel gripper;
     private final CapContacts capContacts;
-    private final CapsInReach capsInReach;
     /** Another robot's surface farther than this from the centre is out of every sensor's reach, mm. */
     private final double unseenMm;
     private final RobotLink link;
@@ -78,7 +77,6 @@ public final class SimRobot {
         this.onBoard = new OnBoardControl(this, body, gripper);
         this.coverage = new Coverage(world, start.x(), start.y());
         this.unseenMm = SensorPlacement.REACH_MM + model.proximity().profile().rangeMm() + 1;
-        this.capsInReach = new CapsInReach(body, gripper, capContacts, steppingByTicks(), unseenMm);
         this.glides = new Glides(model, body, gripper, capContacts, coverage);
         this.end = new LinkEnd(body, sense, proximity, light, gripper, coverage);
         this.link = new RobotLink(model.link().timing(), end);
@@ -194,9 +192,14 @@ public final class SimRobot {
         nextDue = StrictMath.min(nextHardDue, link.nextPollDue());
     }
 
-    /** @return what the robot may do to the caps, or see of them, during a stretch */
-    CapsInReach capsInReach() {
-        return capsInReach;
+    /**
+     * @param ticks a stretch's length
+     * @return true when the robot may move a cap during the stretch: it steps every tick (the
+     *     reference), its gripper moves or holds a cap, or a cap is within its parts' reach of travel
+     */
+    boolean mayMoveCaps(long ticks) {
+        return steppingByTicks() || gripper.busy() || gripper.heldCap() >= 0
+                || capContacts.freeTravelMm(body.x(), body.y()) <= body.travelPerTickMm() * ticks + 1e-6;
     }
 
     /** @return true when the robot's model steps every tick, the reference the event stepping is tested against */

@@ -43,6 +43,33 @@ class GripperTest {
         assertTrue(r2.gripper().armMoving(), "a 3 s arm is still travelling after 2 s");
     }
 
+    /**
+     * A robot creeping forward lowers its arm with a cap beside the left finger's line: the finger
+     * comes down 4 mm into the cap and pushes it out as soon as the arm is low, though the robot has
+     * moved far less than the gap between its body (the only part that reached out before) and the cap.
+     */
+    @Test
+    void fingersComingDownBesideACapPushItAsideAtOnce() {
+        SimRobot[] r = new SimRobot[1];
+        double capY = 600 + GripperTurret.OPEN_HALF_GAP_MM + GripperTurret.FINGER_RADIUS_MM + 9 - 4;
+        Engine e = engine("cap 340 " + capY + "\n", r);
+        r[0].controls().commandSpeeds(0, 1, 1);
+        r[0].controls().commandArm(0, ArmPosition.DOWN);
+        run(e, 0.45);
+        assertEquals(capY, cap(e, 0).y(), 1e-9, "the arm is not low yet");
+        run(e, 0.2);
+        assertTrue(r[0].x() - 300 < 6, "the robot has crept less than the body's 9.6 mm gap to the cap: " + (r[0].x() - 300));
+        assertTrue(cap(e, 0).y() > capY + 3.9, "the finger pushed the cap out of its way: " + cap(e, 0).y());
+    }
+
+    /** The open fingers' tips reach farther than any other part of the lowered gripper without a large cap. */
+    @Test
+    void theGrippersReachIsItsFingertips() {
+        double tip = StrictMath.hypot(GripperTurret.FINGER_TIP_MM, GripperTurret.OPEN_HALF_GAP_MM) + GripperTurret.FINGER_RADIUS_MM;
+        assertEquals(tip, GripperTurret.REACH_MM, 1e-12);
+        assertTrue(GripperTurret.REACH_MM > GripperTurret.GRIP_MM + 9, "a default cap held lies within the reach");
+    }
+
     @Test
     void theFingersTakeTheirTimeToClose() {
         SimRobot[] r = new SimRobot[1];
