@@ -40,6 +40,33 @@ final class ControllerFailures {
         return String.valueOf(e.getMessage());
     }
 
+    /** How a controller's life ends for a throwable it did not catch, and what the student is told (null: nothing). */
+    record Verdict(ControllerStatus status, String message) {
+    }
+
+    /**
+     * @param e what the controller's thread ended with
+     * @param who the controller, as the student knows it ({@code controller Name (class)})
+     * @return how its life ends, and why
+     */
+    static Verdict verdict(Throwable e, String who) {
+        if (e instanceof OutOfMemoryError) {
+            return new Verdict(ControllerStatus.EXCEEDED_MEMORY, who + " allocated without bound: the Java heap ran out ("
+                    + e.getMessage() + "); the controller was stopped and the robot's motors set to 0. Does it keep"
+                    + " adding to a list or map it never empties?");
+        }
+        if (isPolicyError(e)) {
+            return new Verdict(ControllerStatus.BROKE_RULE, rootMessage(e) + "; the controller was stopped.");
+        }
+        if (e instanceof ControllerStoppedError) {
+            return new Verdict(ControllerStatus.STOPPED, null);
+        }
+        if (isHeadless(e)) {
+            return new Verdict(ControllerStatus.FAILED, who + " " + HEADLESS + "\n" + studentTrace(e));
+        }
+        return new Verdict(ControllerStatus.FAILED, "threw " + e + "; the robot was stopped.\n" + studentTrace(e));
+    }
+
     /** The stack trace down to the first frame of the simulator's own code: the student's part. */
     static String studentTrace(Throwable e) {
         StringWriter out = new StringWriter();

@@ -171,19 +171,33 @@ public final class ControllerHost implements HostedController {
 
     /** The controller allocates without bound: stop it, and let what it holds go. */
     void exceededMemory(String what) {
-        fault(ControllerStatus.EXCEEDED_MEMORY, "allocated without bound (" + what + "); the controller was stopped"
-                + " and the robot's motors set to 0. Does it keep adding to a list or map it never empties?");
+        // Stopped before the message is made: a controller filling the heap must not go on meanwhile.
+        if (claimEnd(ControllerStatus.EXCEEDED_MEMORY)) {
+            report("allocated without bound (" + what + "); the controller was stopped and the robot's motors set to 0."
+                    + " Does it keep adding to a list or map it never empties?");
+        }
     }
 
     private void fault(ControllerStatus end, String message) {
+        if (claimEnd(end)) {
+            report(message);
+        }
+    }
+
+    /** @return true when this fault decides how the controller ends (the first one), which is then stopped */
+    private boolean claimEnd(ControllerStatus end) {
         synchronized (this) {
             if (pendingEnd != null || status.ended()) {
-                return;
+                return false;
             }
             pendingEnd = end;
         }
-        say(ConsoleLine.Kind.ERROR, "controller " + name + " (" + type.getName() + ") " + message);
         announceStop();
+        return true;
+    }
+
+    private void report(String message) {
+        say(ConsoleLine.Kind.ERROR, "controller " + name + " (" + type.getName() + ") " + message);
         strays.interrupt();
     }
 
@@ -369,28 +383,16 @@ public final class ControllerHost implements HostedController {
         }
         if (pendingEnd != null) {
             finish(pendingEnd);
-        } else if (e instanceof OutOfMemoryError) {
-            HeapWatch.ranOut();
-            failure = e;
-            say(ConsoleLine.Kind.ERROR, "controller " + name + " (" + type.getName() + ") allocated without bound:"
-                    + " the Java heap ran out (" + e.getMessage() + "); the controller was stopped and the robot's"
-                    + " motors set to 0. Does it keep adding to a list or map it never empties?");
-            finish(ControllerStatus.EXCEEDED_MEMORY);
-        } else if (ControllerFailures.isPolicyError(e)) {
-            failure = e;
-            say(ConsoleLine.Kind.ERROR, ControllerFailures.rootMessage(e) + "; the controller was stopped.");
-            finish(ControllerStatus.BROKE_RULE);
-        } else if (e instanceof ControllerStoppedError) {
-            finish(ControllerStatus.STOPPED);
-        } else if (ControllerFailures.isHeadless(e)) {
-            failure = e;
-            say(ConsoleLine.Kind.ERROR, "controller " + name + " (" + type.getName() + ") " + ControllerFailures.HEADLESS + "\n"
-                    + ControllerFailures.studentTrace(e));
-            finish(ControllerStatus.FAILED);
         } else {
-            failure = e;
-            say(ConsoleLine.Kind.ERROR, "threw " + e + "; the robot was stopped.\n" + ControllerFailures.studentTrace(e));
-            finish(ControllerStatus.FAILED);
+            if (e instanceof OutOfMemoryError) {
+                HeapWatch.ranOut(); // before the message is made
+            }
+            ControllerFailures.Verdict v = ControllerFailures.verdict(e, "controller " + name + " (" + type.getName() + ")");
+            if (v.message() != null) {
+                failure = e;
+                say(ConsoleLine.Kind.ERROR, v.message());
+            }
+            finish(v.status());
         }
         settleStop();
         lockstep.passTo(null);

@@ -22,7 +22,13 @@ final class HeapWatch {
     private static final int THRESHOLD_PERCENT = 80;
     private static final int FULL_PERCENT = 90;
     private static final List<Consumer<String>> LISTENERS = new CopyOnWriteArrayList<>();
-    private static volatile byte[] reserve = new byte[1 << 20];
+    /**
+     * Let go when the heap runs short, so that the fault can be reported and the run's result
+     * printed while what the controller holds is still reachable: a sixteenth of the heap's maximum,
+     * from 1 to 16 MB (a 64 MB heap keeps 4 MB).
+     */
+    private static volatile byte[] reserve = new byte[(int) StrictMath.max(1 << 20,
+            StrictMath.min(16 << 20, Runtime.getRuntime().maxMemory() / 16))];
     /** The heap's memory pools, once {@link #watchPools} has set them up (none before). */
     private static volatile List<MemoryPoolMXBean> pools = List.of();
     private static final java.util.concurrent.CountDownLatch READY = new java.util.concurrent.CountDownLatch(1);
@@ -56,6 +62,9 @@ final class HeapWatch {
     private static void watchPools() {
         try {
             setUpPools();
+            // Reporting a fault and printing the result format numbers: load what that needs now,
+            // beside the run's set-up, rather than when the heap may be full.
+            String.format(Locale.ROOT, "%d %.1f %s", 1, 1.0, "");
         } finally {
             READY.countDown();
         }
@@ -74,8 +83,15 @@ final class HeapWatch {
         if (ManagementFactory.getMemoryMXBean() instanceof NotificationEmitter emitter) {
             emitter.addNotificationListener((n, handback) -> {
                 if (MemoryNotificationInfo.MEMORY_THRESHOLD_EXCEEDED.equals(n.getType())) {
-                    reserve = null;
-                    String what = nearlyFull(THRESHOLD_PERCENT, false);
+                    // The reserve is kept for when the heap has really run out: let go now, it would
+                    // only feed the controller until it is stopped.
+                    String what;
+                    try {
+                        what = nearlyFull(THRESHOLD_PERCENT, false);
+                    } catch (OutOfMemoryError e) {
+                        reserve = null;
+                        what = null;
+                    }
                     for (Consumer<String> l : LISTENERS) {
                         l.accept(what != null ? what : "the heap passed " + THRESHOLD_PERCENT + " % of its maximum");
                     }
