@@ -173,8 +173,13 @@ public final class ControllerHost implements HostedController {
     void exceededMemory(String what) {
         // Stopped before the message is made: a controller filling the heap must not go on meanwhile.
         if (claimEnd(ControllerStatus.EXCEEDED_MEMORY)) {
-            report("allocated without bound (" + what + "); the controller was stopped and the robot's motors set to 0."
-                    + " Does it keep adding to a list or map it never empties?");
+            try {
+                report("allocated without bound (" + what + "); the controller was stopped and the robot's motors set"
+                        + " to 0. Does it keep adding to a list or map it never empties?");
+            } catch (OutOfMemoryError full) {
+                HeapWatch.ranOut();
+                report("allocated without bound (the Java heap was full); the controller was stopped.");
+            }
         }
     }
 
