@@ -36,7 +36,7 @@ public final class DistanceField {
      */
     private final int[] nearest;
 
-    // Scratch for the one-dimensional transform, sized for the longer side.
+    // Scratch for the one-dimensional transform and the column sweeps, a row long.
     private final int[] f;
     private final int[] out;
     private final int[] arg;
@@ -55,13 +55,13 @@ public final class DistanceField {
         this.dist2 = new int[pw * ph];
         this.below = new byte[pw * ph];
         this.nearest = new int[pw * ph];
-        int n = Math.max(pw, ph);
-        this.f = new int[n];
-        this.out = new int[n];
-        this.arg = new int[n];
-        this.hull = new int[n];
-        this.bound = new double[n];
-        this.lineNearest = new int[n];
+        // Only rows go through the envelope, and the column sweeps keep one value per column.
+        this.f = new int[pw];
+        this.out = new int[pw];
+        this.arg = new int[pw];
+        this.hull = new int[pw];
+        this.bound = new double[pw];
+        this.lineNearest = new int[pw];
     }
 
     /**

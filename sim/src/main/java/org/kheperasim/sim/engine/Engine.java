@@ -224,7 +224,8 @@ public final class Engine {
         return StrictMath.max(1, limit);
     }
 
-    private static long ceilTicks(long nanos) {
+    /** @return the first tick starting at or after {@code nanos} (far in the future for {@link Long#MAX_VALUE}: never) */
+    static long ceilTicks(long nanos) {
         return nanos == Long.MAX_VALUE ? Long.MAX_VALUE / 2 : -Math.floorDiv(-nanos, TICK_NANOS);
     }
 

@@ -42,10 +42,12 @@ final class Motion {
             alone(robots.get(0), start, n);
             return;
         }
-        crowd.look(n);
         boolean capsMove = false;
         for (int i = 0; i < robots.size() && !capsMove; i++) {
             capsMove = robots.get(i).mayMoveCaps(n);
+        }
+        if (!capsMove) {
+            crowd.look(n);
         }
         together.clear();
         for (int i = 0; i < robots.size(); i++) {

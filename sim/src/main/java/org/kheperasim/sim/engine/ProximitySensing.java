@@ -51,6 +51,12 @@ final class ProximitySensing {
     private double[] nearX = new double[4];
     private double[] nearY = new double[4];
     private int near;
+    /** Another robot's centre farther than this from the sampling robot's is out of every beam's reach, mm. */
+    private final double reachable;
+    private double gatherX;
+    private double gatherY;
+    /** Notes the robots within {@link #reachable} of ({@link #gatherX}, {@link #gatherY}); made once, not per sample. */
+    private final Bodies.Visitor gather = this::noteRobot;
     /**
      * The last proofs that the field leaves a disc empty, for the robot's centre ({@code [COUNT]})
      * and each sensor's cone: a disc whose centre has moved less than the proof's slack is still
@@ -318,13 +324,6 @@ final class ProximitySensing {
         gatherY = robotY;
         bodies.visit(self, robotX, robotY, reachable, gather);
     }
-
-    /** Another robot's centre farther than this from the sampling robot's is out of every beam's reach, mm. */
-    private final double reachable;
-    private double gatherX;
-    private double gatherY;
-    /** Notes the robots within {@link #reachable} of ({@link #gatherX}, {@link #gatherY}); made once, not per sample. */
-    private final Bodies.Visitor gather = this::noteRobot;
 
     private void noteRobot(int k, double dx, double dy) {
         if (dx * dx + dy * dy >= reachable * reachable) {

@@ -173,8 +173,7 @@ public final class SimRobot {
 
     /** @return the tick at whose start the poll cycle's next sample is taken (far in the future: never) */
     long nextPollTick() {
-        long due = link.nextPollDue();
-        return due == Long.MAX_VALUE ? Long.MAX_VALUE / 2 : -Math.floorDiv(-due, Engine.TICK_NANOS);
+        return Engine.ceilTicks(link.nextPollDue());
     }
 
     /** @return true when the poll cycle's next sample is a proximity sample (it sees the other robots) */

@@ -83,8 +83,8 @@ final class HeapWatch {
         if (ManagementFactory.getMemoryMXBean() instanceof NotificationEmitter emitter) {
             emitter.addNotificationListener((n, handback) -> {
                 if (MemoryNotificationInfo.MEMORY_THRESHOLD_EXCEEDED.equals(n.getType())) {
-                    // The reserve is kept for when the heap has really run out: let go now, it would
-                    // only feed the controller until it is stopped.
+                    // The reserve is kept for when the heap has really run out: let go at the mere
+                    // threshold, it would only feed the controller until it is stopped.
                     String what;
                     try {
                         what = nearlyFull(THRESHOLD_PERCENT, false);

@@ -20,7 +20,7 @@ public final class ControllerCatalog {
     private final List<Path> classpath;
     private final boolean trusted;
     /** The bundled controllers' names, read once (a run loads one class per robot). */
-    private volatile List<String> bundledNames;
+    private final List<String> bundledNames = List.copyOf(bundled());
 
     /** @param classpath folders and jars with the user's compiled classes (may be empty) */
     public ControllerCatalog(List<Path> classpath) {
@@ -55,12 +55,7 @@ public final class ControllerCatalog {
     public Class<?> load(String name) {
         ControllerClassLoader loader = new ControllerClassLoader(classpath, ControllerCatalog.class.getClassLoader(), !trusted);
         try {
-            List<String> names = bundledNames;
-            if (names == null) {
-                names = List.copyOf(bundled());
-                bundledNames = names;
-            }
-            return ControllerNames.resolve(name, loader, names, classpath, "khepera-sim.jar");
+            return ControllerNames.resolve(name, loader, bundledNames, classpath, "khepera-sim.jar");
         } catch (ControllerPolicyError e) {
             throw new ControllerException("controller " + name + " was refused: " + e.getMessage(), e);
         }
