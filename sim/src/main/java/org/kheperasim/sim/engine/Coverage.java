@@ -14,6 +14,9 @@ import org.kheperasim.sim.arena.Region;
  * <p>Cells are marked along the centre's path as a chain of neighbouring cells, from one marking
  * point to the next (the poll samples), each step adding the body's leading edge; the bitmap is
  * kept in tiles allocated on first visit, so a robot that stays in one room costs a few kilobytes.
+ * The covered cells are the union of the footprints around every centre cell of the chain, so a
+ * centre cell met again adds nothing: a second bitmap of the centre cells already met lets the
+ * chain pass them without stamping (a robot circling a room stamps almost nothing after a while).
  * Regions are checked at the end of every move; the engine steps tick by tick near a region not
  * yet entered, so the entry time is the same however it steps.
  */
@@ -30,10 +33,14 @@ final class Coverage {
     private final OccupancyGrid grid;
     private final int tilesAcross;
     private long[][] tiles;
+    /** The centre cells the chain has met, in the same tiles: their whole footprints are covered. */
+    private final long[][] centres;
     private int lastCol = Integer.MIN_VALUE;
     private int lastRow;
     private List<Region> regions;
     private long[] entered;
+    /** How many regions are not entered yet: once all are, no move needs to look at them. */
+    private int unentered;
 
     /**
      * @param world the world
@@ -45,9 +52,11 @@ final class Coverage {
         this.grid = world.grid();
         this.tilesAcross = (grid.cols() + TILE - 1) >> TILE_SHIFT;
         this.tiles = new long[tilesAcross * ((grid.rows() + TILE - 1) >> TILE_SHIFT)][];
+        this.centres = new long[tiles.length][];
         this.regions = world.arena().regions();
         this.entered = new long[regions.size()];
         Arrays.fill(entered, -1);
+        unentered = entered.length;
         regionsAt(startX, startY, 0);
     }
 
@@ -58,7 +67,9 @@ final class Coverage {
         if (lastCol == Integer.MIN_VALUE) {
             lastCol = col;
             lastRow = row;
-            stamp(col, row, FOOTPRINT);
+            if (firstVisit(col, row)) {
+                stamp(col, row, FOOTPRINT);
+            }
             return;
         }
         // Walk the chain of neighbouring cells from the last centre cell to this one.
@@ -74,8 +85,31 @@ final class Coverage {
             }
             lastCol += dc;
             lastRow += dr;
-            stamp(lastCol, lastRow, EDGES[(dr + 1) * 3 + (dc + 1)]);
+            // The last centre cell's footprint is covered: a new one adds its leading edge only.
+            if (firstVisit(lastCol, lastRow)) {
+                stamp(lastCol, lastRow, EDGES[(dr + 1) * 3 + (dc + 1)]);
+            }
         }
+    }
+
+    /** Note the centre cell (col, row): true the first time (its footprint is then still to stamp). */
+    private boolean firstVisit(int col, int row) {
+        if (col < 0 || row < 0 || col >= grid.cols() || row >= grid.rows()) {
+            return true;
+        }
+        int t = (row >> TILE_SHIFT) * tilesAcross + (col >> TILE_SHIFT);
+        long[] tile = centres[t];
+        if (tile == null) {
+            tile = new long[TILE * TILE / 64];
+            centres[t] = tile;
+        }
+        int bit = ((row & (TILE - 1)) << TILE_SHIFT) | (col & (TILE - 1));
+        long mask = 1L << bit;
+        if ((tile[bit >> 6] & mask) != 0) {
+            return false;
+        }
+        tile[bit >> 6] |= mask;
+        return true;
     }
 
     private void stamp(int col, int row, int[] offsets) {
@@ -106,9 +140,13 @@ final class Coverage {
 
     /** The centre is at (x, y) at the end of a move at {@code timeNanos}: note the regions it is in. */
     void regionsAt(double x, double y, long timeNanos) {
+        if (unentered == 0) {
+            return;
+        }
         for (int k = 0; k < entered.length; k++) {
             if (entered[k] < 0 && regions.get(k).contains(x, y)) {
                 entered[k] = timeNanos;
+                unentered--;
             }
         }
     }
@@ -116,6 +154,9 @@ final class Coverage {
     /** @return how far the centre can travel from (x, y) without entering a region not yet entered, mm */
     double freeTravelMm(double x, double y) {
         double best = Double.POSITIVE_INFINITY;
+        if (unentered == 0) {
+            return best;
+        }
         for (int k = 0; k < entered.length; k++) {
             if (entered[k] < 0) {
                 Region g = regions.get(k);
@@ -141,6 +182,10 @@ final class Coverage {
         }
         regions = edited;
         entered = next;
+        unentered = 0;
+        for (long t : next) {
+            unentered += t < 0 ? 1 : 0;
+        }
     }
 
     /** @return percentage of the arena's floor cells (as the arena is now) the body has covered */
