@@ -6,7 +6,9 @@ import org.kheperasim.api.MessagePasser;
 /**
  * Threads that talk through wait/notify, join and interrupt: a producer that hands over a value
  * after 300 ms, a sleeper interrupted after 100 ms, and joins; each event reported with its
- * simulated time in ms since the start.
+ * simulated time in ms since the start. It also reports what its code sees of its threads: itself
+ * as {@code Thread.currentThread()}, and its interrupt flag (whichever thread runs its code, see
+ * {@code ThreadRunners}).
  */
 public class WaitNotify extends Thread {
     private final MessagePasser mp;
@@ -25,6 +27,11 @@ public class WaitNotify extends Thread {
     @Override
     public void run() {
         t0 = System.currentTimeMillis();
+        mp.sendMessage("self " + (Thread.currentThread() == this) + " " + Thread.currentThread().getName().equals(getName()));
+        interrupt();
+        boolean flagged = isInterrupted();
+        boolean cleared = Thread.interrupted();
+        mp.sendMessage("interrupt flag " + flagged + " " + cleared + " " + isInterrupted());
         Thread producer = new Thread(() -> {
             try {
                 Thread.sleep(300);
@@ -42,6 +49,7 @@ public class WaitNotify extends Thread {
                 mp.sendMessage("sleeper slept on");
             } catch (InterruptedException e) {
                 mp.sendMessage("sleeper interrupted at " + ms());
+                mp.sendMessage("sleeper is " + Thread.currentThread().getName());
             }
         }, "sleeper");
         producer.start();
@@ -50,6 +58,7 @@ public class WaitNotify extends Thread {
         try {
             Thread.sleep(100);
             sleeper.interrupt();
+            mp.sendMessage("sleeper flagged " + sleeper.isInterrupted());
             synchronized (box) {
                 while (value == null) {
                     box.wait();

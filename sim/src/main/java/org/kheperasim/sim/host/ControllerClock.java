@@ -68,7 +68,17 @@ final class ControllerClock implements SimClock.Clock, PortClock {
 
     /** @return true on the thread of the controller's that holds the turn */
     boolean onTurn() {
-        return Thread.currentThread() == threads.running().thread;
+        return Thread.currentThread() == threads.running().runner;
+    }
+
+    /** @return {@code p}'s interrupt flag as the thread holding the turn may see it: the same however the threads were scheduled */
+    boolean interrupted(Participant p) {
+        return p == threads.running() || p.done ? p.runner.isInterrupted() : p.interruptPending;
+    }
+
+    /** @return the {@code Thread} object of the controller's thread holding the turn, as its code knows it */
+    Thread runningThread() {
+        return threads.running().thread;
     }
 
     /** Every API call starts here: the lockstep check. */
@@ -115,6 +125,7 @@ final class ControllerClock implements SimClock.Clock, PortClock {
     /** The running thread has set when it is due next: run whoever is due, and return when it runs again. */
     private void reschedule() {
         Participant me = threads.running();
+        me.interruptPending = Thread.currentThread().isInterrupted();
         if (!handOff(me)) {
             host.lockstep().turn().await(me.seat);
         }
@@ -172,8 +183,7 @@ final class ControllerClock implements SimClock.Clock, PortClock {
         now = StrictMath.max(now, p.wake);
         host.lockstep().turn().giveTo(p.seat);
         if (!p.started) {
-            p.started = true;
-            p.thread.start();
+            p.start(this);
         }
     }
 
@@ -322,6 +332,7 @@ final class ControllerClock implements SimClock.Clock, PortClock {
         apiCalls++;
         Participant me = threads.running();
         threads.beginWait(me, monitor, millis == 0 ? Long.MAX_VALUE : now + TimeUnit.MILLISECONDS.toNanos(millis));
+        me.interruptPending = false;
         me.seat.waitMonitor = monitor;
         try {
             if (!handOff(me)) {

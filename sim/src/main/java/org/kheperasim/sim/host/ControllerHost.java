@@ -283,7 +283,7 @@ public final class ControllerHost implements HostedController {
             lockstep.awaitOwner(STOP_GRACE_MILLIS * 1_000_000L);
             if (status == ControllerStatus.RUNNING) {
                 detached = true;
-                controller.interrupt();
+                threads.main().interrupt();
                 say(ConsoleLine.Kind.ERROR, "did not stop within " + STOP_GRACE_MILLIS / 1000 + " s of being asked;"
                         + " it was left behind. Does it catch Throwable, or loop inside a library call?");
                 finish(ControllerStatus.STOPPED);
@@ -317,17 +317,17 @@ public final class ControllerHost implements HostedController {
         }
         announceStop();
         for (Participant p : threads.all()) {
-            if (p.done || (p.index == 0 && (detached || !p.thread.isAlive()))) {
+            if (p.done || (p.index == 0 && (detached || !p.runner.isAlive()))) {
                 continue;
             }
-            if (!p.started || !p.thread.isAlive()) {
+            if (!p.started || !p.runner.isAlive()) {
                 threads.ended(p);
                 continue;
             }
             clock.switchTo(p);
             lockstep.awaitOwner(STOP_GRACE_MILLIS * 1_000_000L);
             if (lockstep.takeBack(p.seat)) {
-                p.thread.interrupt();
+                p.interrupt();
                 say(ConsoleLine.Kind.ERROR, "thread " + p + " that the controller started did not end with it; it"
                         + " was left behind. Does it catch Throwable, or loop inside a library call?");
             }
@@ -353,10 +353,10 @@ public final class ControllerHost implements HostedController {
         if (who.index == 0) {
             detached = true;
             Controllers.requestStop(controller);
-            controller.interrupt();
+            threads.main().interrupt();
         } else {
             // It unwinds at its next loop checkpoint; the controller's other threads end with it.
-            who.thread.interrupt();
+            who.interrupt();
             threads.ended(who);
         }
         finish(ControllerStatus.HUNG);

@@ -84,7 +84,7 @@ final class ControllerThreads {
     /** @return the participant whose thread {@code t} is, or null */
     Participant of(Thread t) {
         for (int i = 0; i < all.size(); i++) {
-            if (all.get(i).thread == t) {
+            if (all.get(i).is(t)) {
                 return all.get(i);
             }
         }

@@ -233,7 +233,7 @@ public final class Lockstep {
             }
             Participant holder = host.participantAt(seat);
             // TERMINATED, not !isAlive(): a thread just handed its first turn may not have started yet.
-            if (holder.thread.getState() == Thread.State.TERMINATED) {
+            if (holder.runner.getState() == Thread.State.TERMINATED) {
                 if (turn.takeFrom(seat, owner)) {
                     // Its run() returned while it held the turn.
                     if (holder.index == 0) {

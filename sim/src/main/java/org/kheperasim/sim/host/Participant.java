@@ -10,6 +10,11 @@ final class Participant {
     /** Position in the controller's threads: 0 is the controller's own; ties are broken by it. */
     final int index;
     final Thread thread;
+    /**
+     * The thread that runs its code: {@link #thread} itself, or once started, a virtual thread
+     * calling its {@code run()} (see {@link ThreadRunners}). Read by the watchdog.
+     */
+    volatile Thread runner;
     final Turn.Seat seat;
     /** Simulated time it next wants to run at, ns; {@link Long#MAX_VALUE} while it waits with no timeout. */
     long wake;
@@ -23,12 +28,53 @@ final class Participant {
     long waitOrder;
     /** How many times it had entered {@link #lock} when it began to wait: it re-enters as often. */
     int lockCount;
+    /**
+     * Its interrupt flag as the others see it while it is not running: its own flag when it last
+     * gave up the turn, set by an interrupt since. Its real flag cannot tell them: a thread waiting
+     * for its turn clears it to park again (and sets it back when its turn comes), at a moment
+     * only the wall clock decides.
+     */
+    volatile boolean interruptPending;
 
     Participant(int index, Thread thread, long wake) {
         this.index = index;
         this.thread = thread;
+        this.runner = thread;
         this.seat = new Turn.Seat(thread);
         this.wake = wake;
+    }
+
+    /** Start its thread (the first time it is given the turn), binding {@code clock} to it. */
+    void start(SimClock.Clock clock) {
+        Thread r = ThreadRunners.runnerOf(thread, clock);
+        if (r != thread) {
+            runner = r;
+            seat.seat(r, true);
+            if (thread.isInterrupted()) {
+                r.interrupt();
+            }
+        }
+        started = true;
+        r.start();
+    }
+
+    /** Is {@code t} this participant's thread, or the thread running its code? */
+    boolean is(Thread t) {
+        return thread == t || runner == t;
+    }
+
+    /** Interrupt it: the object its code knows, and the thread running that code. */
+    void interrupt() {
+        thread.interrupt();
+        interruptRunner();
+    }
+
+    /** Interrupt the thread running its code, when that is not the object itself. */
+    void interruptRunner() {
+        Thread r = runner;
+        if (r != thread) {
+            r.interrupt();
+        }
     }
 
     @Override

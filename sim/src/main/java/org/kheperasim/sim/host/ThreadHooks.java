@@ -3,7 +3,9 @@ package org.kheperasim.sim.host;
 /**
  * What the controller class loader puts in place of the thread calls of contained controller code,
  * so that the threads a controller starts take part in the lockstep on the simulated clock:
- * {@code Thread.start}, {@code join}, {@code isAlive} and {@code interrupt}; {@code synchronized}
+ * {@code Thread.start}, {@code join}, {@code isAlive}, {@code interrupt}, {@code isInterrupted} and
+ * {@code Thread.currentThread} (which answer for the {@code Thread} object even when a virtual thread
+ * runs its code, see {@link ThreadRunners}); {@code synchronized}
  * blocks and methods; {@code Object.wait}, {@code notify} and {@code notifyAll}. Each has the
  * signature of what it replaces (an instance method's receiver comes first).
  *
@@ -69,8 +71,23 @@ public final class ThreadHooks {
         ControllerClock c = onTurn();
         Participant p = c == null ? null : c.participant(thread);
         if (p != null) {
+            p.interruptPending = true;
+            p.interruptRunner();
             c.interrupt(p);
         }
+    }
+
+    /** Replaces {@link Thread#isInterrupted()}: for a thread of the controller, the flag of the thread running its code. */
+    public static boolean isInterrupted(Thread thread) {
+        ControllerClock c = onTurn();
+        Participant p = c == null ? null : c.participant(thread);
+        return p == null ? thread.isInterrupted() : c.interrupted(p);
+    }
+
+    /** Replaces {@link Thread#currentThread()}: on a thread of the controller, its {@code Thread} object. */
+    public static Thread currentThread() {
+        ControllerClock c = onTurn();
+        return c == null ? Thread.currentThread() : c.runningThread();
     }
 
     /** Put before every {@code monitorenter} of controller code (and at the start of a synchronized method). */

@@ -36,6 +36,8 @@ final class Turn {
         long typicalWaitNanos;
         /** The monitor whose real {@code wait} the seat's thread waits in for its turn, or null. */
         volatile Object waitMonitor;
+        /** A virtual thread parks at once: parking and waking one costs less than a spin. */
+        private volatile boolean virtual;
 
         Seat(Thread thread) {
             this.thread = thread;
@@ -47,6 +49,12 @@ final class Turn {
 
         /** The seat's thread, when it is created after the seat (a controller thread). */
         void seat(Thread t) {
+            thread = t;
+        }
+
+        /** The seat's thread, when it is created after the seat; {@code virtual} when it is a virtual thread. */
+        void seat(Thread t, boolean virtual) {
+            this.virtual = virtual;
             thread = t;
         }
     }
@@ -106,7 +114,7 @@ final class Turn {
             return;
         }
         long start = System.nanoTime();
-        if (me.typicalWaitNanos < SPIN_WORTH_NANOS && reserveSpin()) {
+        if (!me.virtual && me.typicalWaitNanos < SPIN_WORTH_NANOS && reserveSpin()) {
             try {
                 int spins = 0;
                 while (holder != me && spinning(++spins, start)) {

@@ -84,6 +84,11 @@ class ControllerThreadsTest {
     void waitNotifyJoinAndInterruptWorkOnTheSimulatedClock() {
         RunResult r = run("WaitNotify", 5, ControllerHost.Options.defaults(), null);
         assertEquals("alive true true", line("alive"), "started threads are alive before they first run");
+        // Its code sees its own Thread object and interrupt flag, whichever thread runs the code.
+        assertEquals("self true true", line("self "));
+        assertEquals("interrupt flag true true false", line("interrupt flag"));
+        assertEquals("sleeper flagged true", line("sleeper flagged"));
+        assertEquals("sleeper is sleeper", line("sleeper is"));
         assertTrue(line("sleeper interrupted at ").matches("sleeper interrupted at 10[0-9]"), line("sleeper"));
         assertTrue(line("got 42 at ").matches("got 42 at 30[0-9]"), "woken by the producer's notify: " + line("got"));
         assertTrue(line("joined at ").matches("joined at 30[0-9] alive false false"), line("joined"));

@@ -36,7 +36,10 @@ final class CallTargets {
     /** Instance methods of {@code Thread} (or a subclass) that {@link org.kheperasim.sim.host.ThreadHooks} replaces. */
     private static final java.util.Map<String, String> THREAD_VIRTUALS = java.util.Map.of(
             "start()V", "start", "join()V", "join", "join(J)V", "join", "join(JI)V", "join",
-            "isAlive()Z", "isAlive", "interrupt()V", "interrupt");
+            "isAlive()Z", "isAlive", "interrupt()V", "interrupt", "isInterrupted()Z", "isInterrupted");
+
+    /** {@code Thread.currentThread()}, which {@link org.kheperasim.sim.host.ThreadHooks} answers for contained code. */
+    private static final String CURRENT_THREAD = "currentThread()Ljava/lang/Thread;";
 
     /** Where a call goes instead. */
     /**
@@ -94,6 +97,10 @@ final class CallTargets {
             }
             if (owner.equals(SYSTEM) && SYSTEM_STATICS.contains(method)) {
                 return new Target(SIM_CLOCK, name, descriptor);
+            }
+            if (contained && method.equals(CURRENT_THREAD)
+                    && (owner.equals(THREAD) || lookup.resolvesToThread(owner, name, descriptor))) {
+                return new Target(THREAD_HOOKS, name, descriptor);
             }
             String contain = contained ? CONTAINED_STATICS.get(owner + "." + method) : null;
             if (contain != null) {
