@@ -155,6 +155,10 @@ final class Bodies {
         double best = Double.POSITIVE_INFINITY;
         int which = -1;
         double reach = within + R;
+        // A centre farther than this (a margin past `reach` for rounding) is surely beyond `within`:
+        // no square root is taken for it.
+        double far = reach + 1e-6 + reach * 1e-12;
+        double far2 = far * far;
         int c0 = StrictMath.max(0, (int) ((px - reach) / CELL_MM));
         int c1 = StrictMath.min(cols - 1, (int) ((px + reach) / CELL_MM));
         int r0 = StrictMath.max(0, (int) ((py - reach) / CELL_MM));
@@ -165,7 +169,11 @@ final class Bodies {
                     if (k != self) {
                         double dx = x[k] - px;
                         double dy = y[k] - py;
-                        double d = StrictMath.sqrt(dx * dx + dy * dy) - R;
+                        double d2 = dx * dx + dy * dy;
+                        if (d2 > far2) {
+                            continue;
+                        }
+                        double d = StrictMath.sqrt(d2) - R;
                         // Ties go to the lower index, whatever the buckets' order.
                         if (d <= within && (lowestIndex ? which < 0 || k < which : d < best || d == best && k < which)) {
                             best = d;

@@ -51,6 +51,9 @@ final class ProximitySensing {
     private double[] nearX = new double[4];
     private double[] nearY = new double[4];
     private int near;
+    /** Of those, the ones whose bodies reach into the present sensor's cone (indices), and how many. */
+    private int[] cone = new int[4];
+    private int inCone;
     /** Another robot's centre farther than this from the sampling robot's is out of every beam's reach, mm. */
     private final double reachable;
     private double gatherX;
@@ -186,7 +189,11 @@ final class ProximitySensing {
             // Every beam of this sensor lies in this disc: proven free of walls, lamps and caps, only
             // robots can answer them.
             boolean coneFree = noCaps && discEmpty(i, midX, midY, coneMid);
-            if (coneFree && robotsOutside(midX, midY, coneMid)) {
+            inCone = 0;
+            if (near > 0) {
+                robotsInCone(midX, midY, coneMid);
+            }
+            if (coneFree && inCone == 0) {
                 out[i] = reading(i, 0, sample);
                 continue;
             }
@@ -240,7 +247,7 @@ final class ProximitySensing {
             double reflect;
             if (coneFree || noCaps && empty(px, py, rx, ry, skip, limit)) {
                 // The grid march would find nothing: no wall, lamp or cap along the beam.
-                if (near == 0) {
+                if (inCone == 0) {
                     continue;
                 }
                 d = Double.POSITIVE_INFINITY;
@@ -249,7 +256,7 @@ final class ProximitySensing {
                 d = skip + grid.castRay(px + skip * rx, py + skip * ry, rx, ry, limit - skip, hit);
                 reflect = d == Double.POSITIVE_INFINITY ? 0 : reflectanceOf(hit.id);
             }
-            if (near > 0) {
+            if (inCone > 0) {
                 double dr = robotAlong(px, py, rx, ry);
                 if (dr < d && dr <= limit) {
                     d = dr;
@@ -339,19 +346,22 @@ final class ProximitySensing {
     }
 
     /**
-     * @return true when none of those robots' bodies comes within the disc of radius {@code radius}
-     *     around (x, y), with a margin for rounding
+     * Note those robots whose bodies come within the disc of radius {@code radius} around (x, y),
+     * with a margin for rounding: the sensor's beams lie in that disc (the sensor itself on its
+     * edge), so no other robot can meet a beam within its range, or hold the sensor inside it.
      */
-    private boolean robotsOutside(double x, double y, double radius) {
+    private void robotsInCone(double x, double y, double radius) {
         double clear = radius + Khepera.BODY_RADIUS_MM + 1e-6;
         for (int k = 0; k < near; k++) {
             double ex = nearX[k] - x;
             double ey = nearY[k] - y;
             if (ex * ex + ey * ey <= clear * clear) {
-                return false;
+                if (inCone == cone.length) {
+                    cone = java.util.Arrays.copyOf(cone, inCone * 2);
+                }
+                cone[inCone++] = k;
             }
         }
-        return true;
     }
 
     /** @return the distance from a sensor to the nearest of those robots' surfaces, mm */
@@ -365,11 +375,15 @@ final class ProximitySensing {
         return best;
     }
 
-    /** @return how far a beam from (px, py) along the unit vector (rx, ry) goes before it meets one of those robots, mm */
+    /**
+     * @return how far a beam from (px, py) along the unit vector (rx, ry) goes before it meets one of
+     *     the robots in the sensor's cone, mm (the others could only be met beyond its range)
+     */
     private double robotAlong(double px, double py, double rx, double ry) {
         double best = Double.POSITIVE_INFINITY;
         double rr = Khepera.BODY_RADIUS_MM * Khepera.BODY_RADIUS_MM;
-        for (int k = 0; k < near; k++) {
+        for (int j = 0; j < inCone; j++) {
+            int k = cone[j];
             double wx = nearX[k] - px;
             double wy = nearY[k] - py;
             double b = wx * rx + wy * ry;
