@@ -66,15 +66,15 @@ public abstract class RobotController implements Controller {
     protected void simStart() {
         Thread t;
         synchronized (this) {
-            t = thread;
-            if (t == null) {
-                t = new Thread(this, name != null ? name : getClass().getSimpleName());
-                thread = t;
+            if (thread != null) {
+                // The runner attached by the simulator or robot-link (which start it themselves), or
+                // the thread an earlier simStart() made and started.
+                return;
             }
+            t = new Thread(this, name != null ? name : getClass().getSimpleName());
+            thread = t;
         }
-        if (t.getState() == Thread.State.NEW) {
-            t.start();
-        }
+        t.start();
     }
 
     /** @param ms pause between successive {@code doWork()} calls, ms of robot time; 0 or less: none */

@@ -71,9 +71,14 @@ final class ControllerClock implements SimClock.Clock, PortClock {
         return Thread.currentThread() == threads.running().runner;
     }
 
-    /** @return {@code p}'s interrupt flag as the thread holding the turn may see it: the same however the threads were scheduled */
+    /** @return {@code p}'s interrupt flag as the thread holding the turn sees it (see {@link ControllerThreads#interrupted}) */
     boolean interrupted(Participant p) {
-        return p == threads.running() || p.done ? p.runner.isInterrupted() : p.interruptPending;
+        return threads.interrupted(p);
+    }
+
+    /** @return {@code p}'s state as the thread holding the turn sees it (see {@link ControllerThreads#state}) */
+    Thread.State state(Participant p) {
+        return threads.state(p);
     }
 
     /** @return the {@code Thread} object of the controller's thread holding the turn, as its code knows it */
@@ -183,7 +188,7 @@ final class ControllerClock implements SimClock.Clock, PortClock {
         now = StrictMath.max(now, p.wake);
         host.lockstep().turn().giveTo(p.seat);
         if (!p.started) {
-            p.start(this);
+            p.start(this, ThreadRunners.contained(host.type()));
         }
     }
 

@@ -57,6 +57,8 @@ public final class ControllerHost implements HostedController {
     /** How the controller's life ends once it has unwound, when a fault decided it; else null. */
     private volatile ControllerStatus pendingEnd;
     private final StrayThreads strays = new StrayThreads(this);
+    /** Set on the controller's own thread when what it threw has ended it: it never takes the turn again. */
+    private volatile boolean ownThreadOver;
     /** The thread constructing the controller, while it does; threads started then join the lockstep. */
     private volatile Thread constructing;
 
@@ -317,7 +319,9 @@ public final class ControllerHost implements HostedController {
         }
         announceStop();
         for (Participant p : threads.all()) {
-            if (p.done || (p.index == 0 && (detached || !p.runner.isAlive()))) {
+            // The controller's own thread was left behind, or has ended: past its uncaught-exception
+            // handler it only unwinds its last frames, and may still look alive for a moment.
+            if (p.done || (p.index == 0 && (detached || ownThreadOver || !p.runner.isAlive()))) {
                 continue;
             }
             if (!p.started || !p.runner.isAlive()) {
@@ -382,6 +386,7 @@ public final class ControllerHost implements HostedController {
 
     /** The controller thread is ending with an exception (the uncaught-exception handler). */
     private void ended(Throwable e) {
+        ownThreadOver = true;
         if (detached) {
             settleStop();
             return;

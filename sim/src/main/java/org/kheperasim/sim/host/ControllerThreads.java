@@ -71,6 +71,29 @@ final class ControllerThreads {
         running = p;
     }
 
+    /** @return {@code p}'s interrupt flag as the thread holding the turn may see it: the same however the threads were scheduled */
+    boolean interrupted(Participant p) {
+        return p == running || p.done ? p.runner.isInterrupted() : p.interruptPending;
+    }
+
+    /**
+     * @return {@code p}'s state as the thread holding the turn sees it: running or due to run,
+     *     ended, blocked on a monitor, or waiting (with a timeout or not)
+     */
+    Thread.State state(Participant p) {
+        if (p == running || !p.started) {
+            // A participant exists from its start(): not run yet, it is runnable.
+            return Thread.State.RUNNABLE;
+        }
+        if (p.done) {
+            return Thread.State.TERMINATED;
+        }
+        if (p.lock != null && !p.waiting) {
+            return Thread.State.BLOCKED;
+        }
+        return p.wake == Long.MAX_VALUE ? Thread.State.WAITING : Thread.State.TIMED_WAITING;
+    }
+
     /** @return true while the controller has no other thread: the fast paths apply */
     boolean single() {
         return all.size() == 1;

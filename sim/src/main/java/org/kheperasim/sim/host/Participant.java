@@ -44,9 +44,15 @@ final class Participant {
         this.wake = wake;
     }
 
-    /** Start its thread (the first time it is given the turn), binding {@code clock} to it. */
-    void start(SimClock.Clock clock) {
-        Thread r = ThreadRunners.runnerOf(thread, clock);
+    /**
+     * Start its thread (the first time it is given the turn), binding {@code clock} to it.
+     *
+     * @param contained true when the controller's code is contained (see {@link ThreadRunners#runnerOf})
+     */
+    void start(SimClock.Clock clock, boolean contained) {
+        // Only the controller's own thread: a thread its code made may ask for a stack size or
+        // inherit thread-local values at its construction, which a virtual thread could not honour.
+        Thread r = ThreadRunners.runnerOf(thread, clock, contained && index == 0);
         if (r != thread) {
             runner = r;
             seat.seat(r, true);

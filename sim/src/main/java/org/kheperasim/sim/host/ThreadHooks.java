@@ -3,9 +3,10 @@ package org.kheperasim.sim.host;
 /**
  * What the controller class loader puts in place of the thread calls of contained controller code,
  * so that the threads a controller starts take part in the lockstep on the simulated clock:
- * {@code Thread.start}, {@code join}, {@code isAlive}, {@code interrupt}, {@code isInterrupted} and
- * {@code Thread.currentThread} (which answer for the {@code Thread} object even when a virtual thread
- * runs its code, see {@link ThreadRunners}); {@code synchronized}
+ * {@code Thread.start}, {@code join}, {@code isAlive}, {@code interrupt}, {@code isInterrupted},
+ * {@code getState}, {@code getStackTrace} and {@code Thread.currentThread} (which answer for the
+ * {@code Thread} object even when a virtual thread runs its code, see {@link ThreadRunners});
+ * {@code synchronized}
  * blocks and methods; {@code Object.wait}, {@code notify} and {@code notifyAll}. Each has the
  * signature of what it replaces (an instance method's receiver comes first).
  *
@@ -68,11 +69,14 @@ public final class ThreadHooks {
     /** Replaces {@link Thread#interrupt()}: a thread of the controller that sleeps or waits wakes at once. */
     public static void interrupt(Thread thread) {
         thread.interrupt();
+        Thread runner = ThreadRunners.of(thread);
+        if (runner != thread) {
+            runner.interrupt();
+        }
         ControllerClock c = onTurn();
         Participant p = c == null ? null : c.participant(thread);
         if (p != null) {
             p.interruptPending = true;
-            p.interruptRunner();
             c.interrupt(p);
         }
     }
@@ -81,7 +85,38 @@ public final class ThreadHooks {
     public static boolean isInterrupted(Thread thread) {
         ControllerClock c = onTurn();
         Participant p = c == null ? null : c.participant(thread);
-        return p == null ? thread.isInterrupted() : c.interrupted(p);
+        return p == null ? ThreadRunners.of(thread).isInterrupted() : c.interrupted(p);
+    }
+
+    /**
+     * Replaces {@link Thread#getState()}: for a thread of the controller, its state in the lockstep
+     * (the same however the real threads were scheduled); for any other, the state of the thread
+     * that runs its code.
+     */
+    public static Thread.State getState(Thread thread) {
+        ControllerClock c = onTurn();
+        Participant p = c == null ? null : c.participant(thread);
+        return p == null ? ThreadRunners.of(thread).getState() : c.state(p);
+    }
+
+    /**
+     * Replaces {@link Thread#getStackTrace()}: the stack of the thread that runs its code, as a
+     * platform thread running it would show it (without this hook's frame, or the frames below the
+     * code that a virtual thread runs it from).
+     */
+    public static StackTraceElement[] getStackTrace(Thread thread) {
+        Thread runner = ThreadRunners.of(thread);
+        StackTraceElement[] trace = runner.getStackTrace();
+        java.util.List<StackTraceElement> kept = new java.util.ArrayList<>(trace.length);
+        for (StackTraceElement e : trace) {
+            if (e.getClassName().startsWith(ThreadRunners.class.getName())) {
+                break;
+            }
+            if (!e.getClassName().equals(ThreadHooks.class.getName())) {
+                kept.add(e);
+            }
+        }
+        return kept.toArray(new StackTraceElement[0]);
     }
 
     /** Replaces {@link Thread#currentThread()}: on a thread of the controller, its {@code Thread} object. */

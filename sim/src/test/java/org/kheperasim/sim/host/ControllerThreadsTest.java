@@ -78,6 +78,8 @@ class ControllerThreadsTest {
         assertTrue(delayed >= 1, "the controller's thread waited for the lock at least once: " + order);
         assertTrue(r.first().distanceMm() > 100, "it drove: " + r.first());
         assertEquals(ControllerStatus.STOPPED, r.first().status(), messages());
+        // At the end the controller's own thread unwinds, then the reader: neither is left behind.
+        assertFalse(messages().contains("left behind"), messages());
     }
 
     @Test

@@ -36,7 +36,8 @@ final class CallTargets {
     /** Instance methods of {@code Thread} (or a subclass) that {@link org.kheperasim.sim.host.ThreadHooks} replaces. */
     private static final java.util.Map<String, String> THREAD_VIRTUALS = java.util.Map.of(
             "start()V", "start", "join()V", "join", "join(J)V", "join", "join(JI)V", "join",
-            "isAlive()Z", "isAlive", "interrupt()V", "interrupt", "isInterrupted()Z", "isInterrupted");
+            "isAlive()Z", "isAlive", "interrupt()V", "interrupt", "isInterrupted()Z", "isInterrupted",
+            "getState()Ljava/lang/Thread$State;", "getState", "getStackTrace()[Ljava/lang/StackTraceElement;", "getStackTrace");
 
     /** {@code Thread.currentThread()}, which {@link org.kheperasim.sim.host.ThreadHooks} answers for contained code. */
     private static final String CURRENT_THREAD = "currentThread()Ljava/lang/Thread;";

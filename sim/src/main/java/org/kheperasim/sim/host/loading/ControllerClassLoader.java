@@ -79,6 +79,11 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         this.hierarchy = new ClassHierarchy(this::localClassFile, parent);
     }
 
+    /** @return true when it contains the code it loads (rewrites its escapes and thread calls) */
+    public boolean contained() {
+        return contained;
+    }
+
     private static List<Root> open(List<Path> classpath) {
         List<Root> opened = new ArrayList<>();
         try {
