@@ -82,6 +82,45 @@ class WsuControllerRunTest {
         assertEquals(List.of("1,1", "2,2", "3,3", "0,0"), port.speeds, "the wheels are stopped when the controller ends");
     }
 
+    /** Calls simStart() from doWork, as code ported from the WSU simulator may; remembers itself. */
+    public static class SimStarter extends RobotController {
+        static volatile SimStarter last;
+        private int steps;
+
+        public SimStarter() {
+            last = this;
+        }
+
+        @Override
+        public void doWork() {
+            simStart();
+            LOG.add("doWork " + ++steps + " on " + Thread.currentThread().getName());
+            setFinished(steps == 2);
+        }
+
+        @Override
+        public void close() {
+        }
+    }
+
+    /**
+     * simStart() never starts the runner the backend attached, even while that runner looks
+     * unstarted (as it does when a virtual thread runs its code): the backend starts it, once.
+     */
+    @Test
+    void simStartLeavesTheAttachedRunnerToTheBackend() throws Exception {
+        LOG.clear();
+        Controllers.check(SimStarter.class);
+        Thread t = Controllers.instantiate(SimStarter.class, new org.kheperasim.api.CurrentRobotState(port), new MessagePasser(port));
+        t.setUncaughtExceptionHandler((thread, e) -> uncaught.set(e));
+        SimStarter.last.simStart();
+        assertEquals(Thread.State.NEW, t.getState(), "simStart() left the attached runner alone");
+        t.start();
+        t.join();
+        assertNull(uncaught.get());
+        assertEquals(List.of("doWork 1 on SimStarter", "doWork 2 on SimStarter"), LOG, "one runner ran the loop");
+    }
+
     /** Changes its pause from doWork. */
     public static class Slower extends RobotController {
         private int steps;
