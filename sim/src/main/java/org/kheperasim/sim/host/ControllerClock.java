@@ -68,7 +68,9 @@ final class ControllerClock implements SimClock.Clock, PortClock {
 
     /** @return true on the thread of the controller's that holds the turn */
     boolean onTurn() {
-        return Thread.currentThread() == threads.running().runner;
+        // Nobody runs yet while the controller is constructed.
+        Participant running = threads.running();
+        return running != null && Thread.currentThread() == running.runner;
     }
 
     /** @return {@code p}'s interrupt flag as the thread holding the turn sees it (see {@link ControllerThreads#interrupted}) */
@@ -123,6 +125,7 @@ final class ControllerClock implements SimClock.Clock, PortClock {
 
     /** The running thread's slice is used up: step the world on this thread until it runs again. */
     private void yieldTurn() {
+        threads.running().waitingAs = Thread.State.RUNNABLE;
         threads.running().wake = now;
         reschedule();
     }
@@ -188,7 +191,7 @@ final class ControllerClock implements SimClock.Clock, PortClock {
         now = StrictMath.max(now, p.wake);
         host.lockstep().turn().giveTo(p.seat);
         if (!p.started) {
-            p.start(this, ThreadRunners.contained(host.type()));
+            p.start();
         }
     }
 
@@ -218,7 +221,9 @@ final class ControllerClock implements SimClock.Clock, PortClock {
             }
             return;
         }
-        threads.running().wake = now + d;
+        Participant me = threads.running();
+        me.waitingAs = me.joining != null ? me.joining : Thread.State.TIMED_WAITING;
+        me.wake = now + d;
         reschedule();
         if (Thread.interrupted()) {
             throw new InterruptedException("sleep interrupted");
@@ -228,7 +233,8 @@ final class ControllerClock implements SimClock.Clock, PortClock {
     @Override
     public long nanoTime() {
         if (!onTurn()) {
-            return System.nanoTime();
+            // The constructor sees the run's start; other threads the wall clock.
+            return host.constructing() ? now : System.nanoTime();
         }
         enter();
         long t = now;
@@ -239,7 +245,7 @@ final class ControllerClock implements SimClock.Clock, PortClock {
     @Override
     public long currentTimeMillis() {
         if (!onTurn()) {
-            return System.currentTimeMillis();
+            return host.constructing() ? EPOCH_MILLIS + now / 1_000_000L : System.currentTimeMillis();
         }
         enter();
         long t = EPOCH_MILLIS + now / 1_000_000L;
@@ -337,6 +343,7 @@ final class ControllerClock implements SimClock.Clock, PortClock {
         apiCalls++;
         Participant me = threads.running();
         threads.beginWait(me, monitor, millis == 0 ? Long.MAX_VALUE : now + TimeUnit.MILLISECONDS.toNanos(millis));
+        me.waitingAs = millis == 0 ? Thread.State.WAITING : Thread.State.TIMED_WAITING;
         me.interruptPending = false;
         me.seat.waitMonitor = monitor;
         try {
@@ -385,8 +392,14 @@ final class ControllerClock implements SimClock.Clock, PortClock {
     /** {@code p.join(millis)}: the caller sleeps a millisecond at a time until {@code p} has ended. */
     void join(Participant p, long millis) throws InterruptedException {
         long deadline = millis == 0 ? Long.MAX_VALUE : now + TimeUnit.MILLISECONDS.toNanos(millis);
-        while (!p.done && now < deadline) {
-            sleepNanos(StrictMath.min(JOIN_POLL_NANOS, deadline - now));
+        Participant me = threads.running();
+        me.joining = millis == 0 ? Thread.State.WAITING : Thread.State.TIMED_WAITING;
+        try {
+            while (!p.done && now < deadline) {
+                sleepNanos(StrictMath.min(JOIN_POLL_NANOS, deadline - now));
+            }
+        } finally {
+            me.joining = null;
         }
     }
 

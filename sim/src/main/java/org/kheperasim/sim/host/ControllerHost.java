@@ -90,6 +90,7 @@ public final class ControllerHost implements HostedController {
         }
         controller = created;
         threads.main(created);
+        threads.main().chooseRunner(clock, ThreadRunners.contained(type));
         for (Participant p : threads.all()) {
             if (p.index > 0) {
                 prepare(p);

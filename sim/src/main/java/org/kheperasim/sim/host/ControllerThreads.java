@@ -88,10 +88,7 @@ final class ControllerThreads {
         if (p.done) {
             return Thread.State.TERMINATED;
         }
-        if (p.lock != null && !p.waiting) {
-            return Thread.State.BLOCKED;
-        }
-        return p.wake == Long.MAX_VALUE ? Thread.State.WAITING : Thread.State.TIMED_WAITING;
+        return p.lock != null && !p.waiting ? Thread.State.BLOCKED : p.waitingAs;
     }
 
     /** @return true while the controller has no other thread: the fast paths apply */

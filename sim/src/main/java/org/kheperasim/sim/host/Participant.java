@@ -35,6 +35,14 @@ final class Participant {
      * only the wall clock decides.
      */
     volatile boolean interruptPending;
+    /**
+     * What its {@code getState()} says while it waits for the turn: RUNNABLE when its slice ran out,
+     * TIMED_WAITING in a sleep, WAITING or TIMED_WAITING in a wait or join (blocked on a monitor is
+     * told by {@link #lock}).
+     */
+    Thread.State waitingAs = Thread.State.RUNNABLE;
+    /** While it is in {@code join}: WAITING, or TIMED_WAITING with a timeout; else null. */
+    Thread.State joining;
 
     Participant(int index, Thread thread, long wake) {
         this.index = index;
@@ -45,20 +53,26 @@ final class Participant {
     }
 
     /**
-     * Start its thread (the first time it is given the turn), binding {@code clock} to it.
+     * Choose the thread that will run the controller's own code (see {@link ThreadRunners}); on the
+     * thread that constructed the controller, just after. The threads its code starts keep
+     * theirs: they may ask for a stack size, which a virtual thread cannot honour.
      *
+     * @param clock the controller's clock, bound in the runner
      * @param contained true when the controller's code is contained (see {@link ThreadRunners#runnerOf})
      */
-    void start(SimClock.Clock clock, boolean contained) {
-        // Only the controller's own thread: a thread its code made may ask for a stack size or
-        // inherit thread-local values at its construction, which a virtual thread could not honour.
-        Thread r = ThreadRunners.runnerOf(thread, clock, contained && index == 0);
+    void chooseRunner(SimClock.Clock clock, boolean contained) {
+        Thread r = ThreadRunners.runnerOf(thread, clock, contained);
         if (r != thread) {
             runner = r;
             seat.seat(r, true);
-            if (thread.isInterrupted()) {
-                r.interrupt();
-            }
+        }
+    }
+
+    /** Start its thread, the first time it is given the turn. */
+    void start() {
+        Thread r = runner;
+        if (r != thread && thread.isInterrupted()) {
+            r.interrupt();
         }
         started = true;
         r.start();

@@ -42,7 +42,7 @@ public final class ThreadHooks {
         ControllerClock c = onTurn();
         Participant p = c == null ? null : c.participant(thread);
         if (p == null) {
-            thread.join(millis);
+            ThreadRunners.of(thread).join(millis);
             return;
         }
         if (millis < 0) {
@@ -63,7 +63,7 @@ public final class ThreadHooks {
     public static boolean isAlive(Thread thread) {
         ControllerClock c = onTurn();
         Participant p = c == null ? null : c.participant(thread);
-        return p == null ? thread.isAlive() : !p.done;
+        return p == null ? ThreadRunners.of(thread).isAlive() : !p.done;
     }
 
     /** Replaces {@link Thread#interrupt()}: a thread of the controller that sleeps or waits wakes at once. */

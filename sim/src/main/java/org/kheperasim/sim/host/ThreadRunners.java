@@ -36,8 +36,12 @@ import java.lang.reflect.Method;
 final class ThreadRunners {
     /** True when controller threads run as virtual threads in this JVM. */
     static final boolean VIRTUAL;
-    /** The thread running each controller thread's code, by the {@code Thread} object its code knows. */
-    private static final java.util.Map<Thread, Thread> RUNNERS =
+    /**
+     * The thread running each controller thread's code, by the {@code Thread} object its code
+     * knows. Weak both ways: the runner's task refers to the object, so a strong value would keep
+     * every run's controller (and through it the run) for the life of the JVM.
+     */
+    private static final java.util.Map<Thread, java.lang.ref.WeakReference<Thread>> RUNNERS =
             java.util.Collections.synchronizedMap(new java.util.WeakHashMap<>());
     private static final Method OF_VIRTUAL;
     private static final Method NAME;
@@ -80,7 +84,7 @@ final class ThreadRunners {
      * {@code clock} and calls its {@code run()}, passing what it throws to the object's uncaught
      * exception handler.
      *
-     * @param thread a controller's thread, not started
+     * @param thread a controller's thread, not started (call this on the thread that constructed it)
      * @param clock the controller's clock, bound in the runner
      * @param contained true when the controller's code is contained (its thread calls go to
      *     {@link ThreadHooks}); trusted code keeps a platform thread
@@ -99,11 +103,11 @@ final class ThreadRunners {
             Object builder = OF_VIRTUAL.invoke(null);
             builder = NAME.invoke(builder, thread.getName());
             builder = HANDLER.invoke(builder, forward);
-            // It is made when it first runs, on whichever thread passes it the turn (maybe another
-            // robot's): it inherits nothing from that thread; its clock is bound by the task.
-            builder = INHERIT.invoke(builder, false);
+            // Made where the controller was constructed, it inherits that thread's inheritable
+            // thread-locals as the Thread object did; its clock is bound by the task.
+            builder = INHERIT.invoke(builder, true);
             Thread runner = (Thread) UNSTARTED.invoke(builder, task);
-            RUNNERS.put(thread, runner);
+            RUNNERS.put(thread, new java.lang.ref.WeakReference<>(runner));
             return runner;
         } catch (ReflectiveOperationException e) {
             throw new IllegalStateException("could not make a virtual thread for '" + thread.getName() + "'", e);
@@ -120,7 +124,8 @@ final class ThreadRunners {
         if (!VIRTUAL) {
             return thread;
         }
-        Thread runner = RUNNERS.get(thread);
+        java.lang.ref.WeakReference<Thread> ref = RUNNERS.get(thread);
+        Thread runner = ref == null ? null : ref.get();
         return runner != null ? runner : thread;
     }
 }

@@ -99,6 +99,25 @@ class ControllerThreadsTest {
         assertTrue(r.simulatedSeconds() < 0.5, "the run ended with its controller: " + r.simulatedSeconds());
     }
 
+    /** getState() tells what a platform thread would be doing, from the lockstep's own record. */
+    @Test
+    void getStateSaysWhatEachThreadIsDoing() {
+        RunResult r = run("ThreadStates", 2, ControllerHost.Options.defaults(), null);
+        assertEquals("states busy RUNNABLE sleeper TIMED_WAITING joiner WAITING", line("states busy"), messages());
+        assertEquals("states waiter WAITING timed TIMED_WAITING notified BLOCKED", line("states waiter"), messages());
+        assertEquals("states after TERMINATED TERMINATED TERMINATED", line("states after"), messages());
+        assertEquals(ControllerStatus.FINISHED, r.first().status(), messages());
+    }
+
+    /** A constructor that reads the clock, its thread or takes a lock works, and sees the run's start. */
+    @Test
+    void aConstructorMayLookAtTheClockItsThreadAndALock() {
+        RunResult r = run("LooksAround", 1, ControllerHost.Options.defaults(), null);
+        assertEquals("seed " + ControllerClock.EPOCH_MILLIS + " constructed on a thread true runs as itself true",
+                line("seed "), messages());
+        assertEquals(ControllerStatus.FINISHED, r.first().status(), messages());
+    }
+
     @Test
     void threadsThatWaitForEachOtherAreADeadlockNamedAndTheRobotStopped() {
         RunResult r = run("Deadlock", 3, ControllerHost.Options.defaults(), null);
