@@ -64,6 +64,11 @@ public abstract class RobotController implements Controller {
      * it themselves; a controller never needs to call this.
      */
     protected void simStart() {
+        if (Boolean.TRUE.equals(BACKEND_CREATING.get())) {
+            // Called from the constructor while a backend creates the controller: it attaches and
+            // starts its own runner next.
+            return;
+        }
         Thread t;
         synchronized (this) {
             if (thread != null) {
@@ -258,6 +263,9 @@ public abstract class RobotController implements Controller {
     }
 
     // ------------------------------------------------------------------ for the runner
+
+    /** True on a backend's thread while it runs a controller's constructor (see {@link WsuControllerStyle}). */
+    static final ThreadLocal<Boolean> BACKEND_CREATING = new ThreadLocal<>();
 
     /** The runner thread that drives this controller, so that {@link #simStart()} does not start another. */
     synchronized void attach(Thread runner) {

@@ -58,6 +58,7 @@ public final class WsuControllerStyle implements ControllerStyle {
     public Thread instantiate(Class<?> type, RobotPort port, MessagePasser messages) {
         check(type);
         RobotController controller;
+        RobotController.BACKEND_CREATING.set(Boolean.TRUE);
         try {
             controller = (RobotController) noArgConstructor(type).newInstance();
         } catch (InvocationTargetException e) {
@@ -67,6 +68,8 @@ public final class WsuControllerStyle implements ControllerStyle {
         } catch (ReflectiveOperationException e) {
             throw new ControllerException("Controller " + type.getName() + " could not be created: " + e
                     + "; make the class and its constructor public", e);
+        } finally {
+            RobotController.BACKEND_CREATING.remove();
         }
         String name = type.getSimpleName();
         CurrentRobotState state = new CurrentRobotState(port);

@@ -121,6 +121,40 @@ class WsuControllerRunTest {
         assertEquals(List.of("doWork 1 on SimStarter", "doWork 2 on SimStarter"), LOG, "one runner ran the loop");
     }
 
+    /** Calls simStart() from its constructor. */
+    public static class StartsInConstructor extends RobotController {
+        private int steps;
+
+        public StartsInConstructor() {
+            simStart();
+        }
+
+        @Override
+        public void doWork() {
+            LOG.add("doWork " + ++steps + " on " + Thread.currentThread().getName());
+            setFinished(steps == 2);
+        }
+
+        @Override
+        public void close() {
+        }
+    }
+
+    /** simStart() in the constructor starts nothing of its own: the backend's runner runs the loop, once. */
+    @Test
+    void simStartInTheConstructorLeavesTheStartToTheBackend() throws Exception {
+        LOG.clear();
+        Thread t = Controllers.instantiate(StartsInConstructor.class, new org.kheperasim.api.CurrentRobotState(port),
+                new MessagePasser(port));
+        Thread.sleep(100);
+        assertEquals(List.of(), LOG, "nothing ran before the backend started the controller");
+        t.setUncaughtExceptionHandler((thread, e) -> uncaught.set(e));
+        t.start();
+        t.join();
+        assertNull(uncaught.get());
+        assertEquals(List.of("doWork 1 on StartsInConstructor", "doWork 2 on StartsInConstructor"), LOG);
+    }
+
     /** Changes its pause from doWork. */
     public static class Slower extends RobotController {
         private int steps;

@@ -239,14 +239,25 @@ public final class ControllerHost implements HostedController {
         }
         Turn turn = lockstep.turn();
         if (turn.heldBy(p.seat)) {
-            threads.ended(p);
+            helperEnded(p);
             lockstep.passTo(null);
         }
     }
 
     /** The watchdog saw a thread the controller started end while it held the turn: its run() returned. */
     void helperReturned(Participant p) {
+        helperEnded(p);
+    }
+
+    /**
+     * A thread the controller started has ended, holding the turn. If every thread left waits for
+     * another (the one that ended was to notify them), nothing can run again: a deadlock.
+     */
+    private void helperEnded(Participant p) {
         threads.ended(p);
+        if (threads.deadlocked()) {
+            deadlocked(threads.describeWaits());
+        }
     }
 
     /** Every thread of the controller waits for another: nothing can ever run again. Called holding the turn. */

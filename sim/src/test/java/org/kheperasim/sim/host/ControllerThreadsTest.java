@@ -99,6 +99,16 @@ class ControllerThreadsTest {
         assertTrue(r.simulatedSeconds() < 0.5, "the run ended with its controller: " + r.simulatedSeconds());
     }
 
+    /** The helper that was to notify the waiting controller ends without it: a deadlock, named at once. */
+    @Test
+    void aWaitThatTheEndedHelperWasToNotifyIsADeadlock() {
+        RunResult r = run("AbandonedWaiter", 3, ControllerHost.Options.defaults(), null);
+        assertTrue(line("controller AbandonedWaiter").contains("is deadlocked: the controller's own thread waits in wait()"),
+                messages());
+        assertEquals(ControllerStatus.HUNG, r.first().status(), messages());
+        assertTrue(r.simulatedSeconds() < 0.1, "found when the helper ended: " + r.simulatedSeconds());
+    }
+
     /** getState() tells what a platform thread would be doing, from the lockstep's own record. */
     @Test
     void getStateSaysWhatEachThreadIsDoing() {
