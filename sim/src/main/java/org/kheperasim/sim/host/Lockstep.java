@@ -232,8 +232,7 @@ public final class Lockstep {
                 continue;
             }
             Participant holder = host.participantAt(seat);
-            // TERMINATED, not !isAlive(): a thread just handed its first turn may not have started yet.
-            if (holder.runner.getState() == Thread.State.TERMINATED) {
+            if (exited(holder.runner)) {
                 if (turn.takeFrom(seat, owner)) {
                     // Its run() returned while it held the turn.
                     if (holder.index == 0) {
@@ -254,6 +253,19 @@ public final class Lockstep {
                 return;
             }
         }
+    }
+
+    /**
+     * Has this thread's {@code run()} returned (or thrown past its handler) while it held the turn?
+     * TERMINATED, not {@code !isAlive()}: a thread just handed its first turn may not have started
+     * yet. Or BLOCKED with no frame left: a platform thread that ends takes its own {@code Thread}
+     * object's monitor to tell its joiners, and waits there while another thread of the controller
+     * holds that monitor (a {@code synchronized} method of the controller) and sleeps, waiting for
+     * the turn this thread will not give back.
+     */
+    private static boolean exited(Thread t) {
+        Thread.State state = t.getState();
+        return state == Thread.State.TERMINATED || state == Thread.State.BLOCKED && t.getStackTrace().length == 0;
     }
 
     private ControllerHost hostAt(Turn.Seat seat) {

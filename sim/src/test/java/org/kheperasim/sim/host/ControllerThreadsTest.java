@@ -109,6 +109,18 @@ class ControllerThreadsTest {
         assertTrue(r.simulatedSeconds() < 0.1, "found when the helper ended: " + r.simulatedSeconds());
     }
 
+    /**
+     * The controller's run() returns while its sensor-manager thread holds the controller's monitor
+     * and sleeps: its thread cannot finish ending until that monitor is free, yet it has returned.
+     */
+    @Test
+    void aControllerThatReturnsWhileItsHelperHoldsItsLockHasFinished() {
+        RunResult r = run("LockedAtReturn", 3, ControllerHost.Options.defaults(), null);
+        assertEquals("returns", line("returns"), messages());
+        assertEquals(ControllerStatus.FINISHED, r.first().status(), messages());
+        assertFalse(messages().contains("stopped making API calls"), messages());
+    }
+
     /** getState() tells what a platform thread would be doing, from the lockstep's own record. */
     @Test
     void getStateSaysWhatEachThreadIsDoing() {
