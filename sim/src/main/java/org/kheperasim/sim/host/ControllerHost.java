@@ -141,11 +141,6 @@ public final class ControllerHost implements HostedController {
         return lockstep;
     }
 
-    /** @return the controller's thread */
-    Thread thread() {
-        return controller;
-    }
-
     /** @return the thread of this controller's that waits on {@code seat}, or null */
     Participant participantAt(Turn.Seat seat) {
         return threads.at(seat);
