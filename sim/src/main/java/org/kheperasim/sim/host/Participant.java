@@ -86,11 +86,6 @@ final class Participant {
     /** Interrupt it: the object its code knows, and the thread running that code. */
     void interrupt() {
         thread.interrupt();
-        interruptRunner();
-    }
-
-    /** Interrupt the thread running its code, when that is not the object itself. */
-    void interruptRunner() {
         Thread r = runner;
         if (r != thread) {
             r.interrupt();
