@@ -67,6 +67,12 @@ final class ProximitySensing {
      */
     private final ClearanceProof[] proven = new ClearanceProof[IrSensor.COUNT + 1];
 
+    /**
+     * False only in the test that checks the shortcuts: every beam of every sample is then marched
+     * over the grid from its sensor to its range, and every robot within reach is looked at.
+     */
+    private boolean shortcuts = true;
+
     /** What {@link #open} found for the sample being taken: the nearest cap's surface less the sensors' reach. */
     private double capFree;
 
@@ -116,7 +122,7 @@ final class ProximitySensing {
      * @param out receives the eight readings, 0..1023
      */
     void sample(double robotX, double robotY, double c, double s, long sample, int[] out) {
-        if (open(robotX, robotY)) {
+        if (open(robotX, robotY) && shortcuts) {
             sampleOpen(sample, out);
         } else {
             sampleNear(robotX, robotY, c, s, sample, out);
@@ -157,6 +163,14 @@ final class ProximitySensing {
         return false;
     }
 
+    /**
+     * For the test of the shortcuts only: from now on, take every sample the long way (see
+     * {@link #shortcuts}); the readings must not change.
+     */
+    void withoutShortcuts() {
+        shortcuts = false;
+    }
+
     /** The arena was edited: the field's earlier proofs no longer hold. */
     void arenaEdited() {
         for (ClearanceProof p : proven) {
@@ -176,7 +190,7 @@ final class ProximitySensing {
         double capFree = this.capFree;
         // No cap within any beam's reach: the distance field alone can prove a beam free of walls,
         // lamps and caps (the other robots, not in the grid, are looked at on their own).
-        boolean noCaps = capFree >= range;
+        boolean noCaps = capFree >= range && shortcuts;
         placement.place(robotX, robotY, c, s);
         for (int i = 0; i < IrSensor.COUNT; i++) {
             double px = placement.x[i];
@@ -191,7 +205,7 @@ final class ProximitySensing {
             boolean coneFree = noCaps && discEmpty(i, midX, midY, coneMid);
             inCone = 0;
             if (near > 0) {
-                robotsInCone(midX, midY, coneMid);
+                robotsInCone(midX, midY, shortcuts ? coneMid : Double.POSITIVE_INFINITY);
             }
             if (coneFree && inCone == 0) {
                 out[i] = reading(i, 0, sample);
@@ -204,7 +218,11 @@ final class ProximitySensing {
             if (near > 0) {
                 free = StrictMath.min(free, robotsFrom(px, py));
             }
-            if (free < range) {
+            if (!shortcuts) {
+                raw = beams(px, py, dx, dy, 0, false, false);
+            } else if (free - DriveBody.NEAR_MM < range) {
+                // The field's clearance is that of the nearest cell by the cells' centres: a cell up
+                // to NEAR_MM nearer may still meet a beam, so the beams start there.
                 raw = beams(px, py, dx, dy, StrictMath.max(0, free - DriveBody.NEAR_MM), noCaps, coneFree);
             }
             out[i] = reading(i, raw, sample);
@@ -235,7 +253,7 @@ final class ProximitySensing {
         double raw = 0;
         for (int r = 0; r < rayCos.length; r++) {
             // A hit beyond `reach` could not beat the strongest response so far: march no farther.
-            double reach = raw == 0 ? range
+            double reach = raw == 0 || !shortcuts ? range
                     : profile.distanceBeyondWhichAtMost(raw / (RAY_WEIGHTS[r] * maxReflectance)) + 1e-9;
             if (reach <= skip) {
                 continue;
@@ -245,7 +263,9 @@ final class ProximitySensing {
             double limit = StrictMath.min(range, reach);
             double d;
             double reflect;
-            if (coneFree || noCaps && empty(px, py, rx, ry, skip, limit)) {
+            // Where the march starts: the field may prove the beam empty farther than `skip`.
+            double from = coneFree || !noCaps ? skip : emptyUntil(px, py, rx, ry, skip, limit);
+            if (coneFree || from > limit) {
                 // The grid march would find nothing: no wall, lamp or cap along the beam.
                 if (inCone == 0) {
                     continue;
@@ -253,7 +273,7 @@ final class ProximitySensing {
                 d = Double.POSITIVE_INFINITY;
                 reflect = 0;
             } else {
-                d = skip + grid.castRay(px + skip * rx, py + skip * ry, rx, ry, limit - skip, hit);
+                d = from + grid.castRay(px + from * rx, py + from * ry, rx, ry, limit - from, hit);
                 reflect = d == Double.POSITIVE_INFINITY ? 0 : reflectanceOf(hit.id);
             }
             if (inCone > 0) {
@@ -274,24 +294,27 @@ final class ProximitySensing {
     }
 
     /**
-     * Does the distance field prove the beam from (px, py) along (rx, ry) empty between
-     * {@code from} and {@code to} (sphere tracing: every disc the field proves empty lets the beam
-     * on by its radius)? The grid march then has nothing to find, so skipping it changes nothing.
-     * Near an obstacle it gives up (false) and the march decides.
+     * How far the distance field proves the beam from (px, py) along (rx, ry) empty, starting at
+     * {@code from} (sphere tracing: every disc the field proves empty lets the beam on by its
+     * radius). Near an obstacle it stops, and the grid march goes on from there: it has nothing to
+     * find before, so starting it there changes nothing.
+     *
+     * @return the distance along the beam up to which it is empty, at least {@code from}; more than
+     *     {@code to} when the whole beam is
      */
-    private boolean empty(double px, double py, double rx, double ry, double from, double to) {
+    private double emptyUntil(double px, double py, double rx, double ry, double from, double to) {
         double t = from;
-        for (int k = 0; k < 4; k++) {
+        for (int k = 0; k < 8; k++) {
             double b = field.clearanceBelow(px + t * rx, py + t * ry);
             if (b <= OccupancyGrid.CELL_MM) {
-                return false;
+                return t;
             }
             t += b;
             if (t > to) {
-                return true;
+                return t;
             }
         }
-        return false;
+        return t;
     }
 
     /**

@@ -1,0 +1,134 @@
+package org.kheperasim.sim.engine;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.SplittableRandom;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.kheperasim.api.IrSensor;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.arena.Cap;
+import org.kheperasim.sim.arena.DistanceField;
+import org.kheperasim.sim.arena.OccupancyGrid;
+import org.kheperasim.sim.arena.Pose;
+import org.kheperasim.sim.engine.noise.CounterNoise;
+
+/**
+ * The proximity sensors' shortcuts change no reading: a sample with nothing in reach, a cone the
+ * distance field proves empty, beams started where the field proves them empty, a march cut short
+ * where no farther hit could beat the strongest, robots outside a cone left out. Each bundled
+ * arena, with caps and other robots scattered over its floor, is sampled at random poses (many of
+ * them close to a wall, a cap or a robot) both with the shortcuts and the long way (every beam
+ * marched over the grid from its sensor to its range, every robot within reach looked at), with the
+ * same noise draws; the readings must be the same.
+ */
+class ProximityShortcutsTest {
+
+    static List<String> arenas() {
+        return ArenaFormat.bundledNames();
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("arenas")
+    void theShortcutsChangeNoReading(String name) {
+        SplittableRandom random = new SplittableRandom(name.hashCode());
+        Arena bare = ArenaFormat.resolve(name);
+        DistanceField bareField = DistanceField.of(OccupancyGrid.of(bare));
+        List<Cap> caps = new ArrayList<>(bare.caps());
+        for (int k = 0; k < 40; k++) {
+            double[] at = freeSpot(bare, bareField, random, Cap.DEFAULT_RADIUS + 1);
+            caps.add(new Cap(at[0], at[1]));
+        }
+        Arena arena = new Arena(bare.name(), bare.width(), bare.height(), bare.robots(), bare.walls(), bare.lights(),
+                caps, bare.regions());
+        World world = new World(arena);
+        Engine engine = new Engine(world, 11);
+        Settings settings = Settings.defaults();
+        // Robot 0 is the one that samples (its own body does not count); the others stand about.
+        engine.addRobot("sampler", new Pose(-100, -100, 0), settings);
+        for (int k = 0; k < 30; k++) {
+            double[] at = freeSpot(arena, world.field(), random, Khepera.BODY_RADIUS_MM + 1);
+            engine.addRobot("r" + k, new Pose(at[0], at[1], random.nextDouble(360)), settings);
+        }
+        ProximitySensing quick = sensing(world, settings, 5);
+        ProximitySensing slow = sensing(world, settings, 5);
+        slow.withoutShortcuts();
+
+        int[] a = new int[IrSensor.COUNT];
+        int[] b = new int[IrSensor.COUNT];
+        int seen = 0;
+        for (int k = 0; k < 20_000; k++) {
+            double[] at = placeable(arena, world, engine, random, k % 2 == 1);
+            if (at == null) {
+                continue;
+            }
+            double heading = random.nextDouble(2 * StrictMath.PI);
+            double c = StrictMath.cos(heading);
+            double s = StrictMath.sin(heading);
+            quick.sample(at[0], at[1], c, s, k, a);
+            slow.sample(at[0], at[1], c, s, k, b);
+            assertArrayEquals(b, a, () -> String.format(java.util.Locale.ROOT,
+                    "%s: the readings at (%.3f, %.3f) heading %.2f rad", name, at[0], at[1], heading));
+            for (int v : b) {
+                if (v > 200) {
+                    seen++;
+                    break;
+                }
+            }
+        }
+        // The poses must put things in sight, or the comparison proves little.
+        assertTrue(seen > 3000, name + ": only " + seen + " samples saw anything");
+    }
+
+    private static ProximitySensing sensing(World world, Settings settings, long key) {
+        RobotModel model = RobotModel.of(settings);
+        Miscalibration calibration = new Miscalibration(model, new CounterNoise(key));
+        CounterNoise[] noise = new CounterNoise[IrSensor.COUNT];
+        for (int i = 0; i < noise.length; i++) {
+            noise[i] = new CounterNoise(key * 31 + i);
+        }
+        return new ProximitySensing(world, 0, new SensorPlacement(), model, calibration, noise);
+    }
+
+    /** A spot for a body of this radius: clear of walls and lamps, within the arena. */
+    private static double[] freeSpot(Arena arena, DistanceField field, SplittableRandom random, double radius) {
+        for (int tries = 0; tries < 10_000; tries++) {
+            double x = random.nextDouble(arena.width());
+            double y = random.nextDouble(arena.height());
+            if (field.preciseClearance(x, y) >= radius) {
+                return new double[] {x, y};
+            }
+        }
+        throw new IllegalStateException("no free spot in " + arena.name());
+    }
+
+    /**
+     * A robot centre where a robot can be: its body overlaps no wall, lamp, cap or other robot
+     * (where contact handling keeps it). With {@code close}, also within 40 mm of one of them.
+     *
+     * @return the centre, or null when none was found
+     */
+    private static double[] placeable(Arena arena, World world, Engine engine, SplittableRandom random, boolean close) {
+        for (int tries = 0; tries < 200; tries++) {
+            double[] at = freeSpot(arena, world.field(), random, Khepera.BODY_RADIUS_MM);
+            double wall = world.field().preciseClearance(at[0], at[1]);
+            double cap = world.capSet().count() == 0 ? Double.POSITIVE_INFINITY
+                    : world.capSet().nearestSurface(at[0], at[1]);
+            double robot = Double.POSITIVE_INFINITY;
+            for (SimRobot r : engine.robots().subList(1, engine.robots().size())) {
+                robot = StrictMath.min(robot, StrictMath.hypot(r.x() - at[0], r.y() - at[1]) - Khepera.BODY_RADIUS_MM);
+            }
+            if (cap < Khepera.BODY_RADIUS_MM || robot < Khepera.BODY_RADIUS_MM) {
+                continue;
+            }
+            if (!close || StrictMath.min(wall, StrictMath.min(cap, robot)) < Khepera.BODY_RADIUS_MM + 40) {
+                return at;
+            }
+        }
+        return null;
+    }
+}
