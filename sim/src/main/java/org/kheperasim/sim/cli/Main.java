@@ -42,18 +42,37 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
      * @return a command line ready to execute them
      */
     static CommandLine commandLineFor(String[] args) {
-        if (args.length > 0) {
-            for (Object sub : SUBCOMMANDS) {
-                Class<?> type = (Class<?>) sub;
-                Command c = type.getAnnotation(Command.class);
-                if (c != null && c.name().equals(args[0]) && type != CommandLine.HelpCommand.class) {
-                    CommandLine top = new CommandLine(new Lean());
-                    top.addSubcommand(c.name(), type);
-                    return ToolErrors.install(top, "khepera-sim");
-                }
-            }
+        Class<?> type = args.length > 0 ? subcommand(args[0]) : null;
+        if (type == null) {
+            return commandLine();
         }
-        return commandLine();
+        CommandLine top = new CommandLine(new Lean());
+        top.addSubcommand(args[0], type);
+        return ToolErrors.install(top, "khepera-sim");
+    }
+
+    /**
+     * The subcommand class of this name, found by the classes' naming ({@code gui-bench} is
+     * {@code GuiBenchCommand}) so that only it is loaded: reading {@link Main}'s own annotation
+     * would load all of them, a few hundredths of a second at every start.
+     *
+     * @return the class, or null when no subcommand has this name
+     */
+    static Class<?> subcommand(String name) {
+        if (!name.matches("[a-z]+(-[a-z]+)*")) {
+            return null;
+        }
+        StringBuilder cls = new StringBuilder(Main.class.getPackageName()).append('.');
+        for (String part : name.split("-")) {
+            cls.append(Character.toUpperCase(part.charAt(0))).append(part, 1, part.length());
+        }
+        try {
+            Class<?> type = Class.forName(cls.append("Command").toString(), false, Main.class.getClassLoader());
+            Command c = type.getAnnotation(Command.class);
+            return c != null && c.name().equals(name) ? type : null;
+        } catch (ClassNotFoundException e) {
+            return null;
+        }
     }
 
     /** The top-level command when only one subcommand is built. */
@@ -64,8 +83,6 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
             return GuiCommand.open(org.kheperasim.sim.gui.GuiOptions.defaults());
         }
     }
-
-    private static final Object[] SUBCOMMANDS = Main.class.getAnnotation(Command.class).subcommands();
 
     /**
      * Runs the command line. The process exit status is the only way a script learns whether the

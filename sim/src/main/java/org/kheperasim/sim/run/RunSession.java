@@ -97,13 +97,25 @@ public final class RunSession implements AutoCloseable {
         this.setups = List.copyOf(setups);
         this.seed = seed;
         this.settings = setups.get(0).settings();
-        this.engine = new Engine(new World(arena), seed);
+        // The controllers' classes are read and rewritten on another core while the world (its
+        // grid's distance field above all) is built: both take a few hundredths of a second at a
+        // cold start. Loading runs no code of theirs (their classes are not initialised).
+        java.util.concurrent.CompletableFuture<List<Class<?>>> loading =
+                java.util.concurrent.CompletableFuture.supplyAsync(() -> load(catalog, this.setups), RunSession::onItsOwnThread);
+        World world;
+        List<Class<?>> types;
+        try {
+            world = new World(arena);
+        } finally {
+            types = loaded(loading);
+        }
+        this.engine = new Engine(world, seed);
         this.windowsMark = windows.mark();
         String cls = null;
         for (int i = 0; i < arena.robots().size(); i++) {
             Pose start = arena.robots().get(i);
             RobotSetup setup = setups.get(i);
-            Class<?> type = catalog.load(setup.controller());
+            Class<?> type = types.get(i);
             cls = cls == null ? type.getName() : cls;
             String name = arena.robots().size() == 1 ? type.getSimpleName() : type.getSimpleName() + "#" + i;
             SimRobot robot = engine.addRobot(name, start, setup.settings());
@@ -123,6 +135,36 @@ public final class RunSession implements AutoCloseable {
         }
         this.controllerClass = cls;
         this.lockstep = new Lockstep(engine, threadHosts, stepHosts, hostOptions.hangTimeoutNanos());
+    }
+
+    /** A thread of its own, not a shared pool's, which a controller's parallel streams may keep busy. */
+    private static void onItsOwnThread(Runnable work) {
+        Thread t = new Thread(work, "khepera-sim loading controllers");
+        t.setDaemon(true);
+        t.start();
+    }
+
+    private static List<Class<?>> load(ControllerCatalog catalog, List<RobotSetup> setups) {
+        List<Class<?>> types = new ArrayList<>(setups.size());
+        for (RobotSetup setup : setups) {
+            types.add(catalog.load(setup.controller()));
+        }
+        return types;
+    }
+
+    /** The loaded classes, or what loading threw, as it threw it. */
+    private static List<Class<?>> loaded(java.util.concurrent.CompletableFuture<List<Class<?>>> loading) {
+        try {
+            return loading.join();
+        } catch (java.util.concurrent.CompletionException e) {
+            if (e.getCause() instanceof RuntimeException r) {
+                throw r;
+            }
+            if (e.getCause() instanceof Error err) {
+                throw err;
+            }
+            throw e;
+        }
     }
 
     /**
