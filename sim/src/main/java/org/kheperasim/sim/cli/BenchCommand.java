@@ -80,8 +80,20 @@ final class BenchCommand implements Callable<Integer> {
         sorted.sort(null);
         System.out.printf(Locale.ROOT, "median: %,.0f simulated seconds per wall second (min %,.0f, max %,.0f)%n",
                 sorted.get(sorted.size() / 2), sorted.get(0), sorted.get(sorted.size() - 1));
+        System.out.println(load());
         Swarm.printSetUpAndMemory(() -> run(seed + runs, 0.001));
         return 0;
+    }
+
+    /**
+     * The machine's load as the operating system reports it (the runs themselves count in it): a
+     * figure is only comparable with one taken under a similar load.
+     */
+    private static String load() {
+        double load = java.lang.management.ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage();
+        return load < 0 ? "machine load: not reported by this system"
+                : String.format(Locale.ROOT, "machine load: %.2f (1-minute average, these runs included) on %d cores",
+                        load, Runtime.getRuntime().availableProcessors());
     }
 
     private RunResult run(long runSeed) {
