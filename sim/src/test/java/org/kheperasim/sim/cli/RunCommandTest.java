@@ -87,5 +87,7 @@ class RunCommandTest {
         assertEquals(0, main("bench", "--seconds", "20", "--runs", "1"));
         assertTrue(out.contains("median: "), out);
         assertTrue(out.contains("simulated seconds per wall second"), out);
+        // Figures are only comparable under a similar load: the load is printed with them.
+        assertTrue(out.contains("machine load: "), out);
     }
 }
