@@ -34,6 +34,8 @@ public final class StepHost implements HostedController, PortClock {
     private volatile boolean stepping;
     private volatile long stepStartedAt;
     private volatile boolean hung;
+    /** Whether the watchdog looks at this host: from its first step to its end (it looks only while {@link #stepping}). */
+    private boolean watched;
     /** The rule the step broke, or null. */
     private String broke;
 
@@ -92,7 +94,10 @@ public final class StepHost implements HostedController, PortClock {
         SimClock.bind(clock);
         stepStartedAt = System.nanoTime();
         stepping = true;
-        StepWatchdog.watch(this);
+        if (!watched) {
+            watched = true;
+            StepWatchdog.watch(this);
+        }
         try {
             if (status == ControllerStatus.NOT_STARTED) {
                 status = ControllerStatus.RUNNING;
@@ -114,7 +119,9 @@ public final class StepHost implements HostedController, PortClock {
             end(ControllerStatus.FAILED);
         } finally {
             stepping = false;
-            StepWatchdog.unwatch(this);
+            if (status.ended()) {
+                StepWatchdog.unwatch(this);
+            }
             if (outer == null) {
                 SimClock.unbind();
             } else {
@@ -164,6 +171,7 @@ public final class StepHost implements HostedController, PortClock {
 
     /** The run is over: the controller stops where it is (as a thread-style one does at its next call; no cleanup runs). */
     void stop() {
+        StepWatchdog.unwatch(this);
         if (status != ControllerStatus.RUNNING) {
             if (status == ControllerStatus.NOT_STARTED) {
                 status = ControllerStatus.STOPPED;

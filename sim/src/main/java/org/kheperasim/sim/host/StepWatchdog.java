@@ -1,15 +1,20 @@
 package org.kheperasim.sim.host;
 
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
 import java.util.Set;
-import java.util.concurrent.ConcurrentHashMap;
+import java.util.WeakHashMap;
 
 /**
  * Watches the steps that run inline: a step controller's {@code step()} runs on the thread that
  * holds the turn (often the run's owner, which cannot watch itself), so one daemon thread for the
- * whole JVM looks at the running steps every 100 ms of real time and has an overdue one stopped.
+ * whole JVM looks at the step hosts every 100 ms of real time and has an overdue step stopped. A host
+ * is watched from its first step to its end, not registered at every step (a swarm makes thousands
+ * of steps a second); one that is dropped without being stopped is forgotten with it.
  */
 final class StepWatchdog {
-    private static final Set<StepHost> RUNNING = ConcurrentHashMap.newKeySet();
+    private static final Set<StepHost> RUNNING = Collections.synchronizedSet(Collections.newSetFromMap(new WeakHashMap<>()));
     private static final long PERIOD_MILLIS = 100;
     private static Thread watcher;
 
@@ -39,7 +44,11 @@ final class StepWatchdog {
                     return;
                 }
                 long now = System.nanoTime();
-                for (StepHost h : RUNNING) {
+                List<StepHost> hosts;
+                synchronized (RUNNING) {
+                    hosts = new ArrayList<>(RUNNING);
+                }
+                for (StepHost h : hosts) {
                     h.overdue(now);
                 }
             }
