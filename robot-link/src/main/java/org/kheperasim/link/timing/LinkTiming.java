@@ -161,7 +161,7 @@ public record LinkTiming(int baud, int bitsPerChar, long turnaroundNanos) {
      * @return delay from issuing the command to the wheels changing, ns
      */
     public long speedCommandDelayNanos(int left, int right) {
-        int chars = 2 + Integer.toString(left).length() + 1 + Integer.toString(right).length() + 1;
+        int chars = 2 + decimalLength(left) + 1 + decimalLength(right) + 1;
         return wireNanos(chars) + turnaroundNanos;
     }
 

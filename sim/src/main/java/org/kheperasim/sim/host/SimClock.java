@@ -74,9 +74,13 @@ public final class SimClock {
         CURRENT.set(clock);
     }
 
-    /** Remove the calling thread's clock. */
+    /**
+     * Unbind the calling thread's clock. The thread keeps an empty entry rather than none: a step
+     * controller binds and unbinds at every step, and looking up a thread-local that has no entry
+     * makes one each time (at a cost a swarm notices).
+     */
     public static void unbind() {
-        CURRENT.remove();
+        CURRENT.set(null);
     }
 
     /** A host that wants a controller stopped announces it, so checkpoints start looking. */
