@@ -15,7 +15,8 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.host.ConsoleLine;
-import org.kheperasim.sim.host.ControllerHost;
+
+import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.host.ControllerStatus;
 import org.kheperasim.sim.run.EditLog;
 import org.kheperasim.sim.run.RunResult;
@@ -96,7 +97,7 @@ final class RunCommand implements Callable<Integer> {
                 .seconds(controllerOptions.seconds(resolved.assignment().secondsOr(DEFAULT_SECONDS)))
                 .settings(settings)
                 .sampleMillis(sampleMillis)
-                .hostOptions(ControllerHost.Options.defaults().withHangTimeout((long) (hangTimeout * 1e9)))
+                .hostOptions(HostOptions.defaults().withHangTimeout((long) (hangTimeout * 1e9)))
                 .console(line -> {
                     if (line.kind() != ConsoleLine.Kind.MESSAGE) {
                         System.err.println(line.format());

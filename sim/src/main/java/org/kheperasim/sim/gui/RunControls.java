@@ -11,7 +11,8 @@ import org.kheperasim.sim.edit.EditorModel;
 import org.kheperasim.sim.engine.Engine;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.Snapshot;
-import org.kheperasim.sim.host.ControllerHost;
+
+import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.replay.RobotSeries;
 import org.kheperasim.sim.replay.SeriesRecorder;
 import org.kheperasim.sim.run.ControllerCatalog;
@@ -197,7 +198,7 @@ final class RunControls implements SnapshotSource {
         try {
             session = new RunSession(model.arena(), robotControllers.setups(model.arena().robots().size(), name,
                     choices.settings), new ControllerCatalog(choices.classpath, choices.trusted), runSeed, console,
-                    ControllerHost.Options.defaults());
+                    HostOptions.defaults());
         } catch (RuntimeException e) {
             console.error("cannot start " + name + ": " + e.getMessage());
             status.show("Cannot start: " + e.getMessage(), true);

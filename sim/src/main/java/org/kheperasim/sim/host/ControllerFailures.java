@@ -85,4 +85,20 @@ final class ControllerFailures {
         return kept.toString().stripTrailing();
     }
 
+
+    /**
+     * @param who the controller, named with its class
+     * @param nowNanos its simulated time, ns
+     * @param thread where it hung: empty for its own thread, else which thread it started
+     * @param realSeconds the real time it ran without an API call
+     * @return the message for a controller the watchdog found hung
+     */
+    static String hung(String who, long nowNanos, String thread, double realSeconds) {
+        return String.format(java.util.Locale.ROOT,
+                "controller %s stopped making API calls at simulated time %.3f s%s: it ran for %.1f s of"
+                        + " real time without reading a sensor, setting a motor or sleeping. A loop that waits for"
+                        + " something must read a sensor or call Thread.sleep inside it. The controller was"
+                        + " stopped and the robot's motors set to 0.",
+                who, nowNanos / 1e9, thread, realSeconds);
+    }
 }

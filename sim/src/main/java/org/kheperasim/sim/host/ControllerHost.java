@@ -1,8 +1,6 @@
 package org.kheperasim.sim.host;
 
 import java.util.List;
-import java.util.Locale;
-import java.util.concurrent.TimeUnit;
 import org.kheperasim.api.CurrentRobotState;
 import org.kheperasim.api.MessagePasser;
 import org.kheperasim.api.spi.Controllers;
@@ -20,24 +18,6 @@ import org.kheperasim.sim.engine.SimRobot;
  * name with the simulated time, and stopped; the engine never hangs on it.
  */
 public final class ControllerHost implements HostedController {
-
-    /** Tuning of a host that is not part of the simulation's result. */
-    public record Options(long hangTimeoutNanos, int jitterMaxMicros) {
-        /** Defaults: a controller is hung after 5 s of real time without an API call; no jitter. */
-        public static Options defaults() {
-            return new Options(TimeUnit.SECONDS.toNanos(5), 0);
-        }
-
-        /** @param micros largest random real-time delay injected at hand-offs (tests of determinism) */
-        public Options withJitter(int micros) {
-            return new Options(hangTimeoutNanos, micros);
-        }
-
-        /** @param nanos real time without an API call after which a controller is hung */
-        public Options withHangTimeout(long nanos) {
-            return new Options(nanos, jitterMaxMicros);
-        }
-    }
 
     private static final long STOP_GRACE_MILLIS = 2_000;
 
@@ -70,7 +50,7 @@ public final class ControllerHost implements HostedController {
      * @param console where its messages and errors go
      * @param options hang timeout and test jitter
      */
-    public ControllerHost(SimRobot robot, Class<?> type, ConsoleSink console, Options options) {
+    public ControllerHost(SimRobot robot, Class<?> type, ConsoleSink console, HostOptions options) {
         this.robot = robot;
         this.type = type;
         this.name = type.getSimpleName();
@@ -354,12 +334,8 @@ public final class ControllerHost implements HostedController {
     /** The watchdog saw no progress for the hang timeout while this controller held the turn. */
     void hung(Participant who, double realSeconds) {
         String thread = who.index == 0 ? "" : " (in thread " + who + " that it started)";
-        say(ConsoleLine.Kind.ERROR, String.format(Locale.ROOT,
-                "controller %s (%s) stopped making API calls at simulated time %.3f s%s: it ran for %.1f s of"
-                        + " real time without reading a sensor, setting a motor or sleeping. A loop that waits for"
-                        + " something must read a sensor or call Thread.sleep inside it. The controller was"
-                        + " stopped and the robot's motors set to 0.",
-                name, type.getName(), clock.now() / 1e9, thread, realSeconds));
+        say(ConsoleLine.Kind.ERROR, ControllerFailures.hung(name + " (" + type.getName() + ")", clock.now(), thread,
+                realSeconds));
         announceStop();
         if (who.index == 0) {
             detached = true;

@@ -45,7 +45,7 @@ public final class StepHost implements HostedController, PortClock {
      * @param console where its messages and errors go
      * @param options the hang timeout
      */
-    public StepHost(SimRobot robot, Class<?> type, ConsoleSink console, ControllerHost.Options options) {
+    public StepHost(SimRobot robot, Class<?> type, ConsoleSink console, HostOptions options) {
         this.robot = robot;
         this.type = type;
         this.name = type.getSimpleName();

@@ -19,6 +19,7 @@ import org.kheperasim.sim.engine.World;
 import org.kheperasim.sim.host.ConsoleSink;
 import org.kheperasim.api.spi.Controllers;
 import org.kheperasim.sim.host.ControllerHost;
+import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.host.HostedController;
 import org.kheperasim.sim.host.StepHost;
 import org.kheperasim.sim.host.ControllerWindows;
@@ -70,7 +71,7 @@ public final class RunSession implements AutoCloseable {
      * @param hostOptions hang timeout and test jitter
      */
     public RunSession(Arena arena, String controllerName, ControllerCatalog catalog, long seed, Settings settings,
-            ConsoleSink console, ControllerHost.Options hostOptions) {
+            ConsoleSink console, HostOptions hostOptions) {
         this(arena, java.util.Collections.nCopies(Objects.requireNonNull(arena, "no arena given").robots().size(),
                 new RobotSetup(Objects.requireNonNull(controllerName, "no controller given"), settings)),
                 catalog, seed, console, hostOptions);
@@ -87,7 +88,7 @@ public final class RunSession implements AutoCloseable {
      * @param hostOptions hang timeout and test jitter
      */
     public RunSession(Arena arena, List<RobotSetup> setups, ControllerCatalog catalog, long seed, ConsoleSink console,
-            ControllerHost.Options hostOptions) {
+            HostOptions hostOptions) {
         Lockstep.prepare();
         this.arena = Objects.requireNonNull(arena, "no arena given");
         if (setups.size() != arena.robots().size()) {

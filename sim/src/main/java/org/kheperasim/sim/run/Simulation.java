@@ -15,7 +15,8 @@ import org.kheperasim.sim.engine.Engine;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SnapshotListener;
 import org.kheperasim.sim.host.ConsoleSink;
-import org.kheperasim.sim.host.ControllerHost;
+
+import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.trace.LineFileWriter;
 
 /**
@@ -56,7 +57,7 @@ public final class Simulation {
         private Writer traceWriter;
         private long sampleMillis = 50;
         private ConsoleSink console = line -> { };
-        private ControllerHost.Options hostOptions = ControllerHost.Options.defaults();
+        private HostOptions hostOptions = HostOptions.defaults();
         private final List<Subscription> listeners = new ArrayList<>();
         private boolean trusted;
         private EditLog edits = new EditLog();
@@ -174,7 +175,7 @@ public final class Simulation {
         }
 
         /** @param options hang timeout and test jitter @return this */
-        public Builder hostOptions(ControllerHost.Options options) {
+        public Builder hostOptions(HostOptions options) {
             this.hostOptions = options;
             return this;
         }

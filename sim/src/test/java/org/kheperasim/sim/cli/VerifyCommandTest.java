@@ -15,7 +15,8 @@ import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.link.tool.ExitCodes;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
-import org.kheperasim.sim.host.ControllerHost;
+
+import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.run.ControllerCatalog;
 import org.kheperasim.sim.run.RunRecording;
 import org.kheperasim.sim.run.RunSession;
@@ -65,7 +66,7 @@ class VerifyCommandTest {
     private Path record(Settings settings) throws Exception {
         Path rec = Files.createDirectories(dir.resolve("recording"));
         RunSession s = new RunSession(ArenaFormat.loadBundled("lab"), "Braitenberg", new ControllerCatalog(List.of()), 8,
-                settings, line -> { }, ControllerHost.Options.defaults());
+                settings, line -> { }, HostOptions.defaults());
         s.trace(LineFileWriter.open(rec.resolve("run.trace")), 100);
         s.runTo(20_000_000_000L);
         s.close();

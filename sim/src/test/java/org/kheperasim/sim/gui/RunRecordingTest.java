@@ -18,7 +18,8 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.cli.Main;
 import org.kheperasim.sim.engine.Settings;
-import org.kheperasim.sim.host.ControllerHost;
+
+import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.run.ControllerCatalog;
 import org.kheperasim.sim.run.PacedRunner;
 import org.kheperasim.sim.run.RunSession;
@@ -36,7 +37,7 @@ class RunRecordingTest {
         Settings settings = Settings.defaults().with("motor.left.calibration", "0.9").with("prox.2.dead", "true");
         StringWriter trace = new StringWriter();
         RunSession session = new RunSession(lab, "Braitenberg", new ControllerCatalog(List.of()), 11, settings, l -> { },
-                ControllerHost.Options.defaults());
+                HostOptions.defaults());
         session.trace(trace, 50);
         PacedRunner runner = new PacedRunner(session, null);
         runner.setSpeed(PacedRunner.MAX_SPEED);

@@ -24,7 +24,7 @@ import org.kheperasim.sim.run.Simulation;
 class ControllerThreadsTest {
     private final List<ConsoleLine> console = new CopyOnWriteArrayList<>();
 
-    private RunResult run(String controller, double seconds, ControllerHost.Options options, StringWriter trace) {
+    private RunResult run(String controller, double seconds, HostOptions options, StringWriter trace) {
         Simulation.Builder b = Simulation.builder().arena("lab").controller("org.kheperasim.testcontrollers." + controller)
                 .seed(5).seconds(seconds).console(console::add).hostOptions(options);
         if (trace != null) {
@@ -50,7 +50,7 @@ class ControllerThreadsTest {
 
     @Test
     void aSensorManagerThreadAndTheControllerTakeTurnsInSimulatedTime() {
-        RunResult r = run("SensorManager", 5, ControllerHost.Options.defaults(), null);
+        RunResult r = run("SensorManager", 5, HostOptions.defaults(), null);
         String order = line("order ");
         // The reader, started by the constructor, first runs when the controller's thread first
         // gives up the turn (its first 20 ms sleep): both at the start, the controller first.
@@ -84,7 +84,7 @@ class ControllerThreadsTest {
 
     @Test
     void waitNotifyJoinAndInterruptWorkOnTheSimulatedClock() {
-        RunResult r = run("WaitNotify", 5, ControllerHost.Options.defaults(), null);
+        RunResult r = run("WaitNotify", 5, HostOptions.defaults(), null);
         assertEquals("alive true true", line("alive"), "started threads are alive before they first run");
         // Its code sees its own Thread object and interrupt flag, whichever thread runs the code.
         assertEquals("self true true", line("self "));
@@ -102,7 +102,7 @@ class ControllerThreadsTest {
     /** The helper that was to notify the waiting controller ends without it: a deadlock, named at once. */
     @Test
     void aWaitThatTheEndedHelperWasToNotifyIsADeadlock() {
-        RunResult r = run("AbandonedWaiter", 3, ControllerHost.Options.defaults(), null);
+        RunResult r = run("AbandonedWaiter", 3, HostOptions.defaults(), null);
         assertTrue(line("controller AbandonedWaiter").contains("is deadlocked: the controller's own thread waits in wait()"),
                 messages());
         assertEquals(ControllerStatus.HUNG, r.first().status(), messages());
@@ -115,7 +115,7 @@ class ControllerThreadsTest {
      */
     @Test
     void aControllerThatReturnsWhileItsHelperHoldsItsLockHasFinished() {
-        RunResult r = run("LockedAtReturn", 3, ControllerHost.Options.defaults(), null);
+        RunResult r = run("LockedAtReturn", 3, HostOptions.defaults(), null);
         assertEquals("returns", line("returns"), messages());
         assertEquals(ControllerStatus.FINISHED, r.first().status(), messages());
         assertFalse(messages().contains("stopped making API calls"), messages());
@@ -124,7 +124,7 @@ class ControllerThreadsTest {
     /** getState() tells what a platform thread would be doing, from the lockstep's own record. */
     @Test
     void getStateSaysWhatEachThreadIsDoing() {
-        RunResult r = run("ThreadStates", 2, ControllerHost.Options.defaults(), null);
+        RunResult r = run("ThreadStates", 2, HostOptions.defaults(), null);
         assertEquals("states busy RUNNABLE sleeper TIMED_WAITING joiner WAITING", line("states busy"), messages());
         assertEquals("states waiter WAITING timed TIMED_WAITING notified BLOCKED", line("states waiter"), messages());
         assertEquals("states after TERMINATED TERMINATED TERMINATED", line("states after"), messages());
@@ -134,7 +134,7 @@ class ControllerThreadsTest {
     /** A constructor that reads the clock, its thread or takes a lock works, and sees the run's start. */
     @Test
     void aConstructorMayLookAtTheClockItsThreadAndALock() {
-        RunResult r = run("LooksAround", 1, ControllerHost.Options.defaults(), null);
+        RunResult r = run("LooksAround", 1, HostOptions.defaults(), null);
         assertEquals("seed " + ControllerClock.EPOCH_MILLIS + " constructed on a thread true runs as itself true",
                 line("seed "), messages());
         assertEquals(ControllerStatus.FINISHED, r.first().status(), messages());
@@ -142,7 +142,7 @@ class ControllerThreadsTest {
 
     @Test
     void threadsThatWaitForEachOtherAreADeadlockNamedAndTheRobotStopped() {
-        RunResult r = run("Deadlock", 3, ControllerHost.Options.defaults(), null);
+        RunResult r = run("Deadlock", 3, HostOptions.defaults(), null);
         assertEquals(ControllerStatus.HUNG, r.first().status(), messages());
         String text = messages();
         assertTrue(text.contains("is deadlocked: the controller's own thread waits for a lock on a java.lang.Object"
@@ -155,7 +155,7 @@ class ControllerThreadsTest {
     @Test
     void aThreadStartedByTheControllerEndsWithItAndLeavesNoThreadBehind() throws InterruptedException {
         int before = ManagementFactory.getThreadMXBean().getThreadCount();
-        RunResult r = run("OutlivesMain", 5, ControllerHost.Options.defaults(), null);
+        RunResult r = run("OutlivesMain", 5, HostOptions.defaults(), null);
         assertEquals(ControllerStatus.FINISHED, r.first().status(), messages());
         assertFalse(messages().contains("left behind"), messages());
         // 1 s at 2 units (16 mm/s): the thread's driving ended with the controller.
@@ -171,7 +171,7 @@ class ControllerThreadsTest {
 
     @Test
     void manyThreadsGiveTheSameTraceTwiceWithRandomDelaysAtEveryHandOver() {
-        ControllerHost.Options jitter = ControllerHost.Options.defaults().withJitter(300);
+        HostOptions jitter = HostOptions.defaults().withJitter(300);
         for (String c : List.of("SensorManager", "WaitNotify", "Deadlock")) {
             StringWriter first = new StringWriter();
             StringWriter second = new StringWriter();

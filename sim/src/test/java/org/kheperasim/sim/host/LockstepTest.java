@@ -17,13 +17,13 @@ import org.kheperasim.sim.run.Simulation;
 class LockstepTest {
     private final List<ConsoleLine> console = new CopyOnWriteArrayList<>();
 
-    private RunResult run(String controller, double seconds, ControllerHost.Options options) {
+    private RunResult run(String controller, double seconds, HostOptions options) {
         return Simulation.builder().arena("lab").controller("org.kheperasim.testcontrollers." + controller)
                 .seed(5).seconds(seconds).console(console::add).hostOptions(options).run();
     }
 
     private RunResult run(String controller, double seconds) {
-        return run(controller, seconds, ControllerHost.Options.defaults());
+        return run(controller, seconds, HostOptions.defaults());
     }
 
     private String messages() {
@@ -80,7 +80,7 @@ class LockstepTest {
     @Test
     @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void aControllerThatStopsCallingTheApiIsReportedAndStopped() {
-        ControllerHost.Options options = ControllerHost.Options.defaults().withHangTimeout(TimeUnit.MILLISECONDS.toNanos(500));
+        HostOptions options = HostOptions.defaults().withHangTimeout(TimeUnit.MILLISECONDS.toNanos(500));
         RunResult r = run("Spinner", 20, options);
         assertEquals(ControllerStatus.HUNG, r.first().status());
         String text = messages();

@@ -7,7 +7,8 @@ import java.io.StringWriter;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import org.kheperasim.sim.host.ControllerHost;
+
+import org.kheperasim.sim.host.HostOptions;
 
 /**
  * CapGatherer moves, grabs and drops caps deterministically. That it delivers every cap on 20 seeds
@@ -17,14 +18,14 @@ class CapGathererTest {
     @Test
     @Timeout(value = 120, unit = TimeUnit.SECONDS, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void pushingGrabbingAndDroppingCapsIsDeterministicUnderJitter() {
-        String calm = trace(ControllerHost.Options.defaults());
-        String jittery = trace(ControllerHost.Options.defaults().withJitter(300));
+        String calm = trace(HostOptions.defaults());
+        String jittery = trace(HostOptions.defaults().withJitter(300));
         assertTrue(calm.contains(" cap 0 ") && calm.lines().anyMatch(l -> l.contains(" cap ") && l.endsWith(" 0")),
                 "the run moves and holds caps");
         assertEquals(calm, jittery, "real-time jitter at the controller hand-offs changes nothing");
     }
 
-    private static String trace(ControllerHost.Options options) {
+    private static String trace(HostOptions options) {
         StringWriter out = new StringWriter();
         Simulation.builder().arena("two-rooms").controller("CapGatherer").seed(3).seconds(120)
                 .hostOptions(options).trace(out).sampleMillis(10).run();

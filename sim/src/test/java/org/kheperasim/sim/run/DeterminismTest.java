@@ -8,7 +8,8 @@ import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.sim.engine.Settings;
-import org.kheperasim.sim.host.ControllerHost;
+
+import org.kheperasim.sim.host.HostOptions;
 
 /**
  * Same arena, controller, seed and settings give a byte-identical trace, whatever the threads do;
@@ -18,7 +19,7 @@ import org.kheperasim.sim.host.ControllerHost;
 class DeterminismTest {
     private static final double SECONDS = 120;
 
-    private static String trace(String controller, long seed, Settings settings, ControllerHost.Options options) {
+    private static String trace(String controller, long seed, Settings settings, HostOptions options) {
         StringWriter out = new StringWriter();
         Simulation.builder().arena("maze").controller(controller).seed(seed).seconds(SECONDS).settings(settings)
                 .hostOptions(options).trace(out).sampleMillis(10).run();
@@ -26,7 +27,7 @@ class DeterminismTest {
     }
 
     private static String trace(String controller, long seed) {
-        return trace(controller, seed, Settings.defaults(), ControllerHost.Options.defaults());
+        return trace(controller, seed, Settings.defaults(), HostOptions.defaults());
     }
 
     private static String body(String trace) {
@@ -44,10 +45,10 @@ class DeterminismTest {
     @Test
     void randomDelaysInTheControllerThreadChangeNothing() {
         String calm = trace("WallFollower", 12);
-        String jittery = trace("WallFollower", 12, Settings.defaults(), ControllerHost.Options.defaults().withJitter(300));
+        String jittery = trace("WallFollower", 12, Settings.defaults(), HostOptions.defaults().withJitter(300));
         assertEquals(calm, jittery);
         String braitenberg = trace("Braitenberg", 12);
-        assertEquals(braitenberg, trace("Braitenberg", 12, Settings.defaults(), ControllerHost.Options.defaults().withJitter(300)));
+        assertEquals(braitenberg, trace("Braitenberg", 12, Settings.defaults(), HostOptions.defaults().withJitter(300)));
     }
 
     @Test
@@ -58,8 +59,8 @@ class DeterminismTest {
     @Test
     void withoutNoiseTheSeedDoesNotMatter() {
         Settings quiet = Settings.defaults().withNoise(0);
-        String a = trace("WallFollower", 15, quiet, ControllerHost.Options.defaults());
-        String b = trace("WallFollower", 16, quiet, ControllerHost.Options.defaults());
+        String a = trace("WallFollower", 15, quiet, HostOptions.defaults());
+        String b = trace("WallFollower", 16, quiet, HostOptions.defaults());
         assertNotEquals(a, b, "the headers name different seeds");
         assertEquals(body(a), body(b));
     }

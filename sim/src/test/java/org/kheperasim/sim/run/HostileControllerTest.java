@@ -1,5 +1,6 @@
 package org.kheperasim.sim.run;
 
+import org.kheperasim.sim.host.HostOptions;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -192,7 +193,7 @@ class HostileControllerTest {
                         synchronized (console) {
                             console.add(line.text());
                         }
-                    }, org.kheperasim.sim.host.ControllerHost.Options.defaults());
+                    }, org.kheperasim.sim.host.HostOptions.defaults());
             PacedRunner runner = new PacedRunner(s, null);
             runner.setSpeed(PacedRunner.MAX_SPEED);
             runner.pauseAt(3_000_000_000L);
@@ -213,7 +214,7 @@ class HostileControllerTest {
         for (String refused : List.of("Writer", "Deleter", "Networker", "Reflector", "Intruder", "HandleBot")) {
             assertThrows(ControllerException.class, () -> new RunSession(org.kheperasim.sim.arena.ArenaFormat.loadBundled("lab"),
                     refused, new ControllerCatalog(List.of(classes)), 1, org.kheperasim.sim.engine.Settings.defaults(),
-                    line -> { }, org.kheperasim.sim.host.ControllerHost.Options.defaults()),
+                    line -> { }, org.kheperasim.sim.host.HostOptions.defaults()),
                     refused + " is refused when the window starts it, as headless");
         }
     }

@@ -10,7 +10,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.host.ControllerHost;
+
+import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.host.ControllerStatus;
 
 /** The engine holds a list of robots: three controllers pass the turn between them deterministically. */
@@ -29,7 +30,7 @@ class MultiRobotTest {
             robot 600 900 180
             """, "three.arena");
 
-    private static RunResult run(StringWriter trace, ControllerHost.Options options) {
+    private static RunResult run(StringWriter trace, HostOptions options) {
         return Simulation.builder().arena(THREE).controller("Braitenberg").seed(21).seconds(60).trace(trace)
                 .sampleMillis(20).hostOptions(options).run();
     }
@@ -38,8 +39,8 @@ class MultiRobotTest {
     void everyRobotRunsItsOwnControllerAndTheRunRepeatsExactly() {
         StringWriter a = new StringWriter();
         StringWriter b = new StringWriter();
-        RunResult first = run(a, ControllerHost.Options.defaults());
-        run(b, ControllerHost.Options.defaults().withJitter(200));
+        RunResult first = run(a, HostOptions.defaults());
+        run(b, HostOptions.defaults().withJitter(200));
         assertEquals(a.toString(), b.toString(), "three controllers in lockstep give the same trace every time");
         assertEquals(3, first.robots().size());
         for (RunResult.RobotResult r : first.robots()) {
@@ -112,7 +113,7 @@ class MultiRobotTest {
         RunResult first = Simulation.builder().arena(crowd(10)).controller("Braitenberg").seed(4).seconds(30).trace(a)
                 .run();
         Simulation.builder().arena(crowd(10)).controller("Braitenberg").seed(4).seconds(30).trace(b)
-                .hostOptions(ControllerHost.Options.defaults().withJitter(300)).run();
+                .hostOptions(HostOptions.defaults().withJitter(300)).run();
         assertEquals(a.toString(), b.toString(), "ten robots in lockstep give the same trace with jitter");
         assertEquals(10, first.robots().size());
         for (RunResult.RobotResult r : first.robots()) {

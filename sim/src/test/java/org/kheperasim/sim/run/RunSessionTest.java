@@ -13,7 +13,8 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Wall;
 import org.kheperasim.sim.engine.Settings;
-import org.kheperasim.sim.host.ControllerHost;
+
+import org.kheperasim.sim.host.HostOptions;
 
 /**
  * A run driven in chunks, paced against the wall clock, with arena edits in the middle, computes
@@ -44,7 +45,7 @@ class RunSessionTest {
 
     private static RunSession session(StringWriter out) {
         RunSession s = new RunSession(lab(), "Braitenberg", new ControllerCatalog(List.of()), SEED, Settings.defaults(),
-                line -> { }, ControllerHost.Options.defaults());
+                line -> { }, HostOptions.defaults());
         s.trace(out, 50);
         return s;
     }

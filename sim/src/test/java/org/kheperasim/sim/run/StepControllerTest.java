@@ -10,7 +10,8 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.sim.host.ConsoleLine;
-import org.kheperasim.sim.host.ControllerHost;
+
+import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.host.ControllerStatus;
 
 /**
@@ -21,7 +22,7 @@ import org.kheperasim.sim.host.ControllerStatus;
 class StepControllerTest {
     private final List<String> console = new CopyOnWriteArrayList<>();
 
-    private RunResult run(String controller, double seconds, ControllerHost.Options options) {
+    private RunResult run(String controller, double seconds, HostOptions options) {
         return Simulation.builder().arena("lab").controller(controller).seed(9).seconds(seconds).hostOptions(options)
                 .console((ConsoleLine l) -> console.add(l.text())).run();
     }
@@ -44,7 +45,7 @@ class StepControllerTest {
 
     @Test
     void aStepThatThrowsFailsTheControllerAtTheStudentsLine() {
-        RunResult r = run("org.kheperasim.testcontrollers.StepThrower", 10, ControllerHost.Options.defaults());
+        RunResult r = run("org.kheperasim.testcontrollers.StepThrower", 10, HostOptions.defaults());
         assertEquals(ControllerStatus.FAILED, r.first().status(), console.toString());
         // Ten steps, each one period (100 ms) after the previous step's last call (20 us each).
         assertTrue(console.contains("tenth step at 60900"), console.toString());
@@ -55,7 +56,7 @@ class StepControllerTest {
 
     @Test
     void aStepThatSleepsBreaksTheContractWithAClearMessage() {
-        RunResult r = run("org.kheperasim.testcontrollers.StepSleeper", 5, ControllerHost.Options.defaults());
+        RunResult r = run("org.kheperasim.testcontrollers.StepSleeper", 5, HostOptions.defaults());
         assertEquals(ControllerStatus.FAILED, r.first().status(), console.toString());
         assertTrue(console.stream().anyMatch(l -> l.contains("slept in step(): a step must return instead")), console.toString());
     }
@@ -63,7 +64,7 @@ class StepControllerTest {
     @Test
     void aStepThatNeverReturnsIsStoppedAndNamed() {
         RunResult r = run("org.kheperasim.testcontrollers.StepLooper", 5,
-                ControllerHost.Options.defaults().withHangTimeout(TimeUnit.SECONDS.toNanos(1)));
+                HostOptions.defaults().withHangTimeout(TimeUnit.SECONDS.toNanos(1)));
         assertEquals(ControllerStatus.HUNG, r.first().status(), console.toString());
         assertTrue(console.stream().anyMatch(l -> l.contains("step() did not return")), console.toString());
         assertTrue(r.simulatedSeconds() >= 0.4 && r.simulatedSeconds() <= 0.5, "it hung in its fifth step, at 0.4 s, and the run"
@@ -76,7 +77,7 @@ class StepControllerTest {
         for (int k = 0; k < 2; k++) {
             StringWriter t = new StringWriter();
             Simulation.Builder b = Simulation.builder().arena(MultiRobotTest.crowd(10)).controller("StepBraitenberg")
-                    .seed(4).seconds(20).trace(t).hostOptions(ControllerHost.Options.defaults().withJitter(k * 300));
+                    .seed(4).seconds(20).trace(t).hostOptions(HostOptions.defaults().withJitter(k * 300));
             b.robot(0, "Braitenberg", null).robot(5, "WallFollower", null);
             RunResult r = b.run();
             assertEquals(10, r.robots().size());

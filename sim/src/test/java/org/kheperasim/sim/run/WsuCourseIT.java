@@ -23,7 +23,8 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.sim.arena.wsu.WsuWorldWriter;
 import org.kheperasim.sim.host.ConsoleLine;
-import org.kheperasim.sim.host.ControllerHost;
+
+import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.host.ControllerStatus;
 
 /**
@@ -80,7 +81,7 @@ class WsuCourseIT {
         StringWriter trace = new StringWriter();
         List<String> console = new CopyOnWriteArrayList<>();
         RunResult r = Simulation.builder().arena(world.toString()).classpath(List.of(classes)).controller(controller)
-                .seed(3).seconds(seconds).trace(trace).hostOptions(ControllerHost.Options.defaults().withJitter(200))
+                .seed(3).seconds(seconds).trace(trace).hostOptions(HostOptions.defaults().withJitter(200))
                 .console((ConsoleLine l) -> console.add(l.text())).run();
         return new Run(r, trace.toString(), console);
     }
