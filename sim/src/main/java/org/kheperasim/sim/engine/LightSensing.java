@@ -55,12 +55,15 @@ final class LightSensing {
     private int darkChars() {
         int chars = 0;
         for (int i = 0; i < IrSensor.COUNT; i++) {
-            // The flicker factor is monotone in its uniform draw, so its extremes bound the reading.
-            int low = SensorPlacement.reading(flicker(i, 0));
-            int high = SensorPlacement.reading(flicker(i, 1 - 0x1.0p-53));
-            int n = SensorPlacement.digits(low);
-            if (flickerRate > 0 && n != SensorPlacement.digits(high)) {
-                return -1;
+            // Without a flicker the reading is the dark level itself. With one, the flicker factor is
+            // monotone in its uniform draw, so its extremes bound the reading.
+            int n = SensorPlacement.digits(SensorPlacement.reading(dark[i]));
+            if (flickerRate > 0) {
+                int low = SensorPlacement.reading(flicker(i, 0));
+                int high = SensorPlacement.reading(flicker(i, 1 - 0x1.0p-53));
+                if (n != SensorPlacement.digits(low) || n != SensorPlacement.digits(high)) {
+                    return -1;
+                }
             }
             chars += n;
         }

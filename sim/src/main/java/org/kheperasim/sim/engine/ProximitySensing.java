@@ -73,7 +73,16 @@ final class ProximitySensing {
      */
     private boolean shortcuts = true;
 
-    /** What {@link #open} found for the sample being taken: the nearest cap's surface less the sensors' reach. */
+    /**
+     * How far a cap's cells on the grid reach beyond its disc: a cell is the cap's when its centre
+     * lies in the disc, so its far corner may lie half a cell's diagonal outside (mm).
+     */
+    private static final double CAP_CELLS_MM = OccupancyGrid.CELL_MM * StrictMath.sqrt(2) / 2 + 1e-6;
+
+    /**
+     * What {@link #open} found for the sample being taken: the nearest cap's cells less the sensors'
+     * reach.
+     */
     private double capFree;
 
     ProximitySensing(World world, int self, SensorPlacement placement, RobotModel model, Miscalibration calibration,
@@ -137,7 +146,7 @@ final class ProximitySensing {
     boolean open(double robotX, double robotY) {
         // Caps are not in the distance field: bound the beams' empty stretch by the nearest cap too.
         capFree = caps.count() == 0 ? Double.POSITIVE_INFINITY
-                : caps.nearestSurface(robotX, robotY) - SensorPlacement.REACH_MM;
+                : caps.nearestSurface(robotX, robotY) - CAP_CELLS_MM - SensorPlacement.REACH_MM;
         gatherRobots(robotX, robotY);
         // Only walls and lamps within any beam's reach: the distance field alone can prove a beam empty.
         boolean wallsOnly = capFree >= range && near == 0;
@@ -318,8 +327,8 @@ final class ProximitySensing {
     }
 
     /**
-     * Distance from a sensor to the nearest cap on the floor that its beams could reach: caps
-     * wholly behind the sensor (all the beams point forward) do not count.
+     * Distance from a sensor to the nearest cells of a cap on the floor that its beams could reach:
+     * caps wholly behind the sensor (all the beams point forward) do not count.
      */
     private double capsAhead(double px, double py, double dx, double dy) {
         double best = Double.POSITIVE_INFINITY;
@@ -329,7 +338,7 @@ final class ProximitySensing {
             }
             double ex = caps.x(k) - px;
             double ey = caps.y(k) - py;
-            double r = caps.radius(k);
+            double r = caps.radius(k) + CAP_CELLS_MM;
             if (ex * dx + ey * dy < -r) {
                 continue;
             }

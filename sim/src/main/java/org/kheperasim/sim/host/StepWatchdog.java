@@ -36,7 +36,7 @@ final class StepWatchdog {
         if (watcher != null) {
             return;
         }
-        Thread t = new Thread(() -> {
+        Thread t = daemon(() -> {
             while (true) {
                 try {
                     Thread.sleep(PERIOD_MILLIS);
@@ -53,8 +53,18 @@ final class StepWatchdog {
                 }
             }
         }, "khepera-step-watchdog");
-        t.setDaemon(true);
         t.start();
         watcher = t;
+    }
+
+    /**
+     * A daemon thread that inherits no thread-local values: it is started inside a step, whose
+     * simulated clock (an inheritable thread-local, holding the step's host and through it the
+     * whole run) it would otherwise keep for the life of the JVM.
+     */
+    static Thread daemon(Runnable work, String name) {
+        Thread t = new Thread(null, work, name, 0, false);
+        t.setDaemon(true);
+        return t;
     }
 }

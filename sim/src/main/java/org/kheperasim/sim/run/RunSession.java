@@ -104,12 +104,17 @@ public final class RunSession implements AutoCloseable {
         java.util.concurrent.CompletableFuture<List<Class<?>>> loading =
                 java.util.concurrent.CompletableFuture.supplyAsync(() -> load(catalog, this.setups), RunSession::onItsOwnThread);
         World world;
-        List<Class<?>> types;
         try {
             world = new World(arena);
-        } finally {
-            types = loaded(loading);
+        } catch (RuntimeException | Error e) {
+            try {
+                loaded(loading);
+            } catch (RuntimeException | Error alsoLoading) {
+                e.addSuppressed(alsoLoading);
+            }
+            throw e;
         }
+        List<Class<?>> types = loaded(loading);
         this.engine = new Engine(world, seed);
         this.windowsMark = windows.mark();
         String cls = null;
@@ -140,7 +145,8 @@ public final class RunSession implements AutoCloseable {
 
     /** A thread of its own, not a shared pool's, which a controller's parallel streams may keep busy. */
     private static void onItsOwnThread(Runnable work) {
-        Thread t = new Thread(work, "khepera-sim loading controllers");
+        // Inheriting no thread-local values: the thread building the run may be a controller's.
+        Thread t = new Thread(null, work, "khepera-sim loading controllers", 0, false);
         t.setDaemon(true);
         t.start();
     }

@@ -15,7 +15,7 @@ import org.kheperasim.sim.engine.noise.CounterNoise;
  * In an arena without lamps a light sample's values are computed only when somebody reads them:
  * its reply's length is known before. The values filled in later are those a sample taken at once
  * gives, and the length given beforehand is theirs, for robots of many calibrations (dark levels
- * near and far from a power of ten) and with flicker made frequent.
+ * near and far from a power of ten), with flicker made frequent and with none.
  */
 class LightDeferralTest {
 
@@ -27,7 +27,9 @@ class LightDeferralTest {
         int deferred = 0;
         int atOnce = 0;
         for (long key = 1; key <= 300; key++) {
-            Settings settings = Settings.defaults().with("light.flickerRate", "0.3")
+            // Flicker made frequent, or none at all (as with noise.reading=0): a dark reading is then
+            // the dark level itself.
+            Settings settings = Settings.defaults().with("light.flickerRate", key % 2 == 0 ? "0" : "0.3")
                     .with("light.dark", darkLevels[(int) (key % darkLevels.length)]);
             RobotModel model = RobotModel.of(settings);
             Miscalibration calibration = new Miscalibration(model, new CounterNoise(key));

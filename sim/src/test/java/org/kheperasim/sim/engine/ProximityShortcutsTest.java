@@ -62,7 +62,8 @@ class ProximityShortcutsTest {
         int[] b = new int[IrSensor.COUNT];
         int seen = 0;
         for (int k = 0; k < 20_000; k++) {
-            double[] at = placeable(arena, world, engine, random, k % 2 == 1);
+            double[] at = k % 3 == 2 ? atTheEdgeOfACap(arena, world, engine, random)
+                    : placeable(arena, world, engine, random, k % 3 == 1);
             if (at == null) {
                 continue;
             }
@@ -104,6 +105,41 @@ class ProximityShortcutsTest {
             }
         }
         throw new IllegalStateException("no free spot in " + arena.name());
+    }
+
+    /**
+     * A robot centre whose sensors' reach ends just around a cap's edge: a cap's cells on the grid
+     * stick out of its disc by up to half a cell's diagonal, which the shortcuts must allow for.
+     *
+     * @return the centre, or null when none was found
+     */
+    private static double[] atTheEdgeOfACap(Arena arena, World world, Engine engine, SplittableRandom random) {
+        double range = RobotModel.of(Settings.defaults()).proximity().profile().rangeMm();
+        for (int tries = 0; tries < 200; tries++) {
+            int k = random.nextInt(world.capSet().count());
+            double angle = random.nextDouble(2 * StrictMath.PI);
+            double d = world.capSet().radius(k) + SensorPlacement.REACH_MM + range
+                    + random.nextDouble(-0.5, OccupancyGrid.CELL_MM);
+            double x = world.capSet().x(k) + d * StrictMath.cos(angle);
+            double y = world.capSet().y(k) + d * StrictMath.sin(angle);
+            if (x > 0 && y > 0 && x < arena.width() && y < arena.height() && fits(world, engine, x, y)) {
+                return new double[] {x, y};
+            }
+        }
+        return null;
+    }
+
+    private static boolean fits(World world, Engine engine, double x, double y) {
+        if (world.field().preciseClearance(x, y) < Khepera.BODY_RADIUS_MM
+                || world.capSet().nearestSurface(x, y) < Khepera.BODY_RADIUS_MM) {
+            return false;
+        }
+        for (SimRobot r : engine.robots().subList(1, engine.robots().size())) {
+            if (StrictMath.hypot(r.x() - x, r.y() - y) < 2 * Khepera.BODY_RADIUS_MM) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /**
