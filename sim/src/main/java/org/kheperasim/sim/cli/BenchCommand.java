@@ -23,7 +23,7 @@ import picocli.CommandLine.Option;
  * period) in the lab for 600 simulated seconds.
  */
 @Command(name = "bench", mixinStandardHelpOptions = true, sortOptions = false,
-        description = "Measure simulated seconds per wall second (one warm-up run, then the measured runs).")
+        description = "Measure simulated seconds per wall second (warm-up runs, then the measured runs).")
 final class BenchCommand implements Callable<Integer> {
 
     @Option(names = "--arena", defaultValue = "lab", completionCandidates = BundledArenas.class,
@@ -39,6 +39,11 @@ final class BenchCommand implements Callable<Integer> {
 
     @Option(names = "--runs", defaultValue = "5", converter = CliNumbers.PositiveInt.class, description = "measured runs (default: ${DEFAULT-VALUE})")
     int runs;
+
+    @Option(names = "--warm-up", defaultValue = "2", paramLabel = "SECONDS", converter = CliNumbers.NonNegativeDecimal.class,
+            description = "before measuring, run for at least this much wall time (one run at least), so that the JIT"
+                    + " has compiled what the runs use (default: ${DEFAULT-VALUE})")
+    double warmUp;
 
     @Option(names = "--seed", defaultValue = "1", converter = CliNumbers.AnyLong.class, description = "seed of the first run; each run adds one (default: ${DEFAULT-VALUE})")
     long seed;
@@ -68,7 +73,14 @@ final class BenchCommand implements Callable<Integer> {
                 + " %d cores, %s%n", controller, arena, scenario.caps().size(), seconds, runs,
                 Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
-        run(seed - 1);
+        long warmStart = System.nanoTime();
+        int warmRuns = 0;
+        do {
+            run(seed - 1);
+            warmRuns++;
+        } while (System.nanoTime() - warmStart < warmUp * 1e9);
+        System.out.printf(Locale.ROOT, "warm-up: %d run%s in %.1f s of wall time%n", warmRuns, warmRuns == 1 ? "" : "s",
+                (System.nanoTime() - warmStart) / 1e9);
         List<Double> factors = new ArrayList<>();
         for (int i = 0; i < runs; i++) {
             RunResult r = run(seed + i);

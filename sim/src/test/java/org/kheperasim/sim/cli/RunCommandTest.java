@@ -84,7 +84,8 @@ class RunCommandTest {
 
     @Test
     void benchPrintsSimulatedSecondsPerWallSecond() {
-        assertEquals(0, main("bench", "--seconds", "20", "--runs", "1"));
+        assertEquals(0, main("bench", "--seconds", "20", "--runs", "1", "--warm-up", "0"));
+        assertTrue(out.contains("warm-up: 1 run in "), out);
         assertTrue(out.contains("median: "), out);
         assertTrue(out.contains("simulated seconds per wall second"), out);
         // Figures are only comparable under a similar load: the load is printed with them.
