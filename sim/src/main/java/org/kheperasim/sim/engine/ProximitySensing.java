@@ -74,10 +74,12 @@ final class ProximitySensing {
     private boolean shortcuts = true;
 
     /**
-     * How far a cap's cells on the grid reach beyond its disc: a cell is the cap's when its centre
-     * lies in the disc, so its far corner may lie half a cell's diagonal outside (mm).
+     * How far a cap's cells on the grid reach beyond its disc (mm): a cell is the cap's when its
+     * centre lies in the disc, so its far corner may lie half a cell's diagonal outside; and the
+     * cell holding the cap's centre is the cap's whatever the radius, so for a very small cap a
+     * whole diagonal.
      */
-    private static final double CAP_CELLS_MM = OccupancyGrid.CELL_MM * StrictMath.sqrt(2) / 2 + 1e-6;
+    private static final double CAP_CELLS_MM = OccupancyGrid.CELL_MM * StrictMath.sqrt(2) + 1e-6;
 
     /**
      * What {@link #open} found for the sample being taken: the nearest cap's cells less the sensors'

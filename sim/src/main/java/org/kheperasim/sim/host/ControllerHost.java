@@ -58,7 +58,9 @@ public final class ControllerHost implements HostedController {
         this.clock = new ControllerClock(this, threads, robot.model().link().apiCostNanos(), options.jitterMaxMicros());
         SimulatedRobotPort port = new SimulatedRobotPort(robot, clock);
         // The clock is inheritable: binding it while the controller's Thread object is constructed
-        // gives it to the controller thread, and only to it.
+        // gives it to the controller thread, and only to it. The caller's own clock, if it has one
+        // (a run built on a controller's thread), is put back afterwards.
+        SimClock.Clock outer = SimClock.current();
         SimClock.bind(clock);
         constructing = Thread.currentThread();
         Thread created;
@@ -66,7 +68,7 @@ public final class ControllerHost implements HostedController {
             created = Controllers.instantiate(type, new CurrentRobotState(port), new MessagePasser(port));
         } finally {
             constructing = null;
-            SimClock.unbind();
+            SimClock.bind(outer);
         }
         controller = created;
         threads.main(created);

@@ -32,7 +32,9 @@ public final class LineFileWriter extends Writer {
     private static final int BUFFER_CHARS = 1 << 18;
     private static final Set<LineFileWriter> OPEN = ConcurrentHashMap.newKeySet();
     private static final ScheduledExecutorService FLUSHER = Executors.newSingleThreadScheduledExecutor(r -> {
-        Thread t = new Thread(r, "trace-flusher");
+        // Inheriting no thread-local values: it lives as long as the JVM, and the thread that opens
+        // the first trace may hold a run's (its controller's clock).
+        Thread t = new Thread(null, r, "trace-flusher", 0, false);
         t.setDaemon(true);
         return t;
     });

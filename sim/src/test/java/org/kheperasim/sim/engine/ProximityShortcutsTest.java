@@ -41,7 +41,10 @@ class ProximityShortcutsTest {
         List<Cap> caps = new ArrayList<>(bare.caps());
         for (int k = 0; k < 40; k++) {
             double[] at = freeSpot(bare, bareField, random, Cap.DEFAULT_RADIUS + 1);
-            caps.add(new Cap(at[0], at[1]));
+            // A quarter of them smaller than a cell: the cell holding a cap's centre is always
+            // the cap's, so its cells reach farther beyond its disc.
+            caps.add(k % 4 == 0 ? new Cap(at[0], at[1], random.nextDouble(0.2, OccupancyGrid.CELL_MM))
+                    : new Cap(at[0], at[1]));
         }
         Arena arena = new Arena(bare.name(), bare.width(), bare.height(), bare.robots(), bare.walls(), bare.lights(),
                 caps, bare.regions());
@@ -67,7 +70,9 @@ class ProximityShortcutsTest {
             if (at == null) {
                 continue;
             }
-            double heading = random.nextDouble(2 * StrictMath.PI);
+            // At a cap's edge, half the time the front sensors face the cap.
+            double heading = at.length > 2 && k % 2 == 0 ? at[2] + random.nextDouble(-0.3, 0.3)
+                    : random.nextDouble(2 * StrictMath.PI);
             double c = StrictMath.cos(heading);
             double s = StrictMath.sin(heading);
             quick.sample(at[0], at[1], c, s, k, a);
@@ -83,6 +88,48 @@ class ProximityShortcutsTest {
         }
         // The poses must put things in sight, or the comparison proves little.
         assertTrue(seen > 3000, name + ": only " + seen + " samples saw anything");
+    }
+
+    /**
+     * A cap smaller than a cell, its centre near a cell's corner: the cell holding its centre is
+     * the cap's, and that cell's far corner lies nearly a whole diagonal from the centre. A robot
+     * stands on that corner's side, at every distance (0.05 mm apart) where its reach ends around
+     * that corner, turned every way (1° apart).
+     */
+    @org.junit.jupiter.api.Test
+    void aCapSmallerThanACellIsSeenWhereItsCellIs() {
+        double cell = OccupancyGrid.CELL_MM;
+        double capX = 200 * cell + 0.01;
+        double capY = 200 * cell + 0.01;
+        double radius = 0.3;
+        Arena arena = new Arena("small-cap", 1219.2, 1219.2, List.of(new Pose(100, 100, 0)), List.of(), List.of(),
+                List.of(new Cap(capX, capY, radius)), List.of());
+        World world = new World(arena);
+        Settings settings = Settings.defaults();
+        ProximitySensing quick = sensing(world, settings, 3);
+        ProximitySensing slow = sensing(world, settings, 3);
+        slow.withoutShortcuts();
+        double range = RobotModel.of(settings).proximity().profile().rangeMm();
+        int[] a = new int[IrSensor.COUNT];
+        int[] b = new int[IrSensor.COUNT];
+        long k = 0;
+        // From the upper right, where the far corner of the cap's cell is.
+        double from = StrictMath.PI / 4;
+        for (int step = 0; step <= 90; step++) {
+            double extra = -0.5 + step * 0.05;
+            double d = radius + SensorPlacement.REACH_MM + range + extra;
+            double x = capX + d * StrictMath.cos(from);
+            double y = capY + d * StrictMath.sin(from);
+            for (int degrees = 0; degrees < 360; degrees++) {
+                double heading = StrictMath.toRadians(degrees);
+                quick.sample(x, y, StrictMath.cos(heading), StrictMath.sin(heading), k, a);
+                slow.sample(x, y, StrictMath.cos(heading), StrictMath.sin(heading), k, b);
+                String where = String.format(java.util.Locale.ROOT,
+                        "%.2f mm beyond the sensors' reach of the cap's disc, heading %d°", extra, degrees);
+                assertArrayEquals(b, a, where);
+                k++;
+            }
+        }
     }
 
     private static ProximitySensing sensing(World world, Settings settings, long key) {
@@ -109,9 +156,10 @@ class ProximityShortcutsTest {
 
     /**
      * A robot centre whose sensors' reach ends just around a cap's edge: a cap's cells on the grid
-     * stick out of its disc by up to half a cell's diagonal, which the shortcuts must allow for.
+     * stick out of its disc (by up to a cell's diagonal for a cap smaller than a cell), which the
+     * shortcuts must allow for.
      *
-     * @return the centre, or null when none was found
+     * @return the centre and the heading that faces the cap, or null when none was found
      */
     private static double[] atTheEdgeOfACap(Arena arena, World world, Engine engine, SplittableRandom random) {
         double range = RobotModel.of(Settings.defaults()).proximity().profile().rangeMm();
@@ -119,11 +167,11 @@ class ProximityShortcutsTest {
             int k = random.nextInt(world.capSet().count());
             double angle = random.nextDouble(2 * StrictMath.PI);
             double d = world.capSet().radius(k) + SensorPlacement.REACH_MM + range
-                    + random.nextDouble(-0.5, OccupancyGrid.CELL_MM);
+                    + random.nextDouble(-0.5, 1.5 * StrictMath.sqrt(2) * OccupancyGrid.CELL_MM);
             double x = world.capSet().x(k) + d * StrictMath.cos(angle);
             double y = world.capSet().y(k) + d * StrictMath.sin(angle);
             if (x > 0 && y > 0 && x < arena.width() && y < arena.height() && fits(world, engine, x, y)) {
-                return new double[] {x, y};
+                return new double[] {x, y, angle + StrictMath.PI};
             }
         }
         return null;

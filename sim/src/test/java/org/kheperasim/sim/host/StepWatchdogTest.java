@@ -27,6 +27,7 @@ class StepWatchdogTest {
             assertTrue(t.isDaemon());
             t.start();
             t.join(10_000);
+            assertTrue(!t.isAlive() && !"not run".equals(seen.get()), "the probe thread did not run");
         } finally {
             SimClock.unbind();
         }
