@@ -178,16 +178,16 @@ class ProximityShortcutsTest {
     }
 
     private static boolean fits(World world, Engine engine, double x, double y) {
-        if (world.field().preciseClearance(x, y) < Khepera.BODY_RADIUS_MM
-                || world.capSet().nearestSurface(x, y) < Khepera.BODY_RADIUS_MM) {
-            return false;
-        }
+        return clearance(world, engine, x, y) >= Khepera.BODY_RADIUS_MM;
+    }
+
+    /** @return how far a robot centre at (x, y) is from the nearest wall, lamp, cap or other robot, mm */
+    private static double clearance(World world, Engine engine, double x, double y) {
+        double c = StrictMath.min(world.field().preciseClearance(x, y), world.capSet().nearestSurface(x, y));
         for (SimRobot r : engine.robots().subList(1, engine.robots().size())) {
-            if (StrictMath.hypot(r.x() - x, r.y() - y) < 2 * Khepera.BODY_RADIUS_MM) {
-                return false;
-            }
+            c = StrictMath.min(c, StrictMath.hypot(r.x() - x, r.y() - y) - Khepera.BODY_RADIUS_MM);
         }
-        return true;
+        return c;
     }
 
     /**
@@ -199,17 +199,8 @@ class ProximityShortcutsTest {
     private static double[] placeable(Arena arena, World world, Engine engine, SplittableRandom random, boolean close) {
         for (int tries = 0; tries < 200; tries++) {
             double[] at = freeSpot(arena, world.field(), random, Khepera.BODY_RADIUS_MM);
-            double wall = world.field().preciseClearance(at[0], at[1]);
-            double cap = world.capSet().count() == 0 ? Double.POSITIVE_INFINITY
-                    : world.capSet().nearestSurface(at[0], at[1]);
-            double robot = Double.POSITIVE_INFINITY;
-            for (SimRobot r : engine.robots().subList(1, engine.robots().size())) {
-                robot = StrictMath.min(robot, StrictMath.hypot(r.x() - at[0], r.y() - at[1]) - Khepera.BODY_RADIUS_MM);
-            }
-            if (cap < Khepera.BODY_RADIUS_MM || robot < Khepera.BODY_RADIUS_MM) {
-                continue;
-            }
-            if (!close || StrictMath.min(wall, StrictMath.min(cap, robot)) < Khepera.BODY_RADIUS_MM + 40) {
+            double c = clearance(world, engine, at[0], at[1]);
+            if (c >= Khepera.BODY_RADIUS_MM && (!close || c < Khepera.BODY_RADIUS_MM + 40)) {
                 return at;
             }
         }
