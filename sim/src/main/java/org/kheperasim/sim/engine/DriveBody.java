@@ -44,7 +44,10 @@ final class DriveBody {
     private double wheelRight;
     private double encoderLeft;
     private double encoderRight;
+    /** The side of the present contact; null while it is still to be worked out from {@link #touchX}, {@link #touchY}. */
     private Contact contact = Contact.NONE;
+    private double touchX;
+    private double touchY;
     /** The other robots, bodies to this one as walls are; and this robot's index among them. */
     private final Bodies bodies;
     private final int self;
@@ -216,16 +219,17 @@ final class DriveBody {
         double midSin = sin * trig.halfCos + cos * trig.halfSin;
         double nx = x + stepLen * midCos;
         double ny = y + stepLen * midSin;
-        double newClearance = room.at(nx, ny);
+        double newClearance = nearWall(nx, ny);
         double fraction = 1;
         boolean nowBlocked = false;
-        double clearance = room.here(x, y);
-        if (newClearance < Khepera.BODY_RADIUS_MM && newClearance < clearance) {
+        // NaN compares false: no wall within touch.
+        if (newClearance < Khepera.BODY_RADIUS_MM && newClearance < room.here(x, y)) {
+            double clearance = room.here(x, y);
             fraction = clearance > Khepera.BODY_RADIUS_MM
                     ? (clearance - Khepera.BODY_RADIUS_MM) / (clearance - newClearance) : 0;
             nx = x + fraction * stepLen * midCos;
             ny = y + fraction * stepLen * midSin;
-            newClearance = room.at(nx, ny);
+            newClearance = nearWall(nx, ny);
             nowBlocked = true;
             if (!blocked) {
                 collisions++;
@@ -240,7 +244,7 @@ final class DriveBody {
                 nx = x + f * tx;
                 ny = y + f * ty;
                 fraction *= f;
-                newClearance = room.at(nx, ny);
+                newClearance = nearWall(nx, ny);
                 if (!nowBlocked && !blocked) {
                     collisions++;
                 }
@@ -263,7 +267,7 @@ final class DriveBody {
                 nx = x + f * tx;
                 ny = y + f * ty;
                 fraction *= f;
-                newClearance = room.at(nx, ny);
+                newClearance = nearWall(nx, ny);
                 if (!nowBlocked && !blocked) {
                     collisions++;
                 }
@@ -273,18 +277,42 @@ final class DriveBody {
         }
         blocked = nowBlocked;
         turnAndMove(nx, ny, c, s);
-        room.set(newClearance);
+        if (Double.isNaN(newClearance)) {
+            room.forget();
+        } else {
+            room.set(newClearance);
+        }
         count(common, diff, fraction);
         int other = bodies.count() > 1 ? bodies.firstTouching(self, x, y, Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) : -1;
         if (newClearance <= Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) {
-            contact = sideOf(field.nearestObstacleX(x, y), field.nearestObstacleY(x, y));
+            touching(field.nearestObstacleX(x, y), field.nearestObstacleY(x, y));
         } else if (other >= 0) {
-            contact = sideOf(bodies.x(other), bodies.y(other));
+            touching(bodies.x(other), bodies.y(other));
         } else if (caps.blocking() >= 0) {
-            contact = sideOf(caps.blockingX(), caps.blockingY());
+            touching(caps.blockingX(), caps.blockingY());
         } else {
             contact = Contact.NONE;
         }
+    }
+
+    /**
+     * The clearance of a centre at (px, py), as {@link BodyClearance#at}; or NaN where the field's
+     * lower bound proves it farther than touching (then no wall can stop or touch the body there,
+     * and the value is looked up only if needed later, at the same place).
+     */
+    private double nearWall(double px, double py) {
+        return field.clearanceBelow(px, py) > Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM ? Double.NaN : room.at(px, py);
+    }
+
+    /**
+     * The body touches something at (ox, oy): the side is worked out when asked for ({@link
+     * #contact}), from the pose it has now (it keeps it until the next move, which sets the contact
+     * anew), since most contacts are never looked at.
+     */
+    private void touching(double ox, double oy) {
+        contact = null;
+        touchX = ox;
+        touchY = oy;
     }
 
     /** Set up the arc of {@code ticks} ticks; returns the centre's path length (signed), mm. */
@@ -390,6 +418,9 @@ final class DriveBody {
     }
 
     Contact contact() {
+        if (contact == null) {
+            contact = sideOf(touchX, touchY);
+        }
         return contact;
     }
 
