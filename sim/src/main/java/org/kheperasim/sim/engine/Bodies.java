@@ -121,44 +121,30 @@ final class Bodies {
     }
 
     /**
-     * @return the distance from (px, py) to the nearest other robot's surface, if one lies within
-     *     {@code within} of it; else {@link Double#POSITIVE_INFINITY}
-     */
-    double surface(int self, double px, double py, double within) {
-        return nearest(self, px, py, within) < 0 ? Double.POSITIVE_INFINITY : found;
-    }
-
-    /** The distance of what {@link #nearest} found last. */
-    private double found;
-
-    /** @return the other robot whose surface is nearest to (px, py) within {@code within}, or -1 */
-    int nearest(int self, double px, double py, double within) {
-        return scan(self, px, py, within, false);
-    }
-
-    /**
      * The robot a contact is reported against when several touch: the lowest-numbered one whose
      * surface lies within {@code within} of (px, py). Not the nearest: two robots pressed against
      * one from both sides lie at the touching distance to within rounding, and which of them is a
      * few 1e-15 mm nearer would decide the reported side by chance.
      *
+     * @param among the robots that may be touching (see {@link #freeFraction}), or null: any
+     * @param amongCount how many of {@code among} count
      * @return that robot, or -1
      */
-    int firstTouching(int self, double px, double py, double within) {
-        return scan(self, px, py, within, true);
-    }
-
-    private int scan(int self, double px, double py, double within, boolean lowestIndex) {
+    int firstTouching(int self, double px, double py, double within, int[] among, int amongCount) {
         if (count < 2) {
             return -1;
         }
-        double best = Double.POSITIVE_INFINITY;
-        int which = -1;
         double reach = within + R;
         // A centre farther than this (a margin past `reach` for rounding) is surely beyond `within`:
         // no square root is taken for it.
         double far = reach + 1e-6 + reach * 1e-12;
-        double far2 = far * far;
+        int which = -1;
+        if (among != null) {
+            for (int j = 0; j < amongCount; j++) {
+                which = touching(among[j], self, px, py, within, far, which);
+            }
+            return which;
+        }
         int c0 = StrictMath.max(0, (int) ((px - reach) / CELL_MM));
         int c1 = StrictMath.min(cols - 1, (int) ((px + reach) / CELL_MM));
         int r0 = StrictMath.max(0, (int) ((py - reach) / CELL_MM));
@@ -166,25 +152,25 @@ final class Bodies {
         for (int r = r0; r <= r1; r++) {
             for (int c = c0; c <= c1; c++) {
                 for (int k = head[r * cols + c]; k >= 0; k = next[k]) {
-                    if (k != self) {
-                        double dx = x[k] - px;
-                        double dy = y[k] - py;
-                        double d2 = dx * dx + dy * dy;
-                        if (d2 > far2) {
-                            continue;
-                        }
-                        double d = StrictMath.sqrt(d2) - R;
-                        // Ties go to the lower index, whatever the buckets' order.
-                        if (d <= within && (lowestIndex ? which < 0 || k < which : d < best || d == best && k < which)) {
-                            best = d;
-                            which = k;
-                        }
-                    }
+                    which = touching(k, self, px, py, within, far, which);
                 }
             }
         }
-        found = best;
         return which;
+    }
+
+    /** @return {@code k} if it touches (px, py) within {@code within} and is lower than {@code which} (or that is -1), else {@code which} */
+    private int touching(int k, int self, double px, double py, double within, double far, int which) {
+        if (k == self || which >= 0 && k > which) {
+            return which;
+        }
+        double dx = x[k] - px;
+        double dy = y[k] - py;
+        double d2 = dx * dx + dy * dy;
+        if (d2 > far * far) {
+            return which;
+        }
+        return StrictMath.sqrt(d2) - R <= within ? k : which;
     }
 
     /**
@@ -193,8 +179,12 @@ final class Bodies {
      * move away, not nearer.
      *
      * @param exclude the robot to leave out (the mover itself, or the robot pushing a cap), or -1
+     * @param among the only robots it could meet during this move, or null: any (found through the
+     *     buckets). A mover that knows that none or only a few others can come that near (its unit
+     *     in a crowd) names them, which gives the same answer without scanning the buckets
+     * @param amongCount how many of {@code among} count
      */
-    double freeFraction(int exclude, double px, double py, double touch, double dx, double dy) {
+    double freeFraction(int exclude, double px, double py, double touch, double dx, double dy, int[] among, int amongCount) {
         if (count == 0 || count == 1 && exclude == 0) {
             return 1;
         }
@@ -204,41 +194,48 @@ final class Bodies {
         }
         double reach = touch + StrictMath.sqrt(a);
         double t = 1;
+        if (among != null) {
+            for (int j = 0; j < amongCount && t > 0; j++) {
+                t = approach(among[j], exclude, px, py, touch, dx, dy, a, reach, t);
+            }
+            return t;
+        }
         int c0 = StrictMath.max(0, (int) ((px - reach) / CELL_MM));
         int c1 = StrictMath.min(cols - 1, (int) ((px + reach) / CELL_MM));
         int r0 = StrictMath.max(0, (int) ((py - reach) / CELL_MM));
         int r1 = StrictMath.min(rows - 1, (int) ((py + reach) / CELL_MM));
         for (int r = r0; r <= r1; r++) {
             for (int c = c0; c <= c1; c++) {
-                for (int k = head[r * cols + c]; k >= 0; k = next[k]) {
-                    if (k == exclude) {
-                        continue;
-                    }
-                    double jx = x[k] - px;
-                    double jy = y[k] - py;
-                    double d2 = jx * jx + jy * jy;
-                    if (d2 >= reach * reach) {
-                        continue;
-                    }
-                    double toward = jx * dx + jy * dy;
-                    if (d2 <= touch * touch) {
-                        if (toward > 0) {
-                            return 0;
-                        }
-                        continue;
-                    }
-                    // |j - s·d|² = touch²: the smaller root is where the discs first touch.
-                    double disc = toward * toward - a * (d2 - touch * touch);
-                    if (disc < 0) {
-                        continue;
-                    }
-                    double sMin = (toward - StrictMath.sqrt(disc)) / a;
-                    if (sMin >= 0 && sMin < t) {
-                        t = sMin;
-                    }
+                for (int k = head[r * cols + c]; k >= 0 && t > 0; k = next[k]) {
+                    t = approach(k, exclude, px, py, touch, dx, dy, a, reach, t);
                 }
             }
         }
         return t;
+    }
+
+    /** @return the free fraction {@code t} so far, cut short where the move meets robot {@code k} (0: it may not move nearer it at all) */
+    private double approach(int k, int exclude, double px, double py, double touch, double dx, double dy, double a, double reach,
+            double t) {
+        if (k == exclude) {
+            return t;
+        }
+        double jx = x[k] - px;
+        double jy = y[k] - py;
+        double d2 = jx * jx + jy * jy;
+        if (d2 >= reach * reach) {
+            return t;
+        }
+        double toward = jx * dx + jy * dy;
+        if (d2 <= touch * touch) {
+            return toward > 0 ? 0 : t;
+        }
+        // |j - s·d|² = touch²: the smaller root is where the discs first touch.
+        double disc = toward * toward - a * (d2 - touch * touch);
+        if (disc < 0) {
+            return t;
+        }
+        double sMin = (toward - StrictMath.sqrt(disc)) / a;
+        return sMin >= 0 && sMin < t ? sMin : t;
     }
 }

@@ -38,6 +38,8 @@ final class Crowd implements Bodies.Visitor {
     private int[] first = new int[0];
     private int[] sight = new int[64];
     private int sightCount;
+    /** The members of the unit being moved (robot ids). */
+    private int[] unit = new int[8];
 
     // The robot whose neighbours are being visited.
     private SimRobot looking;
@@ -74,7 +76,9 @@ final class Crowd implements Bodies.Visitor {
                     advance(find(sight[k]), tick);
                 }
             }
+            r.sightScope(sight, first[r.id()], first[r.id() + 1]);
             r.sampleAt(tick * Engine.TICK_NANOS, proximity);
+            r.sightScope(null, 0, 0);
             schedule(r, end);
         }
         for (int i = 0; i < crowd.size(); i++) {
@@ -181,15 +185,23 @@ final class Crowd implements Bodies.Visitor {
             SimRobot r = robots.get(root);
             while (t < tick) {
                 long k = StrictMath.max(1, StrictMath.min(tick - t, r.glideTicks(tick - t)));
-                r.move(k, (t + k) * Engine.TICK_NANOS, k > 1);
+                r.move(k, (t + k) * Engine.TICK_NANOS, k > 1, Motion.NO_ONE, 0);
                 t += k;
             }
             return;
         }
-        // Robots that may touch each other step together, tick by tick, in robot order.
+        // Robots that may touch each other step together, tick by tick, in robot order; each can touch
+        // only the others of its unit.
+        int members = 0;
+        for (int id = root; id >= 0; id = nextMember[id]) {
+            if (members == unit.length) {
+                unit = Arrays.copyOf(unit, members * 2);
+            }
+            unit[members++] = id;
+        }
         for (; t < tick; t++) {
             for (int id = root; id >= 0; id = nextMember[id]) {
-                robots.get(id).move(1, (t + 1) * Engine.TICK_NANOS, false);
+                robots.get(id).move(1, (t + 1) * Engine.TICK_NANOS, false, unit, members);
             }
         }
     }

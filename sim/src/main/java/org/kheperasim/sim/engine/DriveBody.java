@@ -22,12 +22,7 @@ final class DriveBody {
 
     private final DistanceField field;
     private final double mmPerPulse;
-    private final double calibrationLeft;
-    private final double calibrationRight;
-    private final double noiseSigmaLeft;
-    private final double noiseSigmaRight;
-    private final CounterNoise noiseLeft;
-    private final CounterNoise noiseRight;
+    private final Wheels wheels;
 
     private double x;
     private double y;
@@ -35,13 +30,6 @@ final class DriveBody {
     private double sin;
     /** The body's clearance from walls and lamps, and its cheap bounds. */
     private final BodyClearance room;
-    private int speedLeft;
-    private int speedRight;
-    private double noiseFactorLeft = 1;
-    private double noiseFactorRight = 1;
-    private long nextNoiseNanos;
-    private double wheelLeft;
-    private double wheelRight;
     private double encoderLeft;
     private double encoderRight;
     /** The side of the present contact; null while it is still to be worked out from {@link #touchX}, {@link #touchY}. */
@@ -64,12 +52,7 @@ final class DriveBody {
         this.bodies = world.bodies();
         this.self = self;
         this.mmPerPulse = motors.mmPerPulse();
-        this.calibrationLeft = calibrationLeft;
-        this.calibrationRight = calibrationRight;
-        this.noiseSigmaLeft = motors.noiseLeft() * readingNoise;
-        this.noiseSigmaRight = motors.noiseRight() * readingNoise;
-        this.noiseLeft = noiseLeft;
-        this.noiseRight = noiseRight;
+        this.wheels = new Wheels(motors, readingNoise, calibrationLeft, calibrationRight, noiseLeft, noiseRight);
         this.x = x;
         this.y = y;
         double h = StrictMath.toRadians(headingDeg);
@@ -79,42 +62,15 @@ final class DriveBody {
         bodies.add(self, x, y);
     }
 
-    // ------------------------------------------------------------------ wheels and noise
+    // ------------------------------------------------------------------ wheels
 
-    /** The wheels take new speeds, units. */
-    void setSpeeds(int left, int right) {
-        speedLeft = left;
-        speedRight = right;
-        refreshWheels();
+    /** @return the wheels: their speeds, calibration and noise */
+    Wheels wheels() {
+        return wheels;
     }
 
-    /** Redraw the wheels' speed noise when its period has come round; returns when it is next due, ns. */
-    long noiseDue(long now) {
-        if (now >= nextNoiseNanos) {
-            long period = now / Khepera.MOTOR_NOISE_PERIOD_NANOS;
-            nextNoiseNanos = (period + 1) * Khepera.MOTOR_NOISE_PERIOD_NANOS;
-            if (noiseSigmaLeft > 0 || noiseSigmaRight > 0) {
-                noiseFactorLeft = 1 + noiseSigmaLeft * noiseLeft.gaussian(period);
-                noiseFactorRight = 1 + noiseSigmaRight * noiseRight.gaussian(period);
-                refreshWheels();
-            }
-        }
-        return nextNoiseNanos;
-    }
-
-    private void refreshWheels() {
-        wheelLeft = speedLeft * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationLeft * noiseFactorLeft;
-        wheelRight = speedRight * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationRight * noiseFactorRight;
-    }
-
-    /** @return true when both wheels stand still */
-    boolean still() {
-        return speedLeft == 0 && speedRight == 0;
-    }
-
-    /** @return how far the centre travels in one tick at most, mm (the arc is no shorter than the chord) */
-    double travelPerTickMm() {
-        return StrictMath.abs(wheelLeft + wheelRight) * 0.5 * TICK_S;
+    private boolean still() {
+        return wheels.still();
     }
 
     /**
@@ -195,7 +151,7 @@ final class DriveBody {
             return;
         }
         double dt = ticks * TICK_S;
-        double common = (wheelLeft * dt + wheelRight * dt) * 0.5;
+        double common = (wheels.left() * dt + wheels.right() * dt) * 0.5;
         double diff = diff(ticks);
         out[4] = encoderLeft + (common - diff) / mmPerPulse;
         out[5] = encoderRight + (common + diff) / mmPerPulse;
@@ -207,8 +163,11 @@ final class DriveBody {
      * caps give way when they can, and one that cannot blocks the robot like a wall.
      *
      * @param caps the caps and the parts of the robot that push them
+     * @param mates the only other robots it may touch during this tick (see {@link
+     *     Bodies#freeFraction}), or null: any
+     * @param mateCount how many of {@code mates} count
      */
-    void step(CapContacts caps) {
+    void step(CapContacts caps, int[] mates, int mateCount) {
         if (still()) {
             return;
         }
@@ -239,7 +198,7 @@ final class DriveBody {
             // Another robot stops this one as a wall does: it goes only as far as touching it.
             double tx = nx - x;
             double ty = ny - y;
-            double f = bodies.freeFraction(self, x, y, 2 * Khepera.BODY_RADIUS_MM, tx, ty);
+            double f = bodies.freeFraction(self, x, y, 2 * Khepera.BODY_RADIUS_MM, tx, ty, mates, mateCount);
             if (f < 1) {
                 nx = x + f * tx;
                 ny = y + f * ty;
@@ -283,7 +242,8 @@ final class DriveBody {
             room.set(newClearance);
         }
         count(common, diff, fraction);
-        int other = bodies.count() > 1 ? bodies.firstTouching(self, x, y, Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) : -1;
+        int other = bodies.count() > 1
+                ? bodies.firstTouching(self, x, y, Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM, mates, mateCount) : -1;
         if (newClearance <= Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) {
             touching(field.nearestObstacleX(x, y), field.nearestObstacleY(x, y));
         } else if (other >= 0) {
@@ -325,8 +285,8 @@ final class DriveBody {
     /** The half of {@link #arc} that places the centre: the half turn's trigonometry and the chord. */
     private double halfArc(long ticks) {
         double dt = ticks * TICK_S;
-        double dl = wheelLeft * dt;
-        double dr = wheelRight * dt;
+        double dl = wheels.left() * dt;
+        double dr = wheels.right() * dt;
         trig.half((dr - dl) / Khepera.WHEEL_BASE_MM);
         return (dl + dr) * 0.5;
     }
@@ -334,11 +294,11 @@ final class DriveBody {
     /** The turn of an arc of {@code ticks} ticks, rad (as {@link #halfArc} computes it). */
     private double turn(long ticks) {
         double dt = ticks * TICK_S;
-        return (wheelRight * dt - wheelLeft * dt) / Khepera.WHEEL_BASE_MM;
+        return (wheels.right() * dt - wheels.left() * dt) / Khepera.WHEEL_BASE_MM;
     }
 
     private double diff(long ticks) {
-        return (wheelRight - wheelLeft) * ticks * TICK_S * 0.5;
+        return (wheels.right() - wheels.left()) * ticks * TICK_S * 0.5;
     }
 
     private void turnAndMove(double nx, double ny, double c, double s) {
@@ -407,14 +367,6 @@ final class DriveBody {
 
     double sin() {
         return sin;
-    }
-
-    int speedLeft() {
-        return speedLeft;
-    }
-
-    int speedRight() {
-        return speedRight;
     }
 
     Contact contact() {

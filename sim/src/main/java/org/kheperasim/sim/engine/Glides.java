@@ -32,7 +32,7 @@ final class Glides {
         if (model.stepping() == RobotModel.Stepping.TICK || gripper.busy()) {
             return 0;
         }
-        if (body.still()) {
+        if (body.wheels().still()) {
             return Long.MAX_VALUE;
         }
         double others = StrictMath.min(capContacts.freeTravelMm(body.x(), body.y()), coverage.freeTravelMm(body.x(), body.y()));
@@ -46,7 +46,7 @@ final class Glides {
     }
 
     private long glideTicksFor(double free) {
-        double ticks = (free - 1e-6) / body.travelPerTickMm();
+        double ticks = (free - 1e-6) / body.wheels().travelPerTickMm();
         return ticks >= 1 ? (long) StrictMath.min(ticks, 1e15) : 0;
     }
 }

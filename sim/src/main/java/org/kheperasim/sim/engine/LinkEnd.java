@@ -30,7 +30,7 @@ final class LinkEnd implements RobotLink.Robot {
 
     @Override
     public void applySpeeds(long now, int left, int right) {
-        body.setSpeeds(left, right);
+        body.wheels().setSpeeds(left, right);
     }
 
     @Override

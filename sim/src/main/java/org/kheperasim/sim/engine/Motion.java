@@ -74,16 +74,28 @@ final class Motion {
             }
             for (int i = 0; i < together.size(); i++) {
                 SimRobot r = together.get(i);
-                r.move(1, (t + 1) * Engine.TICK_NANOS, false);
+                r.move(1, (t + 1) * Engine.TICK_NANOS, false, null, 0);
             }
         }
     }
 
+    /** No robot: a robot on its own can touch none during the stretch. */
+    static final int[] NO_ONE = {};
+
     /**
      * A robot on its own through the stretch: glides as far as it can, steps where it must,
-     * beginning each glide or step as a tick of its own.
+     * beginning each glide or step as a tick of its own. No other robot can touch it meanwhile.
      */
     private static void alone(SimRobot r, long start, long n) {
+        r.sightScope(NO_ONE, 0, 0);
+        try {
+            aloneUnseen(r, start, n);
+        } finally {
+            r.sightScope(null, 0, 0);
+        }
+    }
+
+    private static void aloneUnseen(SimRobot r, long start, long n) {
         long t = start;
         long end = start + n;
         while (t < end) {
@@ -97,7 +109,7 @@ final class Motion {
                 k = StrictMath.min(k, -Math.floorDiv(-due, Engine.TICK_NANOS) - t);
             }
             k = StrictMath.max(1, StrictMath.min(k, r.glideTicks(k)));
-            r.move(k, (t + k) * Engine.TICK_NANOS, k > 1);
+            r.move(k, (t + k) * Engine.TICK_NANOS, k > 1, NO_ONE, 0);
             t += k;
         }
     }

@@ -105,7 +105,7 @@ public final class OnBoardControl {
     public void driveSpeeds(int l, int r) {
         leave(MotorMode.SPEED);
         robot.asked(l, r);
-        body.setSpeeds(l, r);
+        body.wheels().setSpeeds(l, r);
     }
 
     /**
@@ -117,7 +117,7 @@ public final class OnBoardControl {
      */
     public void drivePwm(int l, int r) {
         leave(MotorMode.PWM);
-        body.setSpeeds(pwmToSpeed(l), pwmToSpeed(r));
+        body.wheels().setSpeeds(pwmToSpeed(l), pwmToSpeed(r));
     }
 
     /** @param pwm -255..255 @return the speed it gives, units */
@@ -134,8 +134,8 @@ public final class OnBoardControl {
      * @param now simulated time, ns
      */
     public void moveToPositions(long now, int l, int r) {
-        left.moveTo(l, body.speedLeft());
-        right.moveTo(r, body.speedRight());
+        left.moveTo(l, body.wheels().speedLeft());
+        right.moveTo(r, body.wheels().speedRight());
         mode = MotorMode.POSITION;
         nextUpdate = now;
         robot.positionMoveStarted(now);
@@ -158,7 +158,7 @@ public final class OnBoardControl {
     long due(long now) {
         if (now >= nextUpdate) {
             nextUpdate = now + Khepera.MOTOR_PERIOD_NANOS;
-            body.setSpeeds(left.update(body.encoderLeftExact()), right.update(body.encoderRightExact()));
+            body.wheels().setSpeeds(left.update(body.encoderLeftExact()), right.update(body.encoderRightExact()));
         }
         return nextUpdate;
     }

@@ -44,22 +44,8 @@ final class ProximitySensing {
     private final double spikeRate;
     private final CounterNoise[] noise;
     private final RayHit hit = new RayHit();
-    /** The other robots: their bodies reflect the beams too. */
-    private final Bodies bodies;
-    private final int self;
-    /** Centres of the other robots within reach of a sample's beams, and how many. */
-    private double[] nearX = new double[4];
-    private double[] nearY = new double[4];
-    private int near;
-    /** Of those, the ones whose bodies reach into the present sensor's cone (indices), and how many. */
-    private int[] cone = new int[4];
-    private int inCone;
-    /** Another robot's centre farther than this from the sampling robot's is out of every beam's reach, mm. */
-    private final double reachable;
-    private double gatherX;
-    private double gatherY;
-    /** Notes the robots within {@link #reachable} of ({@link #gatherX}, {@link #gatherY}); made once, not per sample. */
-    private final Bodies.Visitor gather = this::noteRobot;
+    /** The other robots a sample may see: their bodies reflect the beams too. */
+    private final RobotsInReach robots;
     /**
      * The last proofs that the field leaves a disc empty, for the robot's centre ({@code [COUNT]})
      * and each sensor's cone: a disc whose centre has moved less than the proof's slack is still
@@ -89,8 +75,6 @@ final class ProximitySensing {
 
     ProximitySensing(World world, int self, SensorPlacement placement, RobotModel model, Miscalibration calibration,
             CounterNoise[] noise) {
-        this.bodies = world.bodies();
-        this.self = self;
         this.grid = world.grid();
         this.field = world.field();
         this.caps = world.capSet();
@@ -99,7 +83,7 @@ final class ProximitySensing {
         double reading = model.noise().reading();
         this.profile = p.profile();
         this.range = profile.rangeMm();
-        this.reachable = SensorPlacement.REACH_MM + range + Khepera.BODY_RADIUS_MM;
+        this.robots = new RobotsInReach(world.bodies(), self, SensorPlacement.REACH_MM + range + Khepera.BODY_RADIUS_MM);
         for (int k = 0; k < proven.length; k++) {
             proven[k] = new ClearanceProof();
         }
@@ -149,9 +133,9 @@ final class ProximitySensing {
         // Caps are not in the distance field: bound the beams' empty stretch by the nearest cap too.
         capFree = caps.count() == 0 ? Double.POSITIVE_INFINITY
                 : caps.nearestSurface(robotX, robotY) - CAP_CELLS_MM - SensorPlacement.REACH_MM;
-        gatherRobots(robotX, robotY);
+        robots.gather(robotX, robotY);
         // Only walls and lamps within any beam's reach: the distance field alone can prove a beam empty.
-        boolean wallsOnly = capFree >= range && near == 0;
+        boolean wallsOnly = capFree >= range && robots.count() == 0;
         // Nothing within range of any sensor: every beam is empty (no sensor is farther than
         // REACH_MM from the centre, and the field's lower bound of the clearance is exceeded).
         return wallsOnly && discEmpty(IrSensor.COUNT, robotX, robotY, SensorPlacement.REACH_MM + range);
@@ -214,11 +198,8 @@ final class ProximitySensing {
             // Every beam of this sensor lies in this disc: proven free of walls, lamps and caps, only
             // robots can answer them.
             boolean coneFree = noCaps && discEmpty(i, midX, midY, coneMid);
-            inCone = 0;
-            if (near > 0) {
-                robotsInCone(midX, midY, shortcuts ? coneMid : Double.POSITIVE_INFINITY);
-            }
-            if (coneFree && inCone == 0) {
+            robots.inCone(midX, midY, shortcuts ? coneMid : Double.POSITIVE_INFINITY);
+            if (coneFree && robots.inConeCount() == 0) {
                 out[i] = reading(i, 0, sample);
                 continue;
             }
@@ -226,8 +207,8 @@ final class ProximitySensing {
             if (capFree < free) {
                 free = StrictMath.min(free, capsAhead(px, py, dx, dy));
             }
-            if (near > 0) {
-                free = StrictMath.min(free, robotsFrom(px, py));
+            if (robots.count() > 0) {
+                free = StrictMath.min(free, robots.nearestSurface(px, py));
             }
             if (!shortcuts) {
                 raw = beams(px, py, dx, dy, 0, false, false);
@@ -278,7 +259,7 @@ final class ProximitySensing {
             double from = coneFree || !noCaps ? skip : emptyUntil(px, py, rx, ry, skip, limit);
             if (coneFree || from > limit) {
                 // The grid march would find nothing: no wall, lamp or cap along the beam.
-                if (inCone == 0) {
+                if (robots.inConeCount() == 0) {
                     continue;
                 }
                 d = Double.POSITIVE_INFINITY;
@@ -287,8 +268,8 @@ final class ProximitySensing {
                 d = from + grid.castRay(px + from * rx, py + from * ry, rx, ry, limit - from, hit);
                 reflect = d == Double.POSITIVE_INFINITY ? 0 : reflectanceOf(hit.id);
             }
-            if (inCone > 0) {
-                double dr = robotAlong(px, py, rx, ry);
+            if (robots.inConeCount() > 0) {
+                double dr = robots.along(px, py, rx, ry);
                 if (dr < d && dr <= limit) {
                     d = dr;
                     reflect = reflectance[ROBOT];
@@ -355,83 +336,9 @@ final class ProximitySensing {
     /** Index of another robot's body in the reflectance table. */
     private static final int ROBOT = 4;
 
-    /** Note the other robots whose bodies a beam of this sample could reach. */
-    private void gatherRobots(double robotX, double robotY) {
-        near = 0;
-        if (bodies.count() < 2) {
-            return;
-        }
-        gatherX = robotX;
-        gatherY = robotY;
-        bodies.visit(self, robotX, robotY, reachable, gather);
-    }
-
-    private void noteRobot(int k, double dx, double dy) {
-        if (dx * dx + dy * dy >= reachable * reachable) {
-            return;
-        }
-        if (near == nearX.length) {
-            nearX = java.util.Arrays.copyOf(nearX, near * 2);
-            nearY = java.util.Arrays.copyOf(nearY, near * 2);
-        }
-        nearX[near] = gatherX + dx;
-        nearY[near] = gatherY + dy;
-        near++;
-    }
-
-    /**
-     * Note those robots whose bodies come within the disc of radius {@code radius} around (x, y),
-     * with a margin for rounding: the sensor's beams lie in that disc (the sensor itself on its
-     * edge), so no other robot can meet a beam within its range, or hold the sensor inside it.
-     */
-    private void robotsInCone(double x, double y, double radius) {
-        double clear = radius + Khepera.BODY_RADIUS_MM + 1e-6;
-        for (int k = 0; k < near; k++) {
-            double ex = nearX[k] - x;
-            double ey = nearY[k] - y;
-            if (ex * ex + ey * ey <= clear * clear) {
-                if (inCone == cone.length) {
-                    cone = java.util.Arrays.copyOf(cone, inCone * 2);
-                }
-                cone[inCone++] = k;
-            }
-        }
-    }
-
-    /** @return the distance from a sensor to the nearest of those robots' surfaces, mm */
-    private double robotsFrom(double px, double py) {
-        double best = Double.POSITIVE_INFINITY;
-        for (int k = 0; k < near; k++) {
-            double ex = nearX[k] - px;
-            double ey = nearY[k] - py;
-            best = StrictMath.min(best, StrictMath.sqrt(ex * ex + ey * ey) - Khepera.BODY_RADIUS_MM);
-        }
-        return best;
-    }
-
-    /**
-     * @return how far a beam from (px, py) along the unit vector (rx, ry) goes before it meets one of
-     *     the robots in the sensor's cone, mm (the others could only be met beyond its range)
-     */
-    private double robotAlong(double px, double py, double rx, double ry) {
-        double best = Double.POSITIVE_INFINITY;
-        double rr = Khepera.BODY_RADIUS_MM * Khepera.BODY_RADIUS_MM;
-        for (int j = 0; j < inCone; j++) {
-            int k = cone[j];
-            double wx = nearX[k] - px;
-            double wy = nearY[k] - py;
-            double b = wx * rx + wy * ry;
-            double c = wx * wx + wy * wy - rr;
-            if (c <= 0) {
-                return 0;
-            }
-            double disc = b * b - c;
-            if (b <= 0 || disc < 0) {
-                continue;
-            }
-            best = StrictMath.min(best, b - StrictMath.sqrt(disc));
-        }
-        return best;
+    /** The samples to come may see only robots {@code ids[from .. to)}, or any (null); see {@link RobotsInReach#scope}. */
+    void scope(int[] ids, int from, int to) {
+        robots.scope(ids, from, to);
     }
 
     private double reflectanceOf(int cellId) {

@@ -103,7 +103,7 @@ public final class SimRobot {
         link.commandsDue(now);
         sense.at(0);
         link.pollDue(now);
-        long due = StrictMath.min(link.nextCommandDue(), body.noiseDue(now));
+        long due = StrictMath.min(link.nextCommandDue(), body.wheels().noiseDue(now));
         nextHardDue = StrictMath.min(due, onBoard.due(now));
         nextDue = StrictMath.min(nextHardDue, link.nextPollDue());
     }
@@ -128,7 +128,7 @@ public final class SimRobot {
 
     /** @return how far the centre travels in one tick at most at the present wheel speeds, mm */
     double travelPerTickMm() {
-        return body.travelPerTickMm();
+        return body.wheels().travelPerTickMm();
     }
 
     /** @return another robot's surface farther than this from the centre is out of every sensor's reach, mm */
@@ -140,8 +140,12 @@ public final class SimRobot {
     /**
      * Move through {@code ticks} ticks ending at {@code endNanos}: a glide, which {@link #glideTicks}
      * must allow, or one tick with contact handling.
+     *
+     * @param mates the only other robots it may touch meanwhile, or null: any (see {@link
+     *     Bodies#freeFraction}); its mover knows this from how far apart the robots are
+     * @param mateCount how many of {@code mates} count
      */
-    void move(long ticks, long endNanos, boolean glide) {
+    void move(long ticks, long endNanos, boolean glide, int[] mates, int mateCount) {
         if (glide) {
             long start = endNanos - ticks * Engine.TICK_NANOS;
             // Poll samples that fall inside the glide are taken where the robot is at their tick.
@@ -158,7 +162,7 @@ public final class SimRobot {
             nextDue = StrictMath.min(nextHardDue, due);
             body.glide(ticks);
         } else {
-            body.step(capContacts);
+            body.step(capContacts, mates, mateCount);
         }
         movedTo = endNanos;
         gripper.moved(endNanos);
@@ -170,6 +174,14 @@ public final class SimRobot {
     }
 
     // ------------------------------------------------------------------ moving among others (Crowd)
+
+    /**
+     * The proximity samples to come may see only robots {@code ids[from .. to)} (null: any): the
+     * mover knows no other robot can come within their reach meanwhile.
+     */
+    void sightScope(int[] ids, int from, int to) {
+        proximity.scope(ids, from, to);
+    }
 
     /** @return the tick at whose start the poll cycle's next sample is taken (far in the future: never) */
     long nextPollTick() {
@@ -198,7 +210,7 @@ public final class SimRobot {
      */
     boolean mayMoveCaps(long ticks) {
         return steppingByTicks() || gripper.busy() || gripper.heldCap() >= 0
-                || capContacts.freeTravelMm(body.x(), body.y()) <= body.travelPerTickMm() * ticks + 1e-6;
+                || capContacts.freeTravelMm(body.x(), body.y()) <= body.wheels().travelPerTickMm() * ticks + 1e-6;
     }
 
     /** @return true when the robot's model steps every tick, the reference the event stepping is tested against */
@@ -265,7 +277,7 @@ public final class SimRobot {
     public void emergencyStop() {
         onBoard.speedMode();
         link.reset();
-        body.setSpeeds(0, 0);
+        body.wheels().setSpeeds(0, 0);
     }
 
     /** @return the gripper turret, as the controller and a protocol client see it */
@@ -309,12 +321,12 @@ public final class SimRobot {
 
     /** @return the left speed in effect on the wheel, units */
     public int speedLeft() {
-        return body.speedLeft();
+        return body.wheels().speedLeft();
     }
 
     /** @return the right speed in effect on the wheel, units */
     public int speedRight() {
-        return body.speedRight();
+        return body.wheels().speedRight();
     }
 
     /** @return the robot's own left position counter, pulses (not delayed by the link) */

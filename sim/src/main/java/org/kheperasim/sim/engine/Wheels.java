@@ -1,0 +1,93 @@
+package org.kheperasim.sim.engine;
+
+import org.kheperasim.sim.engine.noise.CounterNoise;
+
+/**
+ * The two wheels' speeds: the commanded speeds (units), and the speeds they really turn at (mm/s),
+ * with each wheel's calibration and its speed noise, redrawn every {@link
+ * Khepera#MOTOR_NOISE_PERIOD_NANOS}.
+ */
+final class Wheels {
+    private static final double TICK_S = Engine.TICK_NANOS / 1e9;
+
+    private final double calibrationLeft;
+    private final double calibrationRight;
+    private final double noiseSigmaLeft;
+    private final double noiseSigmaRight;
+    private final CounterNoise noiseLeft;
+    private final CounterNoise noiseRight;
+    private int speedLeft;
+    private int speedRight;
+    private double noiseFactorLeft = 1;
+    private double noiseFactorRight = 1;
+    private long nextNoiseNanos;
+    /** What the wheels turn at now, mm/s at the rim. */
+    private double left;
+    private double right;
+
+    Wheels(RobotModel.Motors motors, double readingNoise, double calibrationLeft, double calibrationRight,
+            CounterNoise noiseLeft, CounterNoise noiseRight) {
+        this.calibrationLeft = calibrationLeft;
+        this.calibrationRight = calibrationRight;
+        this.noiseSigmaLeft = motors.noiseLeft() * readingNoise;
+        this.noiseSigmaRight = motors.noiseRight() * readingNoise;
+        this.noiseLeft = noiseLeft;
+        this.noiseRight = noiseRight;
+    }
+
+    /** The wheels take new speeds, units. */
+    void setSpeeds(int left, int right) {
+        speedLeft = left;
+        speedRight = right;
+        refresh();
+    }
+
+    /** Redraw the wheels' speed noise when its period has come round; returns when it is next due, ns. */
+    long noiseDue(long now) {
+        if (now >= nextNoiseNanos) {
+            long period = now / Khepera.MOTOR_NOISE_PERIOD_NANOS;
+            nextNoiseNanos = (period + 1) * Khepera.MOTOR_NOISE_PERIOD_NANOS;
+            if (noiseSigmaLeft > 0 || noiseSigmaRight > 0) {
+                noiseFactorLeft = 1 + noiseSigmaLeft * noiseLeft.gaussian(period);
+                noiseFactorRight = 1 + noiseSigmaRight * noiseRight.gaussian(period);
+                refresh();
+            }
+        }
+        return nextNoiseNanos;
+    }
+
+    private void refresh() {
+        left = speedLeft * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationLeft * noiseFactorLeft;
+        right = speedRight * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationRight * noiseFactorRight;
+    }
+
+    /** @return true when both wheels stand still */
+    boolean still() {
+        return speedLeft == 0 && speedRight == 0;
+    }
+
+    /** @return how far the centre travels in one tick at most, mm (the arc is no shorter than the chord) */
+    double travelPerTickMm() {
+        return StrictMath.abs(left + right) * 0.5 * TICK_S;
+    }
+
+    /** @return the left wheel's speed now, mm/s */
+    double left() {
+        return left;
+    }
+
+    /** @return the right wheel's speed now, mm/s */
+    double right() {
+        return right;
+    }
+
+    /** @return the left wheel's commanded speed, units */
+    int speedLeft() {
+        return speedLeft;
+    }
+
+    /** @return the right wheel's commanded speed, units */
+    int speedRight() {
+        return speedRight;
+    }
+}
