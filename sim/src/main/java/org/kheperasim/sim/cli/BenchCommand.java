@@ -93,7 +93,9 @@ final class BenchCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "median: %,.0f simulated seconds per wall second (min %,.0f, max %,.0f)%n",
                 sorted.get(sorted.size() / 2), sorted.get(0), sorted.get(sorted.size() - 1));
         System.out.println(load());
-        Swarm.printSetUpAndMemory(() -> run(seed + runs, 0.001));
+        Swarm.printSetUpAndMemory(() -> run(seed + runs, 0.001),
+                whileRunning -> Simulation.builder().arena(scenario).controller(controller).seconds(0.001).seed(seed + runs)
+                        .listener(s -> whileRunning.run(), 1).run());
         return 0;
     }
 

@@ -38,8 +38,13 @@ final class Swarm {
         return new Arena("swarm-" + n, size, size, robots, walls, List.of(), List.of(), List.of());
     }
 
-    /** Time a run's set-up (a run of one tick) and print it with the heap's peak use so far. */
-    static void printSetUpAndMemory(Runnable oneTick) {
+    /**
+     * Time a run's set-up (a run of one tick) and print it with the heap's peak use so far and the
+     * heap a run holds: measured once more in a second such run, after a full collection while its
+     * world and robots are alive ({@code measuredRun} runs the measurement it is given from inside
+     * the run, at its first snapshot).
+     */
+    static void printSetUpAndMemory(Runnable oneTick, java.util.function.Consumer<Runnable> measuredRun) {
         long t0 = System.nanoTime();
         oneTick.run();
         double setUp = (System.nanoTime() - t0) / 1e9;
@@ -49,10 +54,15 @@ final class Swarm {
                 peak += pool.getPeakUsage().getUsed();
             }
         }
-        System.gc();
-        long live = ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed();
+        long[] live = new long[1];
+        measuredRun.accept(() -> {
+            if (live[0] == 0) {
+                System.gc();
+                live[0] = ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed();
+            }
+        });
         System.out.printf(Locale.ROOT, "set-up of a run (construction, 1 ms simulated, teardown): %.3f s; peak heap in use"
-                + " (sum of the pools' peaks, garbage included: an upper bound): %,d MB; live after a full collection:"
-                + " %,d MB; heap limit %,d MB (-Xmx)%n", setUp, peak >> 20, live >> 20, Runtime.getRuntime().maxMemory() >> 20);
+                + " (sum of the pools' peaks, garbage included: an upper bound): %,d MB; live while a run"
+                + " is set up, after a full collection: %,d MB; heap limit %,d MB (-Xmx)%n", setUp, peak >> 20, live[0] >> 20, Runtime.getRuntime().maxMemory() >> 20);
     }
 }

@@ -91,4 +91,27 @@ class RunCommandTest {
         // Figures are only comparable under a similar load: the load is printed with them.
         assertTrue(out.contains("machine load: "), out);
     }
+
+    /**
+     * The swarm benchmark's memory line counts what a run holds while it runs: 400 robots hold
+     * tens of MB more than one (each its sensors, noise streams, coverage), measured in a run that
+     * is still alive, not after it has been dropped.
+     */
+    @Test
+    void swarmBenchPrintsTheHeapARunHolds() {
+        assertEquals(0, main("bench", "--robots", "1", "--controller", "StepBraitenberg", "--seconds", "0.1", "--runs", "1",
+                "--warm-up", "0"));
+        long one = liveMb(out);
+        assertEquals(0, main("bench", "--robots", "400", "--controller", "StepBraitenberg", "--seconds", "0.1", "--runs", "1",
+                "--warm-up", "0"));
+        long many = liveMb(out);
+        assertTrue(many > one + 10, "live heap of a run: 1 robot " + one + " MB, 400 robots " + many + " MB");
+    }
+
+    private static long liveMb(String out) {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("live while a run is set up, after a full collection: ([\\d,]+) MB")
+                .matcher(out);
+        assertTrue(m.find(), out);
+        return Long.parseLong(m.group(1).replace(",", ""));
+    }
 }
