@@ -145,7 +145,9 @@ final class Crowd implements Bodies.Visitor {
     @Override
     public void visit(int k, double dx, double dy) {
         SimRobot o = robots.get(k);
-        double apart = StrictMath.sqrt(dx * dx + dy * dy) - lookingReach - o.travelPerTickMm() * ticks;
+        // The same for both robots of a pair (a sum is exact to swap): one must not find the other
+        // within sight while the other finds no one and moves on its own.
+        double apart = StrictMath.sqrt(dx * dx + dy * dy) - (lookingReach + o.travelPerTickMm() * ticks);
         if (apart - StrictMath.max(looking.unseenMm(), o.unseenMm()) - Khepera.BODY_RADIUS_MM < 0) {
             if (sightCount == sight.length) {
                 sight = Arrays.copyOf(sight, sightCount * 2);

@@ -28,18 +28,12 @@ import java.lang.reflect.Method;
  *
  * <p>It is an option, not the default, for one reason: a virtual thread holds its carrier while it
  * runs without pausing (a student's loop inside a library call that never returns) and while it
- * waits inside a class initializer. When every carrier is held so, the other controllers cannot
- * run, and the watchdog takes them for hung. More carriers would make that rarer, but then the
- * hand-overs move between carriers and cost more (measured: 10 robots 190× with 256 carriers,
- * 460× with 2). With the option the scheduler gets one carrier ({@value #PARALLELISM} is set to 1), unless
- * {@code -Djdk.virtualThreadScheduler.parallelism} says otherwise: only one thread holds the turn
- * at a time anyway, and a hand-over then never wakes a second carrier (10 robots about 1,350×
- * against 900–1,100× with one carrier per core on 2 cores). One stuck controller thread then holds
- * the only carrier, where with one per core it took as many as there are cores.
+ * waits inside a class initializer, and the scheduler has one carrier per core. When every carrier
+ * is held so, the other controllers cannot run, and the watchdog takes them for hung. More
+ * carriers would avoid that, but then the hand-overs move between carriers and cost as much as
+ * between platform threads (measured: 10 robots 190× with 256 carriers, 460× with 2).
  */
 final class ThreadRunners {
-    /** The JDK's setting of how many carrier threads the virtual-thread scheduler has. */
-    static final String PARALLELISM = "jdk.virtualThreadScheduler.parallelism";
     /** True when controller threads run as virtual threads in this JVM. */
     static final boolean VIRTUAL;
     /**
@@ -73,10 +67,6 @@ final class ThreadRunners {
             } catch (ReflectiveOperationException e) {
                 wanted = false;
             }
-        }
-        if (wanted && System.getProperty(PARALLELISM) == null) {
-            // Read when the virtual-thread scheduler is made, at the first virtual thread: none is made before.
-            System.setProperty(PARALLELISM, "1");
         }
         VIRTUAL = wanted;
         OF_VIRTUAL = ofVirtual;

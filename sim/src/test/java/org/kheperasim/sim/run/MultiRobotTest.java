@@ -120,27 +120,4 @@ class MultiRobotTest {
             assertTrue(r.distanceMm() > 200, r.name() + " drove " + r.distanceMm() + " mm");
         }
     }
-
-    /**
-     * With virtual controller threads ({@code -Dkheperasim.virtualThreads=true}, Java 24+) the
-     * scheduler has one carrier unless told otherwise, so that no hand-over wakes a second one:
-     * ten controllers run on a single carrier thread (the scheduler's workers are named
-     * {@code ForkJoinPool-N-worker-M}). Without the option there is nothing to check.
-     */
-    @Test
-    void virtualControllerThreadsShareOneCarrier() {
-        org.junit.jupiter.api.Assumptions.assumeTrue(
-                Runtime.version().feature() >= 24 && Boolean.getBoolean("kheperasim.virtualThreads"),
-                "platform controller threads");
-        org.junit.jupiter.api.Assumptions.assumeTrue(System.getProperty("jdk.virtualThreadScheduler.parallelism", "1").equals("1"),
-                "the scheduler's parallelism was set on the command line");
-        java.util.Set<String> carriers = java.util.concurrent.ConcurrentHashMap.newKeySet();
-        RunResult r = Simulation.builder().arena(crowd(10)).controller("Braitenberg").seed(4).seconds(10)
-                .listener(s -> Thread.getAllStackTraces().keySet().stream().map(Thread::getName)
-                        .filter(n -> n.matches("ForkJoinPool-\\d+-worker-\\d+")).forEach(carriers::add), 1000)
-                .run();
-        assertEquals(10, r.robots().size());
-        assertEquals("1", System.getProperty("jdk.virtualThreadScheduler.parallelism"));
-        assertEquals(1, carriers.size(), "carrier threads seen during the run: " + carriers);
-    }
 }
