@@ -363,6 +363,7 @@ final class ControllerClock implements SimClock.Clock, PortClock {
     /** Wait for the turn inside the monitor's real wait, so that the monitor is free meanwhile. */
     private void awaitInWait(Participant me, Object monitor) {
         Turn turn = host.lockstep().turn();
+        turn.settle(me.seat);
         boolean interrupted = false;
         while (!turn.heldBy(me.seat)) {
             try {

@@ -36,6 +36,8 @@ public final class Lockstep {
     private java.util.function.BooleanSupplier stopAsked = () -> false;
     /** Set by the owner when {@link #stopAsked} said yes: whoever steps the world ends the run at the next tick. */
     private volatile boolean stopping;
+    /** Set once the run has claimed a core for its controller threads (or found none to claim). */
+    private boolean coreClaimed;
 
     /**
      * @param engine the engine whose drivers are the hosts
@@ -100,6 +102,11 @@ public final class Lockstep {
      * @param stop asked whether to stop early (e.g. on SIGTERM); cheap and thread-safe
      */
     public void run(long endNanos, java.util.function.BooleanSupplier stop) {
+        if (!coreClaimed && !hosts.isEmpty() && !ThreadRunners.VIRTUAL) {
+            // Kept for the whole run, window chunks included: given back when the controllers stop.
+            coreClaimed = true;
+            turn.keepOn(CpuAffinity.claim());
+        }
         stopAsked = stop;
         stopping = stop.getAsBoolean();
         HeapWatch.awaitReady();
@@ -170,6 +177,8 @@ public final class Lockstep {
         for (StepHost s : steps) {
             s.stop();
         }
+        CpuAffinity.release(turn.core());
+        turn.keepOn(-1);
     }
 
     /**

@@ -38,6 +38,8 @@ final class Turn {
         volatile Object waitMonitor;
         /** A virtual thread parks at once: parking and waking one costs less than a spin. */
         private volatile boolean virtual;
+        /** The core the seat's thread has kept itself on (see {@link CpuAffinity}), or -1; its own thread's. */
+        private int pinnedTo = -1;
 
         Seat(Thread thread) {
             this.thread = thread;
@@ -60,10 +62,43 @@ final class Turn {
     }
 
     private volatile Seat holder;
+    /** The core the threads that wait for the turn keep to, or -1 (see {@link #keepOn}). */
+    private volatile int cpu = -1;
 
     /** @param first the seat that holds the turn at the start */
     Turn(Seat first) {
         this.holder = first;
+    }
+
+    /**
+     * From now on every platform thread that waits for this turn keeps itself on {@code core}, so a
+     * hand-over is a switch on one core, not a wake-up of another (see {@link CpuAffinity}); and
+     * none of them spins, which would only take that core from the holder.
+     *
+     * @param core a core from {@link CpuAffinity#claim}, or -1: threads stay where the system puts them
+     */
+    void keepOn(int core) {
+        cpu = core;
+    }
+
+    /** @return the core the waiting threads keep to, or -1 */
+    int core() {
+        return cpu;
+    }
+
+    /** @return the core {@code seat}'s thread has kept itself on, or -1 (for tests; read on any thread) */
+    static int pinnedCore(Seat seat) {
+        return seat.pinnedTo;
+    }
+
+    /** The calling thread, {@code me}'s, waits for this turn: first it moves to the turn's core, once. */
+    void settle(Seat me) {
+        int c = cpu;
+        if (c >= 0 && me.pinnedTo != c && !me.virtual) {
+            // Tried once per core: where the call fails the thread stays free, as without pinning.
+            CpuAffinity.pinCallingThread(c);
+            me.pinnedTo = c;
+        }
     }
 
     /** @return true when {@code seat} holds the turn */
@@ -113,8 +148,9 @@ final class Turn {
         if (holder == me) {
             return;
         }
+        settle(me);
         long start = System.nanoTime();
-        if (!me.virtual && me.typicalWaitNanos < SPIN_WORTH_NANOS && reserveSpin()) {
+        if (!me.virtual && me.pinnedTo < 0 && me.typicalWaitNanos < SPIN_WORTH_NANOS && reserveSpin()) {
             try {
                 int spins = 0;
                 while (holder != me && spinning(++spins, start)) {

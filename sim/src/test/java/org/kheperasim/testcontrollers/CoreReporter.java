@@ -1,0 +1,34 @@
+package org.kheperasim.testcontrollers;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.kheperasim.api.CurrentRobotState;
+import org.kheperasim.api.MessagePasser;
+
+/**
+ * Sleeps five times (so it has waited for its turn), then reports the cores the operating system
+ * lets its thread run on (Linux; a trusted run, since it reads a file). CpuAffinityTest.
+ */
+public class CoreReporter extends Thread {
+    private final MessagePasser mp;
+
+    public CoreReporter(CurrentRobotState state, MessagePasser mp) {
+        this.mp = mp;
+    }
+
+    @Override
+    public void run() {
+        try {
+            for (int i = 0; i < 5; i++) {
+                Thread.sleep(100);
+            }
+            for (String line : Files.readAllLines(Path.of("/proc/thread-self/status"))) {
+                if (line.startsWith("Cpus_allowed_list:")) {
+                    mp.sendMessage("cores " + line.substring("Cpus_allowed_list:".length()).trim());
+                }
+            }
+        } catch (Exception e) {
+            mp.sendMessage("failed " + e);
+        }
+    }
+}
