@@ -5,8 +5,10 @@ import java.util.concurrent.locks.LockSupport;
 /**
  * The turn: exactly one thread of a run, its holder, runs at any moment: the run's owner or one
  * controller thread. The holder passes the turn by naming the next holder's {@link Seat}; a thread
- * waiting for the turn spins for a short while (only where there are spare cores), then parks until
- * it is handed the turn (it spins only when its turn typically comes back soon). This class is the whole hand-off protocol; who gets the turn next is the
+ * waiting for the turn parks until it is handed the turn. Where the run keeps its threads on one
+ * core ({@link #keepOn}), each waiting thread moves there at its first wait and never spins;
+ * elsewhere it spins for a short while first, when there are spare cores and its turn typically
+ * comes back soon. This class is the whole hand-off protocol; who gets the turn next is the
  * engine's decision (see {@link Lockstep}).
  */
 final class Turn {
