@@ -41,9 +41,19 @@ public record ProximityProfile(String name, double[] distancesMm, double[] value
                 throw new IllegalArgumentException("profile " + name + ": distances must increase");
             }
         }
+        if (!(distancesMm[distancesMm.length - 1] >= MIN_RANGE_MM)) {
+            // Crowd joins robots that may touch within a stretch into one unit, and a sample of each
+            // sees the others only because they are then within its sight: that takes a range of a
+            // fraction of a millimetre at least; 1 mm leaves room.
+            throw new IllegalArgumentException("profile " + name + ": the last distance, the sensors' range, must be at least "
+                    + MIN_RANGE_MM + " mm, not " + distancesMm[distancesMm.length - 1]);
+        }
         distancesMm = distancesMm.clone();
         values = values.clone();
     }
+
+    /** The shortest range a profile may have, mm (see the check above). */
+    public static final double MIN_RANGE_MM = 1;
 
     /** @param name a profile name @return the built-in profile of that name */
     public static ProximityProfile named(String name) {

@@ -1,6 +1,7 @@
 package org.kheperasim.sim.engine;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Locale;
@@ -57,5 +58,13 @@ class ProximityResponseTest {
         double tolerance = 4 * sigma / StrictMath.sqrt(samples) + 1;
         assertEquals(expected, sum2 / samples, tolerance, "mean of sensor 2 over " + samples + " readings");
         assertEquals(expected, sum3 / samples, tolerance, "mean of sensor 3 over " + samples + " readings");
+    }
+
+    @org.junit.jupiter.api.Test
+    void aProfileReachesOneMillimetreAtLeast() {
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> new ProximityProfile("tiny", new double[] {0, 0.4}, new double[] {1023, 0}));
+        assertTrue(e.getMessage().contains("at least 1.0 mm"), e.getMessage());
+        assertEquals(1.0, new ProximityProfile("short", new double[] {0, 1}, new double[] {1023, 0}).rangeMm());
     }
 }
