@@ -44,7 +44,8 @@ final class ChildRun {
     static Outcome run(GradePlan.Job job, Submission sub, Limits lim, Path runs) throws IOException {
         Path trace = runs.resolve(ReportFiles.runId(job) + ".trace");
         Files.deleteIfExists(trace);
-        List<String> cmd = new ArrayList<>(List.of(java(), "-Xmx" + lim.heapMb() + "m", "-XX:+UseSerialGC",
+        // Native access for JNA (the controller threads' core, see host.CpuAffinity): Java 22+ warns without it.
+        List<String> cmd = new ArrayList<>(List.of(java(), "--enable-native-access=ALL-UNNAMED", "-Xmx" + lim.heapMb() + "m", "-XX:+UseSerialGC",
                 "-XX:ActiveProcessorCount=" + lim.processors(), "-Djava.awt.headless=true",
                 "-cp", System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main", "run",
                 "--arena", arenaArg(job.arena()), "--classpath", sub.classpath().toString(),

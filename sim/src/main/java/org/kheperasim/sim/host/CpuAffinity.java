@@ -3,35 +3,49 @@ package org.kheperasim.sim.host;
 import com.sun.jna.Library;
 import com.sun.jna.Native;
 import com.sun.jna.NativeLong;
+import java.io.IOException;
+import java.nio.channels.FileChannel;
+import java.nio.channels.FileLock;
+import java.nio.channels.OverlappingFileLockException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.logging.Level;
+import java.util.logging.Logger;
 
 /**
  * Keeps the threads that take turns in one run on one core (Linux, through JNA's
  * {@code sched_setaffinity}).
  *
  * <p>Only one of them runs at a time, and each hand-over wakes a parked thread. When the woken
- * thread's core is idle, the operating system wakes that core (on a virtual machine, a call into the
- * hypervisor): 20–60 µs a hand-over on a 2-core virtual machine, against 2–4 µs when the thread
+ * thread's core is idle, the operating system wakes that core too (on a virtual machine, a call into
+ * the hypervisor): 20–60 µs a hand-over on a 2-core virtual machine, against 2–4 µs when the thread
  * that hands over and the thread woken share a core and one simply follows the other there. A
  * swarm of thread-style controllers hands over at every wake-up of every controller, so this is most
- * of its time: 10 robots ran about 375 simulated seconds per wall second spread over the cores and
- * about 1,000 kept on one (docs/swarms.md). The JVM's own threads (the compilers, the collector)
- * and the run's owner stay free to use the other cores.
+ * of its time (10 robots: about 400 simulated seconds per wall second spread over the cores, about
+ * 1,000 on one; docs/swarms.md). The JVM's own threads and the run's owner stay free.
  *
- * <p>Each run claims a core for its threads: the least used by the runs of this JVM that hold one
- * now, preferring the core the claiming thread is on. Where the call is not available (not Linux,
- * JNA cannot load its library, one core allowed) or {@code -Dkheperasim.pinTurns=false} is set,
- * nothing is pinned and threads hand over as before; nothing a run computes depends on it.
+ * <p>A run claims a core of its own: none that another run holds, in this JVM or, through a lock
+ * file per core, in another process of the same user (a class graded in parallel child JVMs); when
+ * every core is held, the run's threads are not pinned. A core other than the claiming thread's is
+ * preferred (the owner, which watches the run, wakes every millisecond). When the run gives the
+ * core back, every thread of the process still kept on it alone is let free again: a controller's
+ * thread that was left behind, and any thread created by a pinned one (Linux hands a thread's cores
+ * down to the threads it creates, such as a parallel stream's pool workers). Nothing a run computes
+ * depends on any of this. Where the calls are not available (not Linux, JNA cannot load its library,
+ * one core allowed), or with {@code -Dkheperasim.pinTurns=false}, nothing is pinned.
  */
 final class CpuAffinity {
     /** The system property that turns pinning off ({@code false}). */
     static final String SWITCH = "kheperasim.pinTurns";
     /** {@code cpu_set_t}: 1,024 bits, as unsigned longs (so the bits are right on either byte order). */
     private static final int MASK_LONGS = 16;
+    private static final NativeLong MASK_BYTES = new NativeLong(MASK_LONGS * 8L);
 
     private CpuAffinity() {
     }
 
-    /** The C library's calls, bound on first use: a run with one controller thread never loads JNA. */
+    /** The C library's calls, bound on first use: a run with one controller never loads JNA. */
     interface LibC extends Library {
         int sched_getcpu();
 
@@ -40,15 +54,21 @@ final class CpuAffinity {
         int sched_setaffinity(int pid, NativeLong size, long[] mask);
     }
 
+    /** A core held by a run of this JVM, and its lock file's lock (null where no file could be locked). */
+    private record Claim(FileChannel channel, FileLock lock) {
+    }
+
     /** What the process may use, found once. */
     private static final class Cores {
         static final LibC LIBC;
         /** The cores this process may run on, ascending; empty when pinning is off or impossible. */
         static final int[] ALLOWED;
+        /** {@link #ALLOWED} as a mask, to let a thread free again. */
+        static final long[] ALLOWED_MASK = new long[MASK_LONGS];
         /** Why pinning is off, or null. */
         static final String WHY_NOT;
-        /** Per core: runs of this JVM whose threads are kept on it now. */
-        static final int[] CLAIMS = new int[MASK_LONGS * 64];
+        /** Per core: the run of this JVM that holds it, or null. */
+        static final Claim[] CLAIMS = new Claim[MASK_LONGS * 64];
 
         static {
             LibC libc = null;
@@ -59,13 +79,17 @@ final class CpuAffinity {
             } else if (!System.getProperty("os.name", "").toLowerCase(java.util.Locale.ROOT).contains("linux")) {
                 why = "not Linux";
             } else {
+                // JNA logs (with a stack trace) when it cannot unpack its library; the reason is kept here instead.
+                Logger jnaLog = Logger.getLogger("com.sun.jna");
+                Level was = jnaLog.getLevel();
+                jnaLog.setLevel(Level.OFF);
                 try {
                     libc = Native.load("c", LibC.class);
-                    long[] mask = new long[MASK_LONGS];
-                    if (libc.sched_getaffinity(0, new NativeLong(MASK_LONGS * 8L), mask) != 0) {
+                    libc.sched_getcpu();
+                    if (libc.sched_getaffinity(0, MASK_BYTES, ALLOWED_MASK) != 0) {
                         why = "sched_getaffinity failed";
                     } else {
-                        allowed = bits(mask);
+                        allowed = bits(ALLOWED_MASK);
                         if (allowed.length < 2) {
                             why = "one core allowed";
                             allowed = new int[0];
@@ -73,7 +97,9 @@ final class CpuAffinity {
                     }
                 } catch (LinkageError | RuntimeException e) {
                     why = "JNA unavailable: " + e;
-                    libc = null;
+                    allowed = new int[0];
+                } finally {
+                    jnaLog.setLevel(was);
                 }
             }
             LIBC = allowed.length == 0 ? null : libc;
@@ -97,43 +123,137 @@ final class CpuAffinity {
         }
     }
 
+    /**
+     * Start loading the native calls on a thread of its own (a tenth of a second at a cold start),
+     * while the run is being set up; {@link #claim} waits for it.
+     */
+    static void prepare() {
+        Thread t = new Thread(CpuAffinity::unavailable, "khepera-sim core affinity");
+        t.setDaemon(true);
+        t.start();
+    }
+
     /** @return null when threads can be pinned here, else why not (for the docs and tests) */
     static String unavailable() {
         return Cores.WHY_NOT;
     }
 
     /**
-     * Claim a core for a run's threads: of the cores this process may use, one held by the fewest
-     * runs of this JVM, the calling thread's own on a tie. Give it back with {@link #release}.
+     * Claim a core for a run's threads, one no other run holds (see the class comment). Give it
+     * back with {@link #release}.
      *
-     * @return the core, or -1 when nothing is to be pinned
+     * @return the core, or -1 when the run's threads are not to be pinned
      */
     static int claim() {
         if (Cores.LIBC == null) {
             return -1;
         }
-        int here = Cores.LIBC.sched_getcpu();
-        synchronized (Cores.CLAIMS) {
-            int best = -1;
-            for (int cpu : Cores.ALLOWED) {
-                if (best < 0 || Cores.CLAIMS[cpu] < Cores.CLAIMS[best]
-                        || Cores.CLAIMS[cpu] == Cores.CLAIMS[best] && cpu == here) {
-                    best = cpu;
+        try {
+            int here = Cores.LIBC.sched_getcpu();
+            synchronized (Cores.CLAIMS) {
+                for (int pass = 0; pass < 2; pass++) {
+                    for (int cpu : Cores.ALLOWED) {
+                        if ((cpu == here) == (pass == 0) || Cores.CLAIMS[cpu] != null) {
+                            continue;
+                        }
+                        Claim c = lock(cpu);
+                        if (c != null) {
+                            Cores.CLAIMS[cpu] = c;
+                            return cpu;
+                        }
+                    }
                 }
             }
-            Cores.CLAIMS[best]++;
-            return best;
+        } catch (LinkageError | RuntimeException e) {
+            // Not worth failing a run over: its threads stay where the system puts them.
+        }
+        return -1;
+    }
+
+    /** The core's lock file, locked; a claim without a file where none can be written; null when another process holds it. */
+    private static Claim lock(int cpu) {
+        String user = System.getProperty("user.name", "user").replaceAll("[^A-Za-z0-9._-]", "_");
+        Path dir = Path.of("/dev/shm");
+        if (!Files.isDirectory(dir) || !Files.isWritable(dir)) {
+            dir = Path.of(System.getProperty("java.io.tmpdir"));
+        }
+        FileChannel ch = null;
+        try {
+            ch = FileChannel.open(dir.resolve("kheperasim-" + user + "-core-" + cpu + ".lock"),
+                    StandardOpenOption.CREATE, StandardOpenOption.WRITE);
+            FileLock lock = ch.tryLock();
+            if (lock == null) {
+                ch.close();
+                return null;
+            }
+            return new Claim(ch, lock);
+        } catch (OverlappingFileLockException e) {
+            close(ch);
+            return null;
+        } catch (IOException e) {
+            close(ch);
+            return new Claim(null, null);
         }
     }
 
-    /** A run whose threads were kept on {@code cpu} has ended. */
+    private static void close(FileChannel ch) {
+        if (ch != null) {
+            try {
+                ch.close();
+            } catch (IOException e) {
+                // nothing held
+            }
+        }
+    }
+
+    /**
+     * A run whose threads were kept on {@code cpu} has ended: every thread of the process still kept
+     * on that core alone is let free (left-behind controller threads, threads they created), then
+     * the core is given back.
+     */
     static void release(int cpu) {
-        if (cpu < 0) {
+        if (cpu < 0 || Cores.LIBC == null) {
             return;
         }
         synchronized (Cores.CLAIMS) {
-            Cores.CLAIMS[cpu] = StrictMath.max(0, Cores.CLAIMS[cpu] - 1);
+            Claim c = Cores.CLAIMS[cpu];
+            if (c == null) {
+                return;
+            }
+            try {
+                freeThreadsKeptOn(cpu);
+            } finally {
+                Cores.CLAIMS[cpu] = null;
+                close(c.channel);
+            }
         }
+    }
+
+    private static void freeThreadsKeptOn(int cpu) {
+        String only = String.valueOf(cpu);
+        try (java.util.stream.Stream<Path> tasks = Files.list(Path.of("/proc/self/task"))) {
+            for (Path task : (Iterable<Path>) tasks::iterator) {
+                if (only.equals(allowedList(task.resolve("status")))) {
+                    unpin(Long.parseLong(task.getFileName().toString()));
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            // A thread that ended meanwhile, or no /proc: nothing more can be done.
+        }
+    }
+
+    /** @return the {@code Cpus_allowed_list} of a {@code /proc} status file, or null */
+    static String allowedList(Path status) {
+        try {
+            for (String line : Files.readAllLines(status)) {
+                if (line.startsWith("Cpus_allowed_list:")) {
+                    return line.substring("Cpus_allowed_list:".length()).trim();
+                }
+            }
+        } catch (IOException e) {
+            // the thread has ended
+        }
+        return null;
     }
 
     /**
@@ -148,6 +268,32 @@ final class CpuAffinity {
         }
         long[] mask = new long[MASK_LONGS];
         mask[cpu >> 6] = 1L << (cpu & 63);
-        return Cores.LIBC.sched_setaffinity(0, new NativeLong(MASK_LONGS * 8L), mask) == 0;
+        try {
+            return Cores.LIBC.sched_setaffinity(0, MASK_BYTES, mask) == 0;
+        } catch (LinkageError | RuntimeException e) {
+            return false;
+        }
+    }
+
+    /** @return the calling thread's id in the operating system, or -1 when it cannot be told */
+    static long callingThreadId() {
+        try {
+            // "/proc/thread-self" links to "<pid>/task/<tid>".
+            return Long.parseLong(Files.readSymbolicLink(Path.of("/proc/thread-self")).getFileName().toString());
+        } catch (IOException | RuntimeException e) {
+            return -1;
+        }
+    }
+
+    /** Let thread {@code tid} of this process run on every core the process may use again (a hung controller's). */
+    static void unpin(long tid) {
+        if (Cores.LIBC == null || tid <= 0) {
+            return;
+        }
+        try {
+            Cores.LIBC.sched_setaffinity((int) tid, MASK_BYTES, Cores.ALLOWED_MASK.clone());
+        } catch (LinkageError | RuntimeException e) {
+            // it stays where it is
+        }
     }
 }

@@ -63,6 +63,9 @@ public final class Lockstep {
             byDriver.put(h, h);
             h.join(this);
         }
+        if (pinning()) {
+            CpuAffinity.prepare();
+        }
     }
 
     /**
@@ -102,7 +105,7 @@ public final class Lockstep {
      * @param stop asked whether to stop early (e.g. on SIGTERM); cheap and thread-safe
      */
     public void run(long endNanos, java.util.function.BooleanSupplier stop) {
-        if (!coreClaimed && !hosts.isEmpty() && !ThreadRunners.VIRTUAL) {
+        if (!coreClaimed && pinning()) {
             // Kept for the whole run, window chunks included: given back when the controllers stop.
             coreClaimed = true;
             turn.keepOn(CpuAffinity.claim());
@@ -171,14 +174,25 @@ public final class Lockstep {
 
     /** Stop every controller (at the end of a run); returns when they have unwound or been left behind. */
     public void stopAll() {
-        for (ControllerHost h : hosts) {
-            h.stop();
+        try {
+            for (ControllerHost h : hosts) {
+                h.stop();
+            }
+            for (StepHost s : steps) {
+                s.stop();
+            }
+        } finally {
+            CpuAffinity.release(turn.core());
+            turn.keepOn(-1);
         }
-        for (StepHost s : steps) {
-            s.stop();
-        }
-        CpuAffinity.release(turn.core());
-        turn.keepOn(-1);
+    }
+
+    /**
+     * Are the controllers' threads kept on one core (see {@link CpuAffinity})? Only where they hand
+     * the turn to each other: two thread-style controllers or more, on platform threads.
+     */
+    private boolean pinning() {
+        return hosts.size() >= 2 && !ThreadRunners.VIRTUAL;
     }
 
     /**
@@ -259,6 +273,8 @@ public final class Lockstep {
                 progressAt = now;
             } else if (now - progressAt > hangTimeoutNanos && turn.takeFrom(seat, owner)) {
                 host.hung(holder, (now - progressAt) / 1e9);
+                // Still running somewhere in a library call, perhaps for ever: not on the others' core.
+                Turn.free(seat);
                 return;
             }
         }

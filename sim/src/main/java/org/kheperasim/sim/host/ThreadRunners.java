@@ -12,7 +12,7 @@ import java.lang.reflect.Method;
  * <p>Only one thread of a run holds the turn at a time, so a controller's threads only ever hand
  * the turn to each other. Between platform threads each hand-over wakes a parked thread through
  * the operating system: 2 to 4 µs on a 2-core virtual machine when the run's threads keep to one
- * core ({@link CpuAffinity}, Linux), 15 to 60 µs when the woken thread's idle core must be woken
+ * core ({@link CpuAffinity}, Linux), 20 to 60 µs when the woken thread's idle core must be woken
  * too; between virtual threads it is a switch on the same carrier (under 1 µs). From Java 24 on a virtual thread that waits inside
  * {@code synchronized} code no longer holds its carrier (JEP 491), so student code that sleeps in a
  * synchronized method is as safe there as on a platform thread; before 24 it is not, and the

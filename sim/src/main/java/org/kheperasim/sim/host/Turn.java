@@ -42,6 +42,10 @@ final class Turn {
         private volatile boolean virtual;
         /** The core the seat's thread has kept itself on (see {@link CpuAffinity}), or -1; its own thread's. */
         private int pinnedTo = -1;
+        /** The core it last tried to keep to, or -1: a failed try is not repeated at every wait. */
+        private int pinTried = -1;
+        /** Its thread's id in the operating system, once pinned (to let it free again), else -1. */
+        private volatile long tid = -1;
 
         Seat(Thread thread) {
             this.thread = thread;
@@ -96,11 +100,21 @@ final class Turn {
     /** The calling thread, {@code me}'s, waits for this turn: first it moves to the turn's core, once. */
     void settle(Seat me) {
         int c = cpu;
-        if (c >= 0 && me.pinnedTo != c && !me.virtual) {
-            // Tried once per core: where the call fails the thread stays free, as without pinning.
-            CpuAffinity.pinCallingThread(c);
-            me.pinnedTo = c;
+        if (c >= 0 && me.pinTried != c && !me.virtual) {
+            // Tried once per core: where the call fails the thread stays free (and may spin), as without pinning.
+            me.pinTried = c;
+            if (CpuAffinity.pinCallingThread(c)) {
+                me.pinnedTo = c;
+                me.tid = CpuAffinity.callingThreadId();
+            } else {
+                me.pinnedTo = -1;
+            }
         }
+    }
+
+    /** Let {@code seat}'s thread run on every core again (a hung controller's, taken off the run but still running). */
+    static void free(Seat seat) {
+        CpuAffinity.unpin(seat.tid);
     }
 
     /** @return true when {@code seat} holds the turn */
