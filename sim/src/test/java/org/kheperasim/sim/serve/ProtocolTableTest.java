@@ -94,11 +94,19 @@ class ProtocolTableTest {
             assertEquals("g", c.ask("G,0,0"));
             assertEquals("j", c.ask("J,10,64,10,64"));
             long start = System.nanoTime();
-            long simStart = s.robot.timeNanos();
-            // The speed profile is watched in robot time (every 10 ms), which load cannot thin out.
+            // The speed profile is watched in robot time (every 10 ms), which load cannot thin out: the
+            // fastest speed, and when the wheels first turned and last turned.
             java.util.concurrent.atomic.AtomicInteger fastest = new java.util.concurrent.atomic.AtomicInteger();
-            s.robot.addListener(snap -> fastest.accumulateAndGet(snap.robots().get(0).speedLeft(), Math::max),
-                    10_000_000L);
+            java.util.concurrent.atomic.AtomicLong firstMoving = new java.util.concurrent.atomic.AtomicLong(-1);
+            java.util.concurrent.atomic.AtomicLong lastMoving = new java.util.concurrent.atomic.AtomicLong(-1);
+            s.robot.addListener(snap -> {
+                int speed = snap.robots().get(0).speedLeft();
+                fastest.accumulateAndGet(speed, Math::max);
+                if (speed != 0) {
+                    firstMoving.compareAndSet(-1, snap.timeNanos());
+                    lastMoving.set(snap.timeNanos());
+                }
+            }, 10_000_000L);
             assertEquals("c", c.ask("C,500,-500"));
             int[] k = values(c.ask("K"), "k", 6);
             assertEquals(0, k[0], "left not on target yet: " + Arrays.toString(k));
@@ -117,10 +125,11 @@ class ProtocolTableTest {
                 }
                 assertTrue(System.nanoTime() - start < 30e9, "the move ends: " + Arrays.toString(k));
             }
-            // In robot time, which a loaded machine cannot stretch (it can only make the polling
-            // of K see the end a little late): 500 pulses at most 10 pulses/10 ms, accelerating
-            // 64/256 pulse/10 ms per 10 ms: 0.4 s up (200 pulses), 0.1 s at 10 (100), 0.4 s down (200) = 0.9 s.
-            double seconds = (s.robot.timeNanos() - simStart) / 1e9;
+            // In robot time, from the robot's own snapshots, which a loaded machine cannot stretch (a
+            // client slowed by load only sees the end later): 500 pulses at most 10 pulses/10 ms,
+            // accelerating 64/256 pulse/10 ms per 10 ms: 0.4 s up (200 pulses), 0.1 s at 10 (100),
+            // 0.4 s down (200) = 0.9 s.
+            double seconds = (lastMoving.get() - firstMoving.get()) / 1e9;
             assertTrue(seconds > 0.75 && seconds < 1.5, "the trapezoid takes about 0.9 s of robot time (the move is"
                     + " updated every 10 ms and counts as done within half a pulse): " + seconds);
             assertTrue(maxSpeed <= 10, "E never reports more than the profile's maximum: " + maxSpeed);
