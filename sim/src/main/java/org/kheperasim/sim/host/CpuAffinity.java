@@ -40,7 +40,6 @@ final class CpuAffinity {
     static final String SWITCH = "kheperasim.pinTurns";
     /** {@code cpu_set_t}: 1,024 bits, as unsigned longs (so the bits are right on either byte order). */
     private static final int MASK_LONGS = 16;
-    private static final NativeLong MASK_BYTES = new NativeLong(MASK_LONGS * 8L);
 
     private CpuAffinity() {
     }
@@ -58,8 +57,13 @@ final class CpuAffinity {
     private record Claim(FileChannel channel, FileLock lock) {
     }
 
-    /** What the process may use, found once. */
+    /**
+     * What the process may use, found once. Everything of JNA's is here, not in the outer class: the
+     * first use of a JNA class loads its native library, which a run that pins nothing must not pay.
+     */
     private static final class Cores {
+        /** The mask's size for the calls (null where JNA did not load). */
+        static final NativeLong MASK_BYTES;
         static final LibC LIBC;
         /** The cores this process may run on, ascending; empty when pinning is off or impossible. */
         static final int[] ALLOWED;
@@ -72,6 +76,7 @@ final class CpuAffinity {
 
         static {
             LibC libc = null;
+            NativeLong size = null;
             int[] allowed = new int[0];
             String why = null;
             if ("false".equalsIgnoreCase(System.getProperty(SWITCH))) {
@@ -84,9 +89,10 @@ final class CpuAffinity {
                 Level was = jnaLog.getLevel();
                 jnaLog.setLevel(Level.OFF);
                 try {
+                    size = new NativeLong(MASK_LONGS * 8L);
                     libc = Native.load("c", LibC.class);
                     libc.sched_getcpu();
-                    if (libc.sched_getaffinity(0, MASK_BYTES, ALLOWED_MASK) != 0) {
+                    if (libc.sched_getaffinity(0, size, ALLOWED_MASK) != 0) {
                         why = "sched_getaffinity failed";
                     } else {
                         allowed = bits(ALLOWED_MASK);
@@ -102,6 +108,7 @@ final class CpuAffinity {
                     jnaLog.setLevel(was);
                 }
             }
+            MASK_BYTES = size;
             LIBC = allowed.length == 0 ? null : libc;
             ALLOWED = allowed;
             WHY_NOT = why;
@@ -269,7 +276,7 @@ final class CpuAffinity {
         long[] mask = new long[MASK_LONGS];
         mask[cpu >> 6] = 1L << (cpu & 63);
         try {
-            return Cores.LIBC.sched_setaffinity(0, MASK_BYTES, mask) == 0;
+            return Cores.LIBC.sched_setaffinity(0, Cores.MASK_BYTES, mask) == 0;
         } catch (LinkageError | RuntimeException e) {
             return false;
         }
@@ -291,7 +298,7 @@ final class CpuAffinity {
             return;
         }
         try {
-            Cores.LIBC.sched_setaffinity((int) tid, MASK_BYTES, Cores.ALLOWED_MASK.clone());
+            Cores.LIBC.sched_setaffinity((int) tid, Cores.MASK_BYTES, Cores.ALLOWED_MASK.clone());
         } catch (LinkageError | RuntimeException e) {
             // it stays where it is
         }
