@@ -135,7 +135,13 @@ final class CpuAffinity {
      * while the run is being set up; {@link #claim} waits for it.
      */
     static void prepare() {
-        Thread t = new Thread(CpuAffinity::unavailable, "khepera-sim core affinity");
+        Thread t = new Thread(() -> {
+            try {
+                unavailable();
+            } catch (LinkageError e) {
+                // claim() finds the same and pins nothing
+            }
+        }, "khepera-sim core affinity");
         t.setDaemon(true);
         t.start();
     }
@@ -152,10 +158,10 @@ final class CpuAffinity {
      * @return the core, or -1 when the run's threads are not to be pinned
      */
     static int claim() {
-        if (Cores.LIBC == null) {
-            return -1;
-        }
         try {
+            if (Cores.LIBC == null) {
+                return -1;
+            }
             int here = Cores.LIBC.sched_getcpu();
             synchronized (Cores.CLAIMS) {
                 for (int pass = 0; pass < 2; pass++) {
