@@ -40,6 +40,8 @@ final class CpuAffinity {
     static final String SWITCH = "kheperasim.pinTurns";
     /** {@code cpu_set_t}: 1,024 bits, as unsigned longs (so the bits are right on either byte order). */
     private static final int MASK_LONGS = 16;
+    /** Set once {@link #prepare} has started the loading: later runs find it done or under way. */
+    private static final java.util.concurrent.atomic.AtomicBoolean PREPARED = new java.util.concurrent.atomic.AtomicBoolean();
 
     private CpuAffinity() {
     }
@@ -135,6 +137,9 @@ final class CpuAffinity {
      * while the run is being set up; {@link #claim} waits for it.
      */
     static void prepare() {
+        if (PREPARED.getAndSet(true)) {
+            return;
+        }
         Thread t = new Thread(() -> {
             try {
                 unavailable();

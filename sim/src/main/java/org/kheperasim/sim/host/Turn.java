@@ -92,11 +92,6 @@ final class Turn {
         return cpu;
     }
 
-    /** @return the core {@code seat}'s thread has kept itself on, or -1 (for tests; read on any thread) */
-    static int pinnedCore(Seat seat) {
-        return seat.pinnedTo;
-    }
-
     /** The calling thread, {@code me}'s, waits for this turn: first it moves to the turn's core, once. */
     void settle(Seat me) {
         int c = cpu;

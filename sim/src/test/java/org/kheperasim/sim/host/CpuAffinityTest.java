@@ -24,7 +24,6 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
 
@@ -35,18 +34,7 @@ import org.kheperasim.sim.run.Simulation;
  */
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class CpuAffinityTest {
-    private static final Arena THREE = ArenaFormat.parse("""
-            khepera-arena 1
-            name three
-            size 1219.2 1219.2
-            wall 0 4 1219.2 4 8
-            wall 0 1215.2 1219.2 1215.2 8
-            wall 4 0 4 1219.2 8
-            wall 1215.2 0 1215.2 1219.2 8
-            robot 300 300 0
-            robot 900 300 90
-            robot 600 900 180
-            """, "three.arena");
+    private static final Arena THREE = org.kheperasim.testfixtures.Arenas.THREE;
 
     private static boolean ci() {
         return "true".equals(System.getenv("CI"));

@@ -17,18 +17,7 @@ import org.kheperasim.sim.host.ControllerStatus;
 /** The engine holds a list of robots: three controllers pass the turn between them deterministically. */
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class MultiRobotTest {
-    private static final Arena THREE = ArenaFormat.parse("""
-            khepera-arena 1
-            name three
-            size 1219.2 1219.2
-            wall 0 4 1219.2 4 8
-            wall 0 1215.2 1219.2 1215.2 8
-            wall 4 0 4 1219.2 8
-            wall 1215.2 0 1215.2 1219.2 8
-            robot 300 300 0
-            robot 900 300 90
-            robot 600 900 180
-            """, "three.arena");
+    private static final Arena THREE = org.kheperasim.testfixtures.Arenas.THREE;
 
     private static RunResult run(StringWriter trace, HostOptions options) {
         return Simulation.builder().arena(THREE).controller("Braitenberg").seed(21).seconds(60).trace(trace)
