@@ -165,4 +165,34 @@ class CpuAffinityTest {
         }
         assertEquals(3, children.size(), "the three threads the controllers created are alive");
     }
+
+    @Test
+    void aControllerTakenOffAsHungIsLetFreeWhileTheRunGoesOn() throws Exception {
+        assumeTrue(!ThreadRunners.VIRTUAL, "virtual controller threads are not pinned: they switch on their carriers");
+        System.clearProperty("kheperasim.test.hungTid");
+        System.clearProperty("kheperasim.test.hungPort");
+        List<ConsoleLine> console = new CopyOnWriteArrayList<>();
+        try {
+            // Robot 0 gets stuck in a library call once pinned; the two others watch its thread.
+            RunResult r = Simulation.builder().arena(THREE).controller("org.kheperasim.testcontrollers.HungWatcher")
+                    .robot(0, "org.kheperasim.testcontrollers.HungAfterPinning", null).trusted(true).seed(3).seconds(60)
+                    .hostOptions(HostOptions.defaults().withHangTimeout(TimeUnit.SECONDS.toNanos(1)))
+                    .console(console::add).run();
+            assertEquals(ControllerStatus.HUNG, r.robots().get(0).status(), "robot 0 is hung: " + console);
+        } finally {
+            org.kheperasim.testcontrollers.HungWatcher.letOut();
+        }
+        List<String> lines = console.stream().map(ConsoleLine::format).toList();
+        String pinned = lines.stream().filter(l -> l.contains("pinned ")).map(l -> l.substring(l.indexOf("pinned ") + 7))
+                .findFirst().orElseThrow(() -> new AssertionError("robot 0 reported its cores: " + lines));
+        if (!ci()) {
+            assumeTrue(pinned.matches("\\d+"), "every core is held by another run");
+        }
+        assertTrue(pinned.matches("\\d+"), "robot 0 was kept on one core before it hung: " + pinned);
+        // The watchers run on after the hung controller is taken off: it must be free by then, not
+        // only when the run ends.
+        List<String> reports = lines.stream().filter(l -> l.contains("HungWatcher: ")).toList();
+        assertEquals(2, reports.size(), "both watchers reported: " + lines);
+        assertTrue(reports.get(0).contains(": freed "), "the hung controller's thread stayed on core " + pinned + ": " + lines);
+    }
 }
