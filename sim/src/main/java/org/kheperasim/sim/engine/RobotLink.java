@@ -122,6 +122,25 @@ final class RobotLink {
         polling = false;
     }
 
+    /**
+     * A protocol client read the proximity sensors on the robot itself ({@code N}): with polling
+     * stopped, these are the values the robot last reported, and what a snapshot shows.
+     */
+    void reportedProximity(int[] values) {
+        reported(PROXIMITY, values);
+    }
+
+    /** As {@link #reportedProximity}, for the light sensors ({@code O}). */
+    void reportedLight(int[] values) {
+        reported(LIGHT, values);
+    }
+
+    private void reported(int k, int[] values) {
+        System.arraycopy(values, 0, visible[k], 0, visible[k].length);
+        visibleKey[k] = -1;
+        pending[k] = false;
+    }
+
     // ------------------------------------------------------------------ commands
 
     /** The controller asks for wheel speeds at {@code now}. */

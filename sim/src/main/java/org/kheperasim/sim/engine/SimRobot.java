@@ -228,16 +228,18 @@ public final class SimRobot {
         link.asked(left, right);
     }
 
-    /** Sample the proximity sensors where the robot is now. */
+    /** Sample the proximity sensors where the robot is now (a protocol client's {@code N}); snapshots show them. */
     void readProximityNow(int[] out) {
         sense.at(0);
         end.sampleProximity(out);
+        link.reportedProximity(out);
     }
 
-    /** Sample the light sensors where the robot is now. */
+    /** Sample the light sensors where the robot is now (a protocol client's {@code O}); snapshots show them. */
     void readLightNow(int[] out) {
         sense.at(0);
         end.sampleLight(out);
+        link.reportedLight(out);
     }
 
     /** A position move was started at {@code now}: the robot needs the engine from then on. */

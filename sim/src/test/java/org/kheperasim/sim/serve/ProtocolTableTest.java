@@ -1,5 +1,6 @@
 package org.kheperasim.sim.serve;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -8,6 +9,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.link.timing.LinkTiming;
+import org.kheperasim.sim.engine.RobotView;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
 
@@ -85,6 +87,21 @@ class ProtocolTableTest {
             assertEquals("l", c.ask("L,0,0"));
             assertEquals(2, s.robot.snapshot().robots().get(0).leds());
 
+        }
+    }
+
+    @Test
+    void theWorldsSnapshotShowsWhatTheServedRobotLastReported() throws Exception {
+        // The window's sensor panel draws a served robot from snapshots: it shows the values of the
+        // client's last N and O, not those the robot had before it was served.
+        try (Served s = new Served(WALL_AHEAD + "light 300 680\n", Settings.defaults(), 1); LineClient c = s.client()) {
+            int[] n = values(c.ask("N"), "n", 8);
+            int[] o = values(c.ask("O"), "o", 8);
+            RobotView seen = s.robot.snapshot().robots().get(0);
+            assertArrayEquals(n, seen.proximity(), "proximity: " + Arrays.toString(seen.proximity()));
+            assertArrayEquals(o, seen.light(), "light: " + Arrays.toString(seen.light()));
+            int[] again = values(c.ask("N"), "n", 8);
+            assertArrayEquals(again, s.robot.snapshot().robots().get(0).proximity(), "the next N replaces them");
         }
     }
 
