@@ -123,6 +123,7 @@ final class RunCommand implements Callable<Integer> {
     private void robots(Settings base, Simulation.Builder run) {
         Map<Integer, String> controllers = new TreeMap<>();
         Map<Integer, Settings> own = new TreeMap<>();
+        java.util.Set<String> given = new java.util.HashSet<>();
         for (String o : robotOptions) {
             int colon = o.indexOf(':');
             int eq = o.indexOf('=', colon + 1);
@@ -138,10 +139,21 @@ final class RunCommand implements Callable<Integer> {
             }
             String key = o.substring(colon + 1, eq).strip();
             String value = o.substring(eq + 1).strip();
+            if (!given.add(index + ":" + key)) {
+                throw new IllegalArgumentException("--robot '" + o + "': robot " + index + "'s " + key
+                        + " is given twice; give it once");
+            }
             if (key.equals("controller")) {
                 controllers.put(index, value);
+            } else if (Settings.wholeRun(key)) {
+                throw new IllegalArgumentException("--robot '" + o + "': " + key + " is one setting for the whole run,"
+                        + " not per robot; give it with --set " + key + "=" + value);
             } else {
-                own.put(index, own.getOrDefault(index, base).with(key, value));
+                try {
+                    own.put(index, own.getOrDefault(index, base).with(key, value));
+                } catch (IllegalArgumentException e) {
+                    throw new IllegalArgumentException("--robot '" + o + "': " + e.getMessage(), e);
+                }
             }
         }
         java.util.Set<Integer> robots = new java.util.TreeSet<>(controllers.keySet());
@@ -167,16 +179,21 @@ final class RunCommand implements Callable<Integer> {
         return summary(result, null);
     }
 
-    /** @param score the run's score, or null when the arena has no tasks @return the one-line result */
+    /**
+     * @param score the run's score, or null when the arena has no tasks
+     * @return the result: one line for a lone robot; with several, a line for the run and one per robot
+     */
     static String summary(RunResult result, Score score) {
-        RunResult.RobotResult r = result.first();
-        StringBuilder s = new StringBuilder(String.format(Locale.ROOT,
-                "%s in %s: %.1f s simulated in %.2f s (%.0fx real time); ended at (%.1f, %.1f) mm heading %.1f deg;"
-                        + " travelled %.2f m; %d collisions; visited %.1f%% of the floor",
+        boolean lone = result.robots().size() == 1;
+        StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "%s in %s: %.1f s simulated in %.2f s (%.0fx real time)",
                 simpleName(result.controller()), result.arena(), result.simulatedSeconds(), result.wallSeconds(),
-                result.realTimeFactor(), r.x(), r.y(), r.headingDeg(), r.distanceMm() / 1000, r.collisions(),
-                r.visitedPercent()));
-        s.append("; controller ").append(r.status().name().toLowerCase(Locale.ROOT));
+                result.realTimeFactor()));
+        if (lone) {
+            s.append("; ");
+            robot(s, result.first());
+        } else {
+            s.append("; ").append(result.robots().size()).append(" robots");
+        }
         if (result.caps() > 0) {
             s.append("; caps per region ").append(result.capsInRegions());
         }
@@ -186,7 +203,21 @@ final class RunCommand implements Callable<Integer> {
         if (result.traceSha256() != null) {
             s.append("; trace sha256 ").append(result.traceSha256());
         }
+        if (!lone) {
+            for (int i = 0; i < result.robots().size(); i++) {
+                RunResult.RobotResult r = result.robots().get(i);
+                s.append(System.lineSeparator()).append("  robot ").append(i).append(" (").append(r.name()).append("): ");
+                robot(s, r);
+            }
+        }
         return s.toString();
+    }
+
+    private static void robot(StringBuilder s, RunResult.RobotResult r) {
+        s.append(String.format(Locale.ROOT, "ended at (%.1f, %.1f) mm heading %.1f deg; travelled %.2f m; %d collisions;"
+                + " visited %.1f%% of the floor", r.x(), r.y(), r.headingDeg(), r.distanceMm() / 1000, r.collisions(),
+                r.visitedPercent()));
+        s.append("; controller ").append(r.status().name().toLowerCase(Locale.ROOT));
     }
 
     static String toJson(RunResult result) {

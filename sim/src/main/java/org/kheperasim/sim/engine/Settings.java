@@ -90,6 +90,15 @@ public final class Settings {
 
     /**
      * @param key a setting's name
+     * @return true for a setting that holds for the whole run, not for one robot of it: how the
+     *     engine advances time
+     */
+    public static boolean wholeRun(String key) {
+        return key.equals("engine.stepping");
+    }
+
+    /**
+     * @param key a setting's name
      * @param value its new value
      * @return settings with that one changed
      * @throws IllegalArgumentException naming the key, the value and what is allowed

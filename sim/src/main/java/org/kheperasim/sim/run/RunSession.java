@@ -153,8 +153,17 @@ public final class RunSession implements AutoCloseable {
 
     private static List<Class<?>> load(ControllerCatalog catalog, List<RobotSetup> setups) {
         List<Class<?>> types = new ArrayList<>(setups.size());
-        for (RobotSetup setup : setups) {
-            types.add(catalog.load(setup.controller()));
+        for (int i = 0; i < setups.size(); i++) {
+            String controller = setups.get(i).controller();
+            try {
+                types.add(catalog.load(controller));
+            } catch (org.kheperasim.api.spi.ControllerException e) {
+                if (i == 0 || controller.equals(setups.get(0).controller())) {
+                    throw e;
+                }
+                // A robot's own controller (--robot N:controller=..., or chosen in the window): say whose.
+                throw new org.kheperasim.api.spi.ControllerException("robot " + i + "'s controller: " + e.getMessage(), e);
+            }
         }
         return types;
     }

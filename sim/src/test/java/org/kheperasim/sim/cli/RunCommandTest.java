@@ -82,6 +82,40 @@ class RunCommandTest {
         assertTrue(err.contains("ArithmeticException"), err);
     }
 
+    private static Path threeRobots(Path dir) throws Exception {
+        Path arena = dir.resolve("three.arena");
+        Files.writeString(arena, "khepera-arena 1\nname three\nsize 1219.2 1219.2\nrobot 300 300 0\nrobot 900 300 90\n"
+                + "robot 600 900 180\n");
+        return arena;
+    }
+
+    @Test
+    void withSeveralRobotsTheResultHasALinePerRobotAndNamesTheOneThatFailed(@TempDir Path dir) throws Exception {
+        String arena = threeRobots(dir).toString();
+        assertEquals(1, main("run", "--arena", arena, "--controller", "Braitenberg", "--robot",
+                "2:controller=org.kheperasim.testcontrollers.Thrower", "--seconds", "5", "--seed", "3"));
+        String[] lines = out.strip().split("\\R");
+        int head = lines.length - 4;
+        assertTrue(lines[head].startsWith("Braitenberg in three: 5.0 s simulated in ") && lines[head].endsWith("; 3 robots"), out);
+        assertTrue(lines[head + 1].startsWith("  robot 0 (Braitenberg#0): ended at (") && lines[head + 1].endsWith("controller stopped"), out);
+        assertTrue(lines[head + 2].startsWith("  robot 1 (Braitenberg#1): ended at ("), out);
+        assertTrue(lines[head + 3].startsWith("  robot 2 (Thrower#2): ended at (") && lines[head + 3].endsWith("controller failed"), out);
+    }
+
+    @Test
+    void aWrongRobotOptionNamesTheRobotAndTheOption(@TempDir Path dir) throws Exception {
+        String arena = threeRobots(dir).toString();
+        assertEquals(2, main("run", "--arena", arena, "--controller", "Braitenberg", "--robot", "1:controller=WallFolower"));
+        assertTrue(err.contains("robot 1's controller: no controller named 'WallFolower'"), err);
+        assertEquals(2, main("run", "--arena", arena, "--controller", "Braitenberg", "--robot", "1:controller=WallFollower",
+                "--robot", "1:controller=Aggregation"));
+        assertTrue(err.contains("--robot '1:controller=Aggregation': robot 1's controller is given twice"), err);
+        assertEquals(2, main("run", "--arena", arena, "--controller", "Braitenberg", "--robot", "2:motor.left.calibraton=0.5"));
+        assertTrue(err.contains("--robot '2:motor.left.calibraton=0.5': unknown setting 'motor.left.calibraton'"), err);
+        assertEquals(2, main("run", "--arena", arena, "--controller", "Braitenberg", "--robot", "1:engine.stepping=tick"));
+        assertTrue(err.contains("engine.stepping is one setting for the whole run, not per robot; give it with --set"), err);
+    }
+
     @Test
     void benchPrintsSimulatedSecondsPerWallSecond() {
         assertEquals(0, main("bench", "--seconds", "20", "--runs", "1", "--warm-up", "0"));
