@@ -79,6 +79,7 @@ public final class MainWindow {
         files = new ArenaFileActions(frame, model, console, status, choices, prefs, () -> {
             runs.discard();
             arenaView.fit();
+            arenaOpened();
         });
         recordings = new RecordingActions(frame, model, console, status, choices, files, runs, serve,
                 player, feed, () -> {
@@ -112,6 +113,16 @@ public final class MainWindow {
                 + ". Press Start (F5). Draw with the palette; File > Open recording replays a run; Help > Quick start"
                 + " gets your own controller running in 15 minutes.");
         painter = new FramePainter(feed, player, replayBar, plot, sensorPanel, arenaView, console, status, runs, choices);
+    }
+
+    /** Another arena was opened: its robots are not the last arena's, so none keeps a controller of its own. */
+    private void arenaOpened() {
+        Arena arena = model.arena();
+        String own = robotControllers.describe(Integer.MAX_VALUE);
+        robotControllers.clear();
+        int n = arena.robots().size();
+        console.note("Opened arena " + arena.name() + " (" + n + (n == 1 ? " robot" : " robots") + "); every robot runs "
+                + choices.controllerName + (own.isEmpty() ? "" : " (the last arena's own choices, " + own + ", are dropped)"));
     }
 
     private void wireModel() {

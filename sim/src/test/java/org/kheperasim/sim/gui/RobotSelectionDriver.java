@@ -119,8 +119,56 @@ public final class RobotSelectionDriver {
             if (!met) {
                 fail("the two served robots, driven at each other by two clients, did not meet within 60 s");
             }
+            // The panel shows what the served robot (robot 1, selected) last reported to its client.
+            java.io.BufferedReader replies = new java.io.BufferedReader(new java.io.InputStreamReader(b.getInputStream(),
+                    java.nio.charset.StandardCharsets.US_ASCII));
+            b.getOutputStream().write("N\n".getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+            String reply = replies.readLine();
+            while (reply != null && !reply.startsWith("n,")) {
+                reply = replies.readLine();
+            }
+            String told = reply;
+            long until3 = System.nanoTime() + 30_000_000_000L;
+            String shown = null;
+            while (System.nanoTime() < until3) {
+                RobotView v = onEdt(w::shownRobot);
+                shown = v == null ? null : "n," + java.util.Arrays.stream(v.proximity()).mapToObj(String::valueOf)
+                        .collect(java.util.stream.Collectors.joining(","));
+                if (shown != null && shown.equals(told)) {
+                    break;
+                }
+                Thread.sleep(50);
+            }
+            if (told == null || !told.equals(shown)) {
+                fail("the sensor panel should show what robot 1 last told its client, " + told + "; it shows " + shown);
+            }
+            System.out.println("served robot 1 told its client " + told + "; the panel shows the same");
         }
         System.out.println("SERVE OK");
+
+        // Another arena: the robots of the last one kept their own controllers; the new one's do not.
+        SwingUtilities.invokeAndWait(() -> w.action("serve").actionPerformed(null));
+        Path other = out.resolve("other.arena");
+        java.nio.file.Files.writeString(other, java.nio.file.Files.readString(Path.of(args[1])).replaceFirst("(?m)^name .*$",
+                "name other"));
+        SwingUtilities.invokeAndWait(() -> {
+            w.openArena(other);
+            w.action("start").actionPerformed(null);
+        });
+        Snapshot fresh = null;
+        long until4 = System.nanoTime() + 60_000_000_000L;
+        while (System.nanoTime() < until4) {
+            fresh = w.runner() == null ? null : w.runner().latest();
+            if (fresh != null && fresh.timeSeconds() > 0.5) {
+                break;
+            }
+            Thread.sleep(20);
+        }
+        if (fresh == null || !fresh.robots().get(1).name().equals("Braitenberg#1")) {
+            fail("in another arena robot 1 should run the chosen Braitenberg, not the last arena's WallFollower: "
+                    + (fresh == null ? "no run" : fresh.robots().get(1).name()));
+        }
+        System.out.println("OTHER ARENA OK");
         SwingUtilities.invokeAndWait(() -> w.action("close").actionPerformed(null));
         System.exit(0);
     }
