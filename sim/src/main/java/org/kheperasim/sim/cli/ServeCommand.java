@@ -31,7 +31,7 @@ import picocli.CommandLine.Option;
 final class ServeCommand implements Callable<Integer> {
 
     @Option(names = "--arena", required = true, paramLabel = "FILE",
-            description = "an arena file, or a bundled arena: lab, maze, two-rooms; each of its robots is served on its own port (port, port+1, ...)")
+            description = "an arena file, or a bundled arena (see list); each of its robots is served on its own port (port, port+1, ...)")
     String arena;
 
     @Option(names = "--port", paramLabel = "N", defaultValue = "" + ProtocolServer.DEFAULT_PORT,
@@ -75,14 +75,27 @@ final class ServeCommand implements Callable<Integer> {
         if (!(idleTimeout >= 0 && idleTimeout <= 86_400)) {
             throw new IllegalArgumentException("--idle-timeout " + idleTimeout + " must lie in 0..86400 seconds (0 = never)");
         }
+        int count = a.robots().size();
+        if (count > 1 && port != 0 && (port < 0 || port + count - 1 > 65535)) {
+            throw new IllegalArgumentException("--port " + port + ": the arena's " + count + " robots need ports " + port
+                    + ".." + (port + count - 1) + ", which must lie in 1..65535; give a lower --port, or 0 for any free ports");
+        }
         ServedArena world = new ServedArena(a, settings, runSeed, speed);
         List<ServedRobot> robots = world.robots();
         List<ProtocolServer> servers = new ArrayList<>();
         List<PtyBridge> bridges = new ArrayList<>();
         try {
             for (int i = 0; i < robots.size(); i++) {
-                ProtocolServer server = ProtocolServer.start(robots.get(i), address, port == 0 ? 0 : port + i)
-                        .idleTimeout((long) (idleTimeout * 1000));
+                ProtocolServer server;
+                try {
+                    server = ProtocolServer.start(robots.get(i), address, port == 0 ? 0 : port + i);
+                } catch (java.io.IOException e) {
+                    if (robots.size() == 1) {
+                        throw e;
+                    }
+                    throw new java.io.IOException("robot " + i + " (--port " + port + " + " + i + "): " + e.getMessage(), e);
+                }
+                server.idleTimeout((long) (idleTimeout * 1000));
                 String who = robots.size() == 1 ? "" : "robot " + i + ": ";
                 server.addListener(e -> out.println(who + e.text()));
                 servers.add(server);

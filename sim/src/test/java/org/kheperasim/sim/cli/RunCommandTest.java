@@ -117,6 +117,12 @@ class RunCommandTest {
     }
 
     @Test
+    void servingSeveralRobotsSaysWhichPortsTheyNeed(@TempDir Path dir) throws Exception {
+        assertEquals(2, main("serve", "--arena", threeRobots(dir).toString(), "--port", "65534", "--seconds", "1"));
+        assertTrue(err.contains("--port 65534: the arena's 3 robots need ports 65534..65536, which must lie in 1..65535"), err);
+    }
+
+    @Test
     void benchPrintsSimulatedSecondsPerWallSecond() {
         assertEquals(0, main("bench", "--seconds", "20", "--runs", "1", "--warm-up", "0"));
         assertTrue(out.contains("warm-up: 1 run in "), out);
