@@ -13,6 +13,7 @@ import org.kheperasim.sim.arena.ArenaFiles;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.files.TextFiles;
+import org.kheperasim.sim.replay.ReplayFiles;
 import org.kheperasim.sim.run.EditLog;
 import org.kheperasim.sim.run.SettingsFile;
 import org.kheperasim.sim.run.Simulation;
@@ -38,7 +39,7 @@ final class VerifyCommand implements Callable<Integer> {
     Path recording;
 
     @Option(names = "--arena", paramLabel = "FILE",
-            description = "the arena the trace was recorded in (default: the bundled arena it names, or start.arena in a recording)")
+            description = "the arena the trace was recorded in (default: start.arena in a recording or beside the trace, the arena file of the same name beside it, or the bundled arena it names)")
     Path arenaFile;
 
     @Option(names = "--classpath", paramLabel = "PATHS", split = "[:;]",
@@ -89,14 +90,17 @@ final class VerifyCommand implements Callable<Integer> {
         return ExitCodes.FAILED;
     }
 
-    /** The recorded arena: given, the recording's start.arena, or the bundled one the trace names; its sha256 must match. */
+    /** The recorded arena: given, the recording's start.arena, the arena file beside the trace, or the bundled one the trace names; its sha256 must match. */
     private Arena arena(boolean folder, String recordedArena) {
         String[] nameAndSha = recordedArena.split(" sha256=", 2);
+        Path beside = folder ? null : ReplayFiles.arenaBeside(recording, nameAndSha[0], nameAndSha.length == 2 ? nameAndSha[1] : null);
         Arena a;
         if (arenaFile != null) {
             a = ArenaFiles.load(arenaFile, note -> { });
         } else if (folder && Files.isRegularFile(recording.resolve("start.arena"))) {
             a = ArenaFormat.load(recording.resolve("start.arena"));
+        } else if (beside != null) {
+            a = ArenaFiles.load(beside, note -> { });
         } else {
             a = ArenaFormat.resolve(nameAndSha[0]);
         }

@@ -15,8 +15,8 @@ import org.kheperasim.sim.trace.TraceFormatException;
 /**
  * Opens what can be replayed, recognised by its content: a run recording folder (the window's
  * "Save run recording": {@code start.arena}, {@code run.edits}, {@code run.trace}), a trace file
- * ({@code run --trace}; its arena is the {@code start.arena} beside it or the bundled arena it
- * names), or a robot-link recording of a real robot (drawn in an empty 4 × 4 ft arena).
+ * ({@code run --trace}; its arena is the {@code start.arena} or the arena file of the same name
+ * beside it, or the bundled arena it names), or a robot-link recording of a real robot (drawn in an empty 4 × 4 ft arena).
  */
 public final class ReplayFiles {
     /** Largest file read, bytes (a one-hour trace at 50 ms is about 11 MB a robot). */
@@ -65,13 +65,8 @@ public final class ReplayFiles {
         return new Replay(Replay.Kind.RECORDING, dir.toString(), arena, edits, r.robots(), r.caps(), notes);
     }
 
-    /** The arena of a bare trace: start.arena beside it, else the bundled arena its header names. */
+    /** The arena of a bare trace: an arena file beside it ({@link #arenaBeside}), else the bundled arena its header names. */
     private static Arena traceArena(Path trace, String text, List<String> notes) {
-        Path parent = trace.toAbsolutePath().getParent();
-        Path beside = parent == null ? null : parent.resolve("start.arena");
-        if (beside != null && Files.isRegularFile(beside)) {
-            return ArenaFiles.load(beside);
-        }
         String name = null;
         String sha = null;
         for (String line : text.lines().limit(40).toList()) {
@@ -81,19 +76,57 @@ public final class ReplayFiles {
                 sha = f.length > 1 && f[1].startsWith("sha256=") ? f[1].substring(7) : null;
             }
         }
+        Path beside = arenaBeside(trace, name, sha);
+        if (beside != null) {
+            notes.add(trace + ": arena " + beside.getFileName() + " beside it");
+            return ArenaFiles.load(beside);
+        }
         if (name != null && ArenaFormat.bundledNames().contains(name)) {
             Arena a = ArenaFormat.loadBundled(name);
             if (sha != null && !sha.equals(ArenaFormat.sha256(a))) {
                 notes.add(trace + ": the run used an arena named '" + name + "' that differs from the bundled one;"
-                        + " the walls drawn may not be the run's (put its start.arena beside the trace)");
+                        + " the walls drawn may not be the run's (put its arena file beside the trace)");
             } else {
                 notes.add(trace + ": arena '" + name + "' (bundled)");
             }
             return a;
         }
-        notes.add(trace + ": its arena '" + name + "' is not bundled and no start.arena lies beside it; drawing the"
-                + " path in an empty 4 x 4 ft arena");
+        notes.add(trace + ": its arena '" + name + "' is not bundled and neither start.arena nor " + name
+                + ".arena (the same arena) lies beside it; drawing the path in an empty 4 x 4 ft arena");
         return ArenaEdits.blank("unknown", 1219.2, 1219.2);
+    }
+
+    /**
+     * The arena file a trace was recorded in, found beside it: {@code start.arena} (a recording's
+     * copy), else {@code NAME.arena} for the arena the trace names, when its SHA-256 is the one
+     * the trace records (or the trace records none).
+     *
+     * @param trace the trace file
+     * @param name the arena's name in the trace's header, or null
+     * @param sha256 the arena's SHA-256 in the header, or null
+     * @return the file, or null when none lies beside the trace
+     */
+    public static Path arenaBeside(Path trace, String name, String sha256) {
+        Path parent = trace.toAbsolutePath().getParent();
+        if (parent == null) {
+            return null;
+        }
+        Path start = parent.resolve("start.arena");
+        if (Files.isRegularFile(start)) {
+            return start;
+        }
+        if (name == null || !name.matches("[A-Za-z0-9._-]+")) {
+            return null;
+        }
+        Path named = parent.resolve(name + ArenaFormat.EXTENSION);
+        if (!Files.isRegularFile(named)) {
+            return null;
+        }
+        try {
+            return sha256 == null || sha256.equals(ArenaFormat.sha256(ArenaFiles.load(named))) ? named : null;
+        } catch (RuntimeException e) {
+            return null;   // not a readable arena: as if none lay there
+        }
     }
 
     private static String read(Path file) {

@@ -54,6 +54,23 @@ class VerifyCommandTest {
     }
 
     @Test
+    void theArenaFileOfTheSameNameBesideATraceIsFoundWhenItIsTheRecordedOne() throws Exception {
+        Path arena = dir.resolve("three.arena");
+        String text = "khepera-arena 1\nname three\nsize 1219.2 1219.2\nlight 600 600\nrobot 300 300 0\nrobot 900 300 90\n";
+        Files.writeString(arena, text);
+        Path trace = dir.resolve("t.trace");
+        assertEquals(ExitCodes.OK, main("run", "--arena", arena.toString(), "--controller", "Braitenberg", "--seed", "2",
+                "--seconds", "3", "--quiet", "--trace", trace.toString()), err);
+        assertEquals(ExitCodes.OK, main("verify", trace.toString()), err);
+        assertTrue(out.startsWith("identical: "), out);
+        assertTrue(org.kheperasim.sim.replay.ReplayFiles.open(trace).arena().lights().size() == 1, "the replay draws its lamp");
+        // Another arena under that name (edited since) is not taken for the recorded one.
+        Files.writeString(arena, text.replace("light 600 600", "light 500 600"));
+        assertEquals(ExitCodes.BAD_INPUT, main("verify", trace.toString()));
+        assertTrue(err.contains("no arena file 'three'"), err);
+    }
+
+    @Test
     void aTraceRunsAgainIdentically() {
         Path trace = dir.resolve("run.trace");
         assertEquals(ExitCodes.OK, main("run", "--arena", "maze", "--controller", "WallFollower", "--seed", "4", "--seconds",
