@@ -27,11 +27,13 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
-/** {@code run}: one headless run, with a one-line result or a JSON object. */
+/** {@code run}: one headless run, with its result (a line per robot when there are several) or a JSON object. */
 @Command(name = "run", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Run a controller in an arena headless and print the result.",
-            "A controller fails the run (exit status 1) when it throws, hangs, breaks a rule (System.exit, a"
-                    + " forbidden call: see docs/controller-rules.md) or runs out of memory.",
+            "A controller fails the run (exit status 1) when it throws, hangs, breaks a rule while it runs"
+                    + " (System.exit, a shutdown hook, a wait nothing can end) or runs out of memory; a class that uses a"
+                    + " forbidden call (files, the network: see docs/controller-rules.md) is refused before the run"
+                    + " (exit status 2).",
             "With --trace the trace is written as the run goes (whole lines, at least every second), so a run"
                     + " that is killed leaves a readable trace; on SIGTERM (kill, Ctrl-C) the run stops, the trace is"
                     + " finished and the result line printed."})

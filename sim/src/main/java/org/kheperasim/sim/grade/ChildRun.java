@@ -74,8 +74,12 @@ final class ChildRun {
             throw new IOException("grading was interrupted", e);
         }
         double wall = (System.nanoTime() - start) / 1e9;
+        // The submission's class folder lies under --out: its files are named from there on, so that
+        // the report does not depend on where it was written (shards merge byte for byte into it).
+        String classes = sub.classpath().toAbsolutePath() + File.separator;
+        String given = sub.classpath() + File.separator;
         RunRecord r = ChildResults.record(job, sub.controller(), killed, lim.wallSeconds(), p.exitValue(),
-                out.text(5000), err.text(5000));
+                out.text(5000).replace(classes, "").replace(given, ""), err.text(5000).replace(classes, "").replace(given, ""));
         return new Outcome(r, wall, Files.isRegularFile(trace) ? trace : null);
     }
 

@@ -83,6 +83,11 @@ class GradeCommandTest {
     @Timeout(value = 240, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void twoShardsMergedMakeTheSameReportAsOneGrading() throws IOException {
         Path subs = copySubmissions(List.of("alice", "bob", "erin", "frank", "heidi"));
+        // A class refused at load: its report names the class file, under --out, which differs per shard.
+        Path kim = Files.createDirectories(subs.resolve("kim"));
+        Files.writeString(kim.resolve("Filer.java"), "import org.kheperasim.api.*;\n"
+                + "public class Filer extends Controller {\n"
+                + "    @Override protected void doWork() { new java.io.File(\"x\").delete(); sleepMillis(100); }\n}\n");
         String[] common = {"--submissions", subs.toString(), "--arenas", "maze", "lab", "--seeds", "2", "--seconds", "10",
             "--wall-limit", "90", "--heap-mb", "128"};
         Path whole = dir.resolve("whole");
@@ -100,8 +105,10 @@ class GradeCommandTest {
         for (String f : files) {
             assertArrayEquals(Files.readAllBytes(whole.resolve(f)), Files.readAllBytes(merged.resolve(f)), f);
         }
-        assertEquals(10, ReportFiles.read(s1.resolve("results.json")).runs().size());
-        assertEquals(20, ReportFiles.read(merged.resolve("results.json")).runs().size());
+        assertEquals(12, ReportFiles.read(s1.resolve("results.json")).runs().size());
+        List<RunRecord> all = ReportFiles.read(merged.resolve("results.json")).runs();
+        assertEquals(24, all.size());
+        assertTrue(byStudent(all, "kim").detail().contains("uses java.io.File"), byStudent(all, "kim").detail());
     }
 
     private static RunRecord byStudent(List<RunRecord> runs, String student) {
