@@ -29,7 +29,9 @@ final class ChildResults {
                     RunStatus s = ofController(String.valueOf(robot.get("controllerStatus")));
                     if (s != RunStatus.OK) {
                         status = s;
-                        failure = robot.get("failure") == null ? null : String.valueOf(robot.get("failure"));
+                        // What it threw; for the other faults the run's error line, read below without
+                        // what depends on the machine (the JSON's text keeps it).
+                        failure = s != RunStatus.THREW || robot.get("failure") == null ? null : String.valueOf(robot.get("failure"));
                         break;
                     }
                 }

@@ -34,6 +34,7 @@ public final class ControllerHost implements HostedController {
     private volatile boolean detached;
     private boolean stopAnnounced;
     private volatile Throwable failure;
+    private volatile String lastError;
     /** How the controller's life ends once it has unwound, when a fault decided it; else null. */
     private volatile ControllerStatus pendingEnd;
     private final StrayThreads strays = new StrayThreads(this);
@@ -53,7 +54,8 @@ public final class ControllerHost implements HostedController {
     public ControllerHost(SimRobot robot, Class<?> type, ConsoleSink console, HostOptions options) {
         this.robot = robot;
         this.type = type;
-        this.name = type.getSimpleName();
+        // The robot's name: the simple class name alone, and with its index (Name#3) when the arena has several.
+        this.name = robot.name();
         this.console = console;
         this.clock = new ControllerClock(this, threads, robot.model().link().apiCostNanos(), options.jitterMaxMicros());
         SimulatedRobotPort port = new SimulatedRobotPort(robot, clock);
@@ -82,7 +84,7 @@ public final class ControllerHost implements HostedController {
         controller.setUncaughtExceptionHandler((t, e) -> ended(e));
     }
 
-    /** @return the controller's simple class name */
+    /** @return the controller's name in messages: its simple class name, with its robot's index when there are several (Name#3) */
     public String name() {
         return name;
     }
@@ -401,6 +403,14 @@ public final class ControllerHost implements HostedController {
 
     /** A line for the console, stamped with the controller's simulated time. */
     void say(ConsoleLine.Kind kind, String text) {
+        if (kind == ConsoleLine.Kind.ERROR) {
+            lastError = text;
+        }
         console.accept(new ConsoleLine(clock.now(), name, kind, text));
+    }
+
+    @Override
+    public String lastError() {
+        return lastError;
     }
 }

@@ -29,6 +29,7 @@ public final class StepHost implements HostedController, PortClock {
     private final StepClock clock = new StepClock(this);
     private ControllerStatus status = ControllerStatus.NOT_STARTED;
     private Throwable failure;
+    private String lastError;
     private long wake;
     private long now;
     private volatile boolean stepping;
@@ -48,7 +49,8 @@ public final class StepHost implements HostedController, PortClock {
     public StepHost(SimRobot robot, Class<?> type, ConsoleSink console, HostOptions options) {
         this.robot = robot;
         this.type = type;
-        this.name = type.getSimpleName();
+        // The robot's name: the simple class name alone, and with its index (Name#3) when the arena has several.
+        this.name = robot.name();
         this.console = console;
         this.apiCostNanos = robot.model().link().apiCostNanos();
         this.hangTimeoutNanos = options.hangTimeoutNanos();
@@ -215,6 +217,14 @@ public final class StepHost implements HostedController, PortClock {
 
     @Override
     public void say(ConsoleLine.Kind kind, String text) {
+        if (kind == ConsoleLine.Kind.ERROR) {
+            lastError = text;
+        }
         console.accept(new ConsoleLine(now, name, kind, text));
+    }
+
+    @Override
+    public String lastError() {
+        return lastError;
     }
 }

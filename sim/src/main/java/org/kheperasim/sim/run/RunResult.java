@@ -36,7 +36,8 @@ public record RunResult(long seed, String arena, String controller, double simul
      * @param collisions times a move was stopped by an obstacle
      * @param visitedPercent percentage of floor cells the body covered
      * @param status how the controller ended
-     * @param failure what it threw, or null
+     * @param failure what it threw or, when it failed otherwise (hung, broke a rule, ran out of heap), the
+     *     error reported; null when it did not fail
      * @param regionsEntered named regions the robot's centre entered, with the first time, s, in arena order
      */
     public record RobotResult(String name, double x, double y, double headingDeg, double distanceMm, int collisions,

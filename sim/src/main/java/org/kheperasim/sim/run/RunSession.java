@@ -336,7 +336,7 @@ public final class RunSession implements AutoCloseable {
             HostedController h = hosts.get(i);
             results.add(new RunResult.RobotResult(r.name(), r.x(), r.y(), r.headingDeg(), r.distanceTravelledMm(),
                     r.collisions(), r.visitedPercent(), h.status(),
-                    h.failure() == null ? null : h.failure().toString(), r.regionsEntered()));
+                    failure(h), r.regionsEntered()));
         }
         return new RunResult(seed, arena.name(), controllerClass, engine.timeNanos() / 1e9, wallSeconds,
                 traceSha256(), results, engine.world().capsInRegions(), engine.world().capCount());
@@ -345,5 +345,13 @@ public final class RunSession implements AutoCloseable {
     /** @return the first robot's controller status */
     public ControllerStatus status() {
         return hosts.isEmpty() ? ControllerStatus.NOT_STARTED : hosts.get(0).status();
+    }
+
+    /** What a robot's controller threw or, when it failed otherwise (hung, broke a rule, ran out of heap), why; null when fine. */
+    private static String failure(HostedController h) {
+        if (h.failure() != null) {
+            return h.failure().toString();
+        }
+        return h.status().failed() ? h.lastError() : null;
     }
 }

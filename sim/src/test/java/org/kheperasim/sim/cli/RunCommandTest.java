@@ -100,6 +100,19 @@ class RunCommandTest {
         assertTrue(lines[head + 1].startsWith("  robot 0 (Braitenberg#0): ended at (") && lines[head + 1].endsWith("controller stopped"), out);
         assertTrue(lines[head + 2].startsWith("  robot 1 (Braitenberg#1): ended at ("), out);
         assertTrue(lines[head + 3].startsWith("  robot 2 (Thrower#2): ended at (") && lines[head + 3].endsWith("controller failed"), out);
+        assertTrue(err.contains("] ERROR Thrower#2: threw java.lang.ArithmeticException"), "the error names the robot: " + err);
+    }
+
+    @Test
+    void theJsonSaysWhyEachRobotFailed(@TempDir Path dir) throws Exception {
+        // Exiter calls System.exit after 20 simulated seconds.
+        String arena = threeRobots(dir).toString();
+        assertEquals(1, main("run", "--arena", arena, "--controller", "Braitenberg", "--robot",
+                "1:controller=org.kheperasim.testcontrollers.Exiter", "--robot", "2:controller=org.kheperasim.testcontrollers.Thrower",
+                "--seconds", "25", "--seed", "3", "--json"));
+        assertTrue(out.contains("\"name\":\"Braitenberg#0\",") && out.contains("\"controllerStatus\":\"stopped\",\"failure\":null}"), out);
+        assertTrue(out.contains("\"controllerStatus\":\"broke_rule\",\"failure\":\"controller Exiter#1 (org.kheperasim.testcontrollers.Exiter) called System.exit("), out);
+        assertTrue(out.contains("\"controllerStatus\":\"failed\",\"failure\":\"java.lang.ArithmeticException"), out);
     }
 
     @Test
