@@ -67,7 +67,8 @@ public final class ControllerHost implements HostedController {
         constructing = Thread.currentThread();
         Thread created;
         try {
-            created = Controllers.instantiate(type, new CurrentRobotState(port), new MessagePasser(port));
+            created = ConstructionWatch.construct(name, type, options.hangTimeoutNanos(),
+                    () -> Controllers.instantiate(type, new CurrentRobotState(port), new MessagePasser(port)));
         } finally {
             constructing = null;
             SimClock.bind(outer);

@@ -184,9 +184,28 @@ public final class SimClock {
         }
     }
 
+    /** Threads whose construction of a controller overran (see {@link ConstructionWatch}): their next checkpoint throws. */
+    private static final java.util.Set<Thread> STOP_CONSTRUCTING = java.util.concurrent.ConcurrentHashMap.newKeySet();
+
+    /** The construction of a controller on {@code thread} overran: stop it at its next checkpoint. */
+    static void stopConstructing(Thread thread) {
+        STOP_CONSTRUCTING.add(thread);
+        stopRequested();
+    }
+
+    /** The construction on {@code thread} that {@link #stopConstructing} stopped has ended. */
+    static void constructed(Thread thread) {
+        if (STOP_CONSTRUCTING.remove(thread)) {
+            stopSettled();
+        }
+    }
+
     /** Inserted at every loop back-edge of controller code: lets a runaway loop be stopped. */
     public static void checkpoint() {
         if (stopsPending != 0) {
+            if (!STOP_CONSTRUCTING.isEmpty() && STOP_CONSTRUCTING.contains(Thread.currentThread())) {
+                throw new ControllerStoppedError("the controller's construction ran too long");
+            }
             Clock c = CURRENT.get();
             if (c != null) {
                 c.checkpoint();

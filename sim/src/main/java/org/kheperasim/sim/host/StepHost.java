@@ -17,7 +17,7 @@ import org.kheperasim.sim.engine.SimRobot;
  * stopped); one that sleeps breaks the step contract; one that runs for the hang timeout of real
  * time without returning is stopped at its next loop by the {@link StepWatchdog}.
  */
-public final class StepHost implements HostedController, PortClock {
+public final class StepHost implements HostedController, PortClock, StepWatchdog.Watched {
     private final SimRobot robot;
     private final Class<?> type;
     private final String name;
@@ -55,7 +55,8 @@ public final class StepHost implements HostedController, PortClock {
         this.apiCostNanos = robot.model().link().apiCostNanos();
         this.hangTimeoutNanos = options.hangTimeoutNanos();
         SimulatedRobotPort port = new SimulatedRobotPort(robot, this);
-        this.controller = Controllers.instantiateStep(type, new CurrentRobotState(port), new MessagePasser(port));
+        this.controller = ConstructionWatch.construct(name, type, hangTimeoutNanos,
+                () -> Controllers.instantiateStep(type, new CurrentRobotState(port), new MessagePasser(port)));
         this.periodNanos = TimeUnit.MILLISECONDS.toNanos(controller.period());
     }
 
@@ -133,7 +134,8 @@ public final class StepHost implements HostedController, PortClock {
     }
 
     /** The watchdog's look: a step running for the hang timeout is stopped at its next loop checkpoint. */
-    boolean overdue(long nowNanos) {
+    @Override
+    public boolean overdue(long nowNanos) {
         if (stepping && !hung && nowNanos - stepStartedAt > hangTimeoutNanos) {
             // Told before the step is stopped, so the message comes before the run's end.
             say(ConsoleLine.Kind.ERROR, String.format(java.util.Locale.ROOT, "controller %s (%s): step() did not return"

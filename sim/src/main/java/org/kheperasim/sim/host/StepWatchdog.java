@@ -7,29 +7,37 @@ import java.util.Set;
 import java.util.WeakHashMap;
 
 /**
- * Watches the steps that run inline: a step controller's {@code step()} runs on the thread that
- * holds the turn (often the run's owner, which cannot watch itself), so one daemon thread for the
- * whole JVM looks at the step hosts every 100 ms of real time and has an overdue step stopped. A host
- * is watched from its first step to its end, not registered at every step (a swarm makes thousands
- * of steps a second); one that is dropped without being stopped is forgotten with it.
+ * Watches what controller code runs on a thread that cannot watch itself: a step controller's
+ * {@code step()}, inline on the thread that holds the turn (often the run's owner), and a
+ * controller's construction (its constructor and static initializers, on the thread building the
+ * run). One daemon thread for the whole JVM looks at them every 100 ms of real time and has an
+ * overdue one stopped. A step host is watched from its first step to its end, not registered at
+ * every step (a swarm makes thousands of steps a second); one that is dropped without being stopped
+ * is forgotten with it.
  */
 final class StepWatchdog {
-    private static final Set<StepHost> RUNNING = Collections.synchronizedSet(Collections.newSetFromMap(new WeakHashMap<>()));
+    /** Something the watchdog looks at. */
+    interface Watched {
+        /** @param nowNanos {@link System#nanoTime()} now @return true when it was found overdue (and is being stopped) */
+        boolean overdue(long nowNanos);
+    }
+
+    private static final Set<Watched> RUNNING = Collections.synchronizedSet(Collections.newSetFromMap(new WeakHashMap<>()));
     private static final long PERIOD_MILLIS = 100;
     private static Thread watcher;
 
     private StepWatchdog() {
     }
 
-    static void watch(StepHost host) {
-        RUNNING.add(host);
+    static void watch(Watched w) {
+        RUNNING.add(w);
         if (watcher == null) {
             start();
         }
     }
 
-    static void unwatch(StepHost host) {
-        RUNNING.remove(host);
+    static void unwatch(Watched w) {
+        RUNNING.remove(w);
     }
 
     private static synchronized void start() {
@@ -44,12 +52,12 @@ final class StepWatchdog {
                     return;
                 }
                 long now = System.nanoTime();
-                List<StepHost> hosts;
+                List<Watched> watched;
                 synchronized (RUNNING) {
-                    hosts = new ArrayList<>(RUNNING);
+                    watched = new ArrayList<>(RUNNING);
                 }
-                for (StepHost h : hosts) {
-                    h.overdue(now);
+                for (Watched w : watched) {
+                    w.overdue(now);
                 }
             }
         }, "khepera-step-watchdog");

@@ -8,7 +8,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -60,6 +59,14 @@ class HostileControllerTest {
         {"Clockwatcher", "print(\"now \" + java.time.Instant.now()); sleepMillis(1000);"},
     };
 
+    /** Whole classes: controllers whose construction never returns. */
+    private static final String[][] CLASSES = {
+        {"CtorLooper", "public class CtorLooper extends Controller {\n    static volatile long n;\n"
+            + "    public CtorLooper() { while (n >= 0) { n++; } }\n    @Override protected void doWork() { sleepMillis(100); }\n}\n"},
+        {"InitLooper", "public class InitLooper extends StepController {\n    static volatile long n;\n"
+            + "    static { while (n >= 0) { n++; } }\n    @Override protected void step() { setSpeeds(1, 1); }\n}\n"},
+    };
+
     @BeforeAll
     static void compile() throws IOException {
         classes = dir.resolve("classes");
@@ -73,6 +80,11 @@ class HostileControllerTest {
                     + "    static final String TARGET = \"" + outside.toString().replace("\\", "\\\\") + "\";\n"
                     + "    boolean started;\n\n"
                     + "    @Override\n    protected void doWork() {\n        " + s[1] + "\n    }\n}\n");
+            files.add(f.toString());
+        }
+        for (String[] c : CLASSES) {
+            Path f = dir.resolve(c[0] + ".java");
+            Files.writeString(f, "import org.kheperasim.api.*;\n\n" + c[1]);
             files.add(f.toString());
         }
         JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
@@ -103,6 +115,17 @@ class HostileControllerTest {
         Outcome o = run(controller, 10);
         assertEquals(ControllerStatus.BROKE_RULE, o.result.first().status(), controller + ": " + o.text());
         assertTrue(o.text().contains(named), controller + " names the fault '" + named + "': " + o.text());
+    }
+
+    @Test
+    void aConstructorOrStaticInitializerThatNeverReturnsIsStoppedAndNamed() {
+        for (String c : List.of("CtorLooper", "InitLooper")) {
+            ControllerException e = assertThrows(ControllerException.class, () -> Simulation.builder().arena("lab")
+                    .classpath(List.of(classes)).controller(c).seed(1).seconds(1)
+                    .hostOptions(org.kheperasim.sim.host.HostOptions.defaults().withHangTimeout(500_000_000L)).run(), c);
+            assertTrue(e.getMessage().contains("controller " + c + " (" + c + ") was not constructed: its constructor or a"
+                    + " static initializer ran for 0.5 s of real time without returning"), e.getMessage());
+        }
     }
 
     @Test
@@ -152,7 +175,7 @@ class HostileControllerTest {
 
     @Test
     void threadsAControllerStartsEndWithTheRunAndCatchAllLoopsStop() throws InterruptedException {
-        int before = ManagementFactory.getThreadMXBean().getThreadCount();
+        java.util.Set<Thread> before = Thread.getAllStackTraces().keySet();
         Outcome spinner = run("Spinner", 5);
         Outcome swallower = run("Swallower", 5);
         assertEquals(ControllerStatus.STOPPED, swallower.result.first().status(), swallower.text());
@@ -164,15 +187,24 @@ class HostileControllerTest {
         assertThreadsBackTo(before, "after the runs");
     }
 
-    /** The JVM's thread count falls back to {@code before} (generous: threads take a moment to end). */
-    private static void assertThreadsBackTo(int before, String when) throws InterruptedException {
+    /**
+     * Daemon threads that live as long as the JVM once started, whichever test starts them first: the
+     * simulator's watchdog of constructions and steps, JNA's cleaner, the JDK's process reaper.
+     */
+    private static final java.util.Set<String> SERVICE_THREADS = java.util.Set.of("khepera-step-watchdog", "JNA Cleaner",
+            "process reaper");
+
+    /** Every thread started since {@code before} has ended, but the JVM's service threads (generous: threads take a moment to end). */
+    private static void assertThreadsBackTo(java.util.Set<Thread> before, String when) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-        int after;
+        List<String> left;
         do {
             Thread.sleep(50);
-            after = ManagementFactory.getThreadMXBean().getThreadCount();
-        } while (after > before && System.nanoTime() < deadline);
-        assertTrue(after <= before, "threads back to " + before + " " + when + ", now " + after);
+            left = Thread.getAllStackTraces().keySet().stream()
+                    .filter(t -> !before.contains(t) && !(t.isDaemon() && SERVICE_THREADS.contains(t.getName())))
+                    .map(Thread::getName).toList();
+        } while (!left.isEmpty() && System.nanoTime() < deadline);
+        assertTrue(left.isEmpty(), "threads still alive " + when + ": " + left);
     }
 
     /**
@@ -182,7 +214,7 @@ class HostileControllerTest {
      */
     @Test
     void inAWindowSessionTheFaultIsNamedAndTheWindowsRunGoesOn() throws Exception {
-        int before = ManagementFactory.getThreadMXBean().getThreadCount();
+        java.util.Set<Thread> before = Thread.getAllStackTraces().keySet();
         for (String[] c : new String[][] {{"Exiter", "BROKE_RULE"}, {"Halter", "BROKE_RULE"},
             {"ExitByReference", "BROKE_RULE"}, {"WaitForever", "BROKE_RULE"}, {"Waiter", "RUNNING"},
             {"Parker", "RUNNING"}, {"Spinner", "HUNG"}, {"Swallower", "RUNNING"}}) {
