@@ -62,9 +62,9 @@ public final class WsuControllerStyle implements ControllerStyle {
         try {
             controller = (RobotController) noArgConstructor(type).newInstance();
         } catch (InvocationTargetException e) {
-            Throwable cause = e.getCause();
-            throw new ControllerException("The constructor of controller " + type.getName() + " threw " + cause
-                    + "; fix the constructor (see the cause below)", cause);
+            throw org.kheperasim.api.spi.Controllers.constructorThrew(type, e.getCause());
+        } catch (ExceptionInInitializerError e) {
+            throw org.kheperasim.api.spi.Controllers.initializerThrew(type, e);
         } catch (ReflectiveOperationException e) {
             throw new ControllerException("Controller " + type.getName() + " could not be created: " + e
                     + "; make the class and its constructor public", e);

@@ -90,9 +90,9 @@ public final class Controllers {
                 ControllerBinding.bind(null);
             }
         } catch (InvocationTargetException e) {
-            Throwable cause = e.getCause();
-            throw new ControllerException("The constructor of controller " + type.getName() + " threw "
-                    + cause + "; fix the constructor (see the cause below)", cause);
+            throw constructorThrew(type, e.getCause());
+        } catch (ExceptionInInitializerError e) {
+            throw initializerThrew(type, e);
         } catch (ReflectiveOperationException e) {
             throw new ControllerException("Controller " + type.getName() + " could not be created: " + e
                     + "; make the class and its constructor public", e);
@@ -131,9 +131,9 @@ public final class Controllers {
                 ControllerBinding.bind(null);
             }
         } catch (InvocationTargetException e) {
-            Throwable cause = e.getCause();
-            throw new ControllerException("The constructor of controller " + type.getName() + " threw "
-                    + cause + "; fix the constructor (see the cause below)", cause);
+            throw constructorThrew(type, e.getCause());
+        } catch (ExceptionInInitializerError e) {
+            throw initializerThrew(type, e);
         } catch (ReflectiveOperationException e) {
             throw new ControllerException("Controller " + type.getName() + " could not be created: " + e
                     + "; make the class and its constructor public", e);
@@ -218,5 +218,38 @@ public final class Controllers {
         } catch (NoSuchMethodException | RuntimeException e) {
             return null;
         }
+    }
+
+    /**
+     * @param type a controller class
+     * @param cause what its constructor threw
+     * @return the error for the user: what was thrown, where in the controller's code, and the fix
+     */
+    public static ControllerException constructorThrew(Class<?> type, Throwable cause) {
+        return new ControllerException("The constructor of controller " + type.getName() + " threw " + cause
+                + where(type, cause) + "; fix the constructor", cause);
+    }
+
+    /**
+     * @param type a controller class
+     * @param e what initialising it threw
+     * @return the error for the user, as {@link #constructorThrew}
+     */
+    public static ControllerException initializerThrew(Class<?> type, ExceptionInInitializerError e) {
+        Throwable cause = e.getCause() != null ? e.getCause() : e;
+        return new ControllerException("A static initializer of controller " + type.getName() + " threw " + cause
+                + where(type, cause) + "; fix the initialization of its static fields", cause);
+    }
+
+    /** @return where in the controller's own code {@code t} was thrown, e.g. " at Avoider.java:12", or "" */
+    private static String where(Class<?> type, Throwable t) {
+        for (StackTraceElement e : t.getStackTrace()) {
+            String cls = e.getClassName();
+            if (cls.equals(type.getName()) || cls.startsWith(type.getName() + "$")) {
+                return e.getFileName() == null ? " in " + cls + "." + e.getMethodName()
+                        : " at " + e.getFileName() + ":" + e.getLineNumber();
+            }
+        }
+        return "";
     }
 }

@@ -59,8 +59,13 @@ class HostileControllerTest {
         {"Clockwatcher", "print(\"now \" + java.time.Instant.now()); sleepMillis(1000);"},
     };
 
-    /** Whole classes: controllers whose construction never returns. */
+    /** Whole classes: controllers whose construction throws or never returns. */
     private static final String[][] CLASSES = {
+        {"InitThrower", "public class InitThrower extends Controller {\n    static final int V = Integer.parseInt(\"x\");\n"
+            + "    @Override protected void doWork() { sleepMillis(V); }\n}\n"},
+        {"CtorThrower", "public class CtorThrower extends StepController {\n"
+            + "    public CtorThrower() { throw new IllegalStateException(\"no calibration\"); }\n"
+            + "    @Override protected void step() { setSpeeds(1, 1); }\n}\n"},
         {"CtorLooper", "public class CtorLooper extends Controller {\n    static volatile long n;\n"
             + "    public CtorLooper() { while (n >= 0) { n++; } }\n    @Override protected void doWork() { sleepMillis(100); }\n}\n"},
         {"InitLooper", "public class InitLooper extends StepController {\n    static volatile long n;\n"
@@ -115,6 +120,16 @@ class HostileControllerTest {
         Outcome o = run(controller, 10);
         assertEquals(ControllerStatus.BROKE_RULE, o.result.first().status(), controller + ": " + o.text());
         assertTrue(o.text().contains(named), controller + " names the fault '" + named + "': " + o.text());
+    }
+
+    @Test
+    void aConstructorOrStaticInitializerThatThrowsIsNamedWithItsLine() {
+        ControllerException init = assertThrows(ControllerException.class, () -> run("InitThrower", 1));
+        assertTrue(init.getMessage().startsWith("A static initializer of controller InitThrower threw"
+                + " java.lang.NumberFormatException: For input string: \"x\" at InitThrower.java:4;"), init.getMessage());
+        ControllerException ctor = assertThrows(ControllerException.class, () -> run("CtorThrower", 1));
+        assertTrue(ctor.getMessage().startsWith("The constructor of controller CtorThrower threw"
+                + " java.lang.IllegalStateException: no calibration at CtorThrower.java:4;"), ctor.getMessage());
     }
 
     @Test
