@@ -6,6 +6,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.kheperasim.link.tool.BundledControllers;
 import org.kheperasim.link.tool.CliNumbers;
+import org.kheperasim.link.tool.ExitCodes;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Cap;
@@ -33,6 +34,10 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--controller", defaultValue = "Braitenberg", completionCandidates = BundledControllers.class,
             description = "a bundled controller (${COMPLETION-CANDIDATES}) or a class name (default: ${DEFAULT-VALUE})")
     String controller;
+
+    @Option(names = "--classpath", paramLabel = "PATHS", split = "[:;]",
+            description = "folders and jars with compiled controllers (for your own --controller)")
+    List<java.nio.file.Path> classpath = new ArrayList<>();
 
     @Option(names = "--seconds", defaultValue = "600", converter = CliNumbers.PositiveSeconds.class, description = "simulated seconds per run (default: ${DEFAULT-VALUE})")
     double seconds;
@@ -76,7 +81,10 @@ final class BenchCommand implements Callable<Integer> {
         long warmStart = System.nanoTime();
         int warmRuns = 0;
         do {
-            run(seed - 1);
+            RunResult r = run(seed - 1);
+            if (warmRuns == 0 && failed(r)) {
+                return ExitCodes.FAILED;
+            }
             warmRuns++;
         } while (System.nanoTime() - warmStart < warmUp * 1e9);
         System.out.printf(Locale.ROOT, "warm-up: %d run%s in %.1f s of wall time%n", warmRuns, warmRuns == 1 ? "" : "s",
@@ -94,7 +102,8 @@ final class BenchCommand implements Callable<Integer> {
                 sorted.get(sorted.size() / 2), sorted.get(0), sorted.get(sorted.size() - 1));
         System.out.println(load());
         Swarm.printSetUpAndMemory(() -> run(seed + runs, 0.001),
-                whileRunning -> Simulation.builder().arena(scenario).controller(controller).seconds(0.001).seed(seed + runs)
+                whileRunning -> Simulation.builder().arena(scenario).controller(controller).classpath(classpath).seconds(0.001)
+                        .seed(seed + runs)
                         .listener(s -> whileRunning.run(), 1).run());
         return 0;
     }
@@ -115,7 +124,28 @@ final class BenchCommand implements Callable<Integer> {
     }
 
     private RunResult run(long runSeed, double runSeconds) {
-        return Simulation.builder().arena(scenario).controller(controller).seconds(runSeconds).seed(runSeed).run();
+        errors.clear();
+        return Simulation.builder().arena(scenario).controller(controller).classpath(classpath).seconds(runSeconds)
+                .seed(runSeed).console(line -> errors.add(line.format())).run();
+    }
+
+    /** The controller's errors in the last run (its messages too: the benchmark prints them only when it fails). */
+    private final List<String> errors = new java.util.concurrent.CopyOnWriteArrayList<>();
+
+    /** @return true (and says so) when a robot's controller failed in the first run: its figures would measure nothing */
+    private boolean failed(RunResult r) {
+        for (int i = 0; i < r.robots().size(); i++) {
+            RunResult.RobotResult robot = r.robots().get(i);
+            if (robot.status().failed()) {
+                errors.stream().filter(l -> l.contains(" ERROR ")).limit(5).forEach(System.err::println);
+                System.err.println("khepera-sim: error: robot " + i + "'s controller (" + robot.name() + ") ended "
+                        + robot.status().name().toLowerCase(Locale.ROOT) + " in the first run; a benchmark of a failing"
+                        + " controller measures nothing: fix it, or try it with 'run' first");
+                return true;
+            }
+        }
+        errors.clear();
+        return false;
     }
 
     /**

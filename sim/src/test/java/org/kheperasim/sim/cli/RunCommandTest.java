@@ -136,6 +136,14 @@ class RunCommandTest {
     }
 
     @Test
+    void benchOfAFailingControllerSaysSoAndExitsWithOne() {
+        assertEquals(1, main("bench", "--robots", "2", "--controller", "org.kheperasim.testcontrollers.Thrower", "--seconds", "5",
+                "--runs", "1", "--warm-up", "0"));
+        assertTrue(err.contains("robot 0's controller (Thrower#0) ended failed in the first run"), err);
+        assertTrue(err.contains("ERROR Thrower#0: threw java.lang.ArithmeticException"), err);
+    }
+
+    @Test
     void benchPrintsSimulatedSecondsPerWallSecond() {
         assertEquals(0, main("bench", "--seconds", "20", "--runs", "1", "--warm-up", "0"));
         assertTrue(out.contains("warm-up: 1 run in "), out);
