@@ -22,7 +22,11 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
     private final Class<?> type;
     private final String name;
     private final ConsoleSink console;
-    private final StepController controller;
+    /** The controller; let go (null) once it has been stopped for filling the heap, so that what it holds can be collected. */
+    private StepController controller;
+    /** What runs now, for messages: "setup()" or "step()". */
+    private String phase = "step()";
+    private int steps;
     private final long periodNanos;
     private final long apiCostNanos;
     private final long hangTimeoutNanos;
@@ -104,10 +108,21 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
         try {
             if (status == ControllerStatus.NOT_STARTED) {
                 status = ControllerStatus.RUNNING;
+                phase = "setup()";
                 controller.begin();
+                phase = "step()";
             }
             controller.stepOnce();
             wake = now + periodNanos;
+            // After every fourth step (a step makes few API calls, where a thread-style controller's are counted
+            // for this look): a few native reads, unless the heap is past its threshold.
+            String full = (++steps & 3) == 0 ? HeapWatch.pressed() : null;
+            if (full != null) {
+                say(ConsoleLine.Kind.ERROR, "controller " + name + " allocated without bound (" + full + "); the"
+                        + " controller was stopped and the robot's motors set to 0. Does it keep adding to a list or map"
+                        + " it never empties?");
+                end(ControllerStatus.EXCEEDED_MEMORY);
+            }
         } catch (ControllerStoppedError e) {
             end(broke != null ? ControllerStatus.BROKE_RULE : hung ? ControllerStatus.HUNG : ControllerStatus.STOPPED);
         } catch (OutOfMemoryError e) {
@@ -118,7 +133,7 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
             end(ControllerStatus.EXCEEDED_MEMORY);
         } catch (RuntimeException | Error e) {
             failure = e;
-            say(ConsoleLine.Kind.ERROR, "threw " + e + " in step(); the robot was stopped.\n" + ControllerFailures.studentTrace(e));
+            say(ConsoleLine.Kind.ERROR, "threw " + e + " in " + phase + "; the robot was stopped.\n" + ControllerFailures.studentTrace(e));
             end(ControllerStatus.FAILED);
         } finally {
             stepping = false;
@@ -171,7 +186,11 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
         }
         status = end;
         robot.emergencyStop();
+        if (end == ControllerStatus.EXCEEDED_MEMORY) {
+            controller = null;
+        }
     }
+
 
     /** The run is over: the controller stops where it is (as a thread-style one does at its next call; no cleanup runs). */
     void stop() {
@@ -212,7 +231,7 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
 
     @Override
     public void sleepNanos(long nanos) {
-        throw new IllegalStateException("step controller " + name + " slept in step(): a step must return instead"
+        throw new IllegalStateException("step controller " + name + " slept in " + phase + ": a step must return instead"
                 + " (the next step comes " + periodNanos / 1_000_000 + " ms after this one; change periodMillis() to"
                 + " step less often)");
     }

@@ -85,4 +85,24 @@ class StepControllerTest {
         }
         assertEquals(traces[0], traces[1], "thread-style and step-style robots in one run repeat exactly");
     }
+
+    /** In a JVM of its own with a small heap: a step controller that keeps what it allocates is stopped before the heap runs out. */
+    @Test
+    void aStepControllerThatFillsTheHeapIsStoppedBeforeItRunsOut() throws Exception {
+        java.nio.file.Path out = java.nio.file.Files.createTempFile("stephog", ".txt");
+        try {
+            Process p = new ProcessBuilder(java.nio.file.Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                    "-Xmx128m", "-cp", System.getProperty("java.class.path"), org.kheperasim.sim.cli.Main.class.getName(), "run",
+                    "--arena", "lab", "--controller", "org.kheperasim.testcontrollers.StepHog", "--seconds", "60", "--seed", "1")
+                    .redirectErrorStream(true).redirectOutput(out.toFile()).start();
+            assertTrue(p.waitFor(90, TimeUnit.SECONDS), "the run ends");
+            String text = java.nio.file.Files.readString(out);
+            assertEquals(1, p.exitValue(), text);
+            assertTrue(text.contains("ERROR StepHog: controller StepHog allocated without bound ("), text);
+            assertTrue(text.contains("controller exceeded_memory"), "the result line is printed: " + text);
+            assertTrue(!text.contains("the Java heap ran out"), "stopped before the heap ran out: " + text);
+        } finally {
+            java.nio.file.Files.deleteIfExists(out);
+        }
+    }
 }
