@@ -10,7 +10,7 @@ public final class PollBench {
     /**
      * @param baud the line speed
      * @param rateHz poll cycles per second reached
-     * @param modelHz what the link timing model predicts at that speed
+     * @param modelHz what the link timing model predicts at that speed for the values the robot last reported
      * @param cycles cycles run
      * @param stats the session's counts and round-trip times
      */
@@ -46,8 +46,16 @@ public final class PollBench {
                 throw backend.failure();
             }
             double rate = backend.pollRateHz();
-            return new Result(baud, rate, 1e9 / LinkTiming.atBaud(baud).pollCycleNanos(), backend.cycles(),
-                    session.stats());
+            // The model's rate for the values the robot last reported: its replies are as long as they are.
+            int[] proximity = new int[8];
+            int[] light = new int[8];
+            for (int i = 0; i < 8; i++) {
+                proximity[i] = backend.proximity(i);
+                light[i] = backend.ambientLight(i);
+            }
+            int[] counters = {backend.leftPosition(), backend.rightPosition()};
+            return new Result(baud, rate, 1e9 / LinkTiming.atBaud(baud).pollCycleNanos(proximity, light, counters),
+                    backend.cycles(), session.stats());
         } finally {
             backend.stop();
         }
