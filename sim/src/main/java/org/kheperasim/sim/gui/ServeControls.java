@@ -114,12 +114,13 @@ final class ServeControls implements SnapshotSource {
         if (r == null) {
             return;
         }
+        // Said while the served world still sets the console's clock: the note has its time.
+        console.note("Stopped serving; the robots' wheels were stopped.");
         served = null;
         servers.forEach(ProtocolServer::close);
         servers.clear();
         r.close();
         feed.back(this);
-        console.note("Stopped serving; the robots' wheels were stopped.");
         status.show("Stopped serving", false);
     }
 }

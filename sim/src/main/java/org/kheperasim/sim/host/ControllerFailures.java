@@ -67,17 +67,17 @@ final class ControllerFailures {
         return new Verdict(ControllerStatus.FAILED, "threw " + e + "; the robot was stopped.\n" + studentTrace(e));
     }
 
-    /** The stack trace down to the first frame of the simulator's own code: the student's part. */
+    /** The stack trace without the simulator's own frames (nor reflection's): the student's part, causes included. */
     static String studentTrace(Throwable e) {
         StringWriter out = new StringWriter();
         e.printStackTrace(new PrintWriter(out));
         StringBuilder kept = new StringBuilder();
         for (String line : out.toString().split("\\R")) {
             String t = line.trim();
-            if (t.startsWith("at org.kheperasim.sim.") || t.startsWith("at java.base/java.lang.Thread.run")) {
-                break;
-            }
-            if (t.startsWith("at java.base/jdk.internal.reflect.")) {
+            // The simulator's own frames (where an API call threw, or what ran the controller) and the
+            // JDK's reflection are left out; the student's frames below them, and every "Caused by", stay.
+            if (t.startsWith("at org.kheperasim.sim.") || t.startsWith("at java.base/java.lang.Thread.run")
+                    || t.startsWith("at java.base/jdk.internal.reflect.") || t.startsWith("at java.base/java.lang.reflect.")) {
                 continue;
             }
             kept.append(line).append('\n');

@@ -191,7 +191,7 @@ class CpuAffinityTest {
         assertTrue(pinned.matches("\\d+"), "robot 0 was kept on one core before it hung: " + pinned);
         // The watchers run on after the hung controller is taken off: it must be free by then, not
         // only when the run ends.
-        List<String> reports = lines.stream().filter(l -> l.contains("HungWatcher: ")).toList();
+        List<String> reports = lines.stream().filter(l -> l.contains("HungWatcher#") && !l.contains(" ERROR ")).toList();
         assertEquals(2, reports.size(), "both watchers reported: " + lines);
         assertTrue(reports.get(0).contains(": freed "), "the hung controller's thread stayed on core " + pinned + ": " + lines);
     }

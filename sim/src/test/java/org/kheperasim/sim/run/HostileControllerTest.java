@@ -57,6 +57,7 @@ class HostileControllerTest {
         {"TrustedWriter", "try { java.nio.file.Files.writeString(java.nio.file.Path.of(TARGET + \".trusted\"), \"x\"); }"
             + " catch (Exception e) { } sleepMillis(100);"},
         {"Clockwatcher", "print(\"now \" + java.time.Instant.now()); sleepMillis(1000);"},
+        {"NegativeSleeper", "try { Thread.sleep(-1); } catch (InterruptedException e) { } sleepMillis(100);"},
     };
 
     /** Whole classes: controllers whose construction throws or never returns. */
@@ -180,6 +181,15 @@ class HostileControllerTest {
             assertTrue(o.result.first().distanceMm() > 100, c + " drove: it was not stalled");
         }
         brokeRule("WaitForever", "called Object.wait() with no timeout");
+    }
+
+    @Test
+    void anExceptionThrownInsideTheSimulatorStillShowsTheStudentsLine() {
+        Outcome o = run("NegativeSleeper", 1);
+        assertEquals(ControllerStatus.FAILED, o.result.first().status(), o.text());
+        assertTrue(o.text().contains("IllegalArgumentException") && o.text().contains("at NegativeSleeper.doWork(NegativeSleeper.java:"),
+                "the student's frame below the simulator's: " + o.text());
+        assertFalse(o.text().contains("at org.kheperasim.sim."), "the simulator's frames are left out: " + o.text());
     }
 
     @Test
