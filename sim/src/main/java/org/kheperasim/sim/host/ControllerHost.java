@@ -354,6 +354,12 @@ public final class ControllerHost implements HostedController {
         finish(ControllerStatus.HUNG);
     }
 
+    /** The run is being stopped while this controller holds the turn without progress: it unwinds at its next loop or call. */
+    void stopSoon() {
+        Controllers.requestStop(controller);
+        announceStop();
+    }
+
     private void announceStop() {
         stopRequested = true;
         if (!stopAnnounced) {

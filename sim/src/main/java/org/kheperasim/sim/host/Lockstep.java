@@ -36,6 +36,8 @@ public final class Lockstep {
     private java.util.function.BooleanSupplier stopAsked = () -> false;
     /** Set by the owner when {@link #stopAsked} said yes: whoever steps the world ends the run at the next tick. */
     private volatile boolean stopping;
+    /** While the run is being stopped, how long a holder may make no progress before it is asked to stop, ns. */
+    private static final long STOP_PATIENCE_NANOS = 200_000_000L;
     /** Set once the run has claimed a core for its controller threads (or found none to claim). */
     private boolean coreClaimed;
 
@@ -276,6 +278,10 @@ public final class Lockstep {
                 // Still running somewhere in a library call, perhaps for ever: not on the others' core.
                 Turn.free(seat);
                 return;
+            } else if (stopping && now - progressAt > STOP_PATIENCE_NANOS) {
+                // The run is being stopped (a signal, the window's Stop): a controller that makes no progress
+                // is asked to stop at its next loop rather than waited for until it counts as hung.
+                host.stopSoon();
             }
         }
     }

@@ -1,8 +1,10 @@
 package org.kheperasim.sim.run;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.concurrent.atomic.AtomicBoolean;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -25,5 +27,24 @@ class StopRequestTest {
                 .stopWhen(stop::get).run();
         assertTrue(r.simulatedSeconds() >= 10 && r.simulatedSeconds() < 11,
                 controller + ": asked to stop at 10 s of 100,000, it ran " + r.simulatedSeconds() + " s");
+    }
+
+    /**
+     * Robots whose controllers loop without an API call: a stop request asks the one holding the turn
+     * to stop at its next loop, so the run ends long before the hang timeout would take each off in
+     * turn (here 60 s of real time per robot).
+     */
+    @Test
+    void aStopRequestEndsARunWhoseControllersLoopWithoutWaitingForTheHangTimeout() {
+        long asked = System.nanoTime() + 500_000_000L;
+        RunResult r = Simulation.builder().arena(MultiRobotTest.crowd(3)).controller("org.kheperasim.testcontrollers.Looper")
+                .seed(1).seconds(100).hostOptions(org.kheperasim.sim.host.HostOptions.defaults().withHangTimeout(60_000_000_000L))
+                .stopWhen(() -> System.nanoTime() > asked).run();
+        assertEquals(3, r.robots().size());
+        // Generous: a busy machine may take a while, but not the 60 s a hang would.
+        assertTrue(r.wallSeconds() < 45, "the run ended " + r.wallSeconds() + " s after it began");
+        for (RunResult.RobotResult robot : r.robots()) {
+            assertEquals(org.kheperasim.sim.host.ControllerStatus.STOPPED, robot.status(), robot.name());
+        }
     }
 }
