@@ -155,8 +155,12 @@ public final class PacedRunner implements AutoCloseable {
 
     /** Stop the run: the controllers are stopped and the session closed. */
     public void stop() {
+        stopAsked = true;
         commands.add(() -> stopRequested = true);
     }
+
+    /** Set by {@link #stop} at once: the chunk being run ends at its next tick (a looping controller is asked to stop). */
+    private volatile boolean stopAsked;
 
     /**
      * Stop and wait for the session's thread to finish.
@@ -275,7 +279,7 @@ public final class PacedRunner implements AutoCloseable {
     private void chunk(long target) {
         long wall = System.nanoTime();
         long sim = session.timeNanos();
-        boolean more = session.runTo(target);
+        boolean more = session.runTo(target, () -> stopAsked);
         long took = System.nanoTime() - wall;
         if (took > 0) {
             chunkRate = (session.timeNanos() - sim) / (double) took;

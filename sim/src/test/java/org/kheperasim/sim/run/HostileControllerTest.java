@@ -276,6 +276,25 @@ class HostileControllerTest {
         }
     }
 
+    /** The window's Stop ends a run whose controller loops without an API call at once, not after the hang timeout. */
+    @Test
+    void theWindowsStopEndsALoopingControllerAtOnce() throws Exception {
+        List<String> console = new java.util.concurrent.CopyOnWriteArrayList<>();
+        long began = System.nanoTime();
+        RunSession s = new RunSession(org.kheperasim.sim.arena.ArenaFormat.loadBundled("lab"), "org.kheperasim.testcontrollers.Looper",
+                new ControllerCatalog(List.of()), 1, org.kheperasim.sim.engine.Settings.defaults(), line -> console.add(line.format()),
+                org.kheperasim.sim.host.HostOptions.defaults().withHangTimeout(TimeUnit.SECONDS.toNanos(60)));
+        PacedRunner runner = new PacedRunner(s, null);
+        runner.setSpeed(PacedRunner.MAX_SPEED);
+        runner.start();
+        Thread.sleep(1500); // 1 s simulated passes in milliseconds: it loops now, holding the turn
+        // Generous for a busy machine; a hang would take the 60 s of the timeout.
+        assertTrue(runner.stopAndWait(30_000), "the window's Stop ended the run");
+        assertEquals("STOPPED", s.status().name(), (System.nanoTime() - began) / 1e9 + " s: " + console);
+        assertTrue(runner.latest().timeNanos() >= 1_000_000_000L, "it was stopped in its loop, after its first second");
+        s.close();
+    }
+
     @Test
     void theCommandLineExitsNonZeroWithTheResultLineForAFaultAndForAHog() throws Exception {
         Path hog = dir.resolve("Hog.java");
