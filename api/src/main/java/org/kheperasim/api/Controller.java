@@ -45,7 +45,12 @@ public abstract class Controller extends Thread {
     /** One step of the controller: read sensors, set speeds, maybe sleep. Called repeatedly. */
     protected abstract void doWork();
 
-    /** Called once after the last {@link #doWork()}. Stops the motors unless overridden. */
+    /**
+     * Called once after the last {@link #doWork()} when the controller ends itself ({@link #killControl()}
+     * from its own code). Stops the motors unless overridden. When the run ends or is stopped from outside,
+     * the simulator stops the controller at its next robot call instead, and stops the motors itself: a
+     * {@code cleanup()} that reads a sensor or prints then ends there.
+     */
     protected void cleanup() {
         stopMotors();
     }

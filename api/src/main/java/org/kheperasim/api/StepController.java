@@ -50,7 +50,11 @@ public abstract class StepController {
     /** One control period's decision: read sensors, set speeds, return. Never sleep here. */
     protected abstract void step();
 
-    /** Called once after the last {@link #step()}. Stops the motors unless overridden. */
+    /**
+     * Called after the last {@link #step()} by a backend that ends the controller itself (robot-link,
+     * when its run ends). Stops the motors unless overridden. The simulator does not call it: at the
+     * end of a run it stops the robot where it is.
+     */
     protected void cleanup() {
         stopMotors();
     }
