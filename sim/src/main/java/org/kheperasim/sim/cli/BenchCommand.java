@@ -13,6 +13,7 @@ import org.kheperasim.sim.arena.Cap;
 import org.kheperasim.sim.arena.DistanceField;
 import org.kheperasim.sim.arena.OccupancyGrid;
 import org.kheperasim.sim.arena.Pose;
+import org.kheperasim.sim.host.ConsoleLine;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
 import picocli.CommandLine.Command;
@@ -124,26 +125,31 @@ final class BenchCommand implements Callable<Integer> {
     }
 
     private RunResult run(long runSeed, double runSeconds) {
-        errors.clear();
         return Simulation.builder().arena(scenario).controller(controller).classpath(classpath).seconds(runSeconds)
-                .seed(runSeed).console(line -> errors.add(line.format())).run();
+                .seed(runSeed).console(line -> {
+                    if (collecting && line.kind() == ConsoleLine.Kind.ERROR && errors.size() < 5) {
+                        errors.add(line.format());
+                    }
+                }).run();
     }
 
-    /** The controller's errors in the last run (its messages too: the benchmark prints them only when it fails). */
+    /** The first errors of the first run (the benchmark prints them when it fails); nothing is kept from the others. */
     private final List<String> errors = new java.util.concurrent.CopyOnWriteArrayList<>();
+    private volatile boolean collecting = true;
 
     /** @return true (and says so) when a robot's controller failed in the first run: its figures would measure nothing */
     private boolean failed(RunResult r) {
         for (int i = 0; i < r.robots().size(); i++) {
             RunResult.RobotResult robot = r.robots().get(i);
             if (robot.status().failed()) {
-                errors.stream().filter(l -> l.contains(" ERROR ")).limit(5).forEach(System.err::println);
+                errors.forEach(System.err::println);
                 System.err.println("khepera-sim: error: robot " + i + "'s controller (" + robot.name() + ") ended "
                         + robot.status().name().toLowerCase(Locale.ROOT) + " in the first run; a benchmark of a failing"
                         + " controller measures nothing: fix it, or try it with 'run' first");
                 return true;
             }
         }
+        collecting = false;
         errors.clear();
         return false;
     }

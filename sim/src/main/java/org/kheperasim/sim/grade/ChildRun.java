@@ -76,10 +76,11 @@ final class ChildRun {
         double wall = (System.nanoTime() - start) / 1e9;
         // The submission's class folder lies under --out: its files are named from there on, so that
         // the report does not depend on where it was written (shards merge byte for byte into it).
-        String classes = sub.classpath().toAbsolutePath() + File.separator;
+        String classes = sub.classpath().toAbsolutePath().normalize() + File.separator;
+        String absolute = sub.classpath().toAbsolutePath() + File.separator;
         String given = sub.classpath() + File.separator;
         RunRecord r = ChildResults.record(job, sub.controller(), killed, lim.wallSeconds(), p.exitValue(),
-                out.text(5000).replace(classes, "").replace(given, ""), err.text(5000).replace(classes, "").replace(given, ""));
+                strip(out.text(5000), classes, absolute, given), strip(err.text(5000), classes, absolute, given));
         return new Outcome(r, wall, Files.isRegularFile(trace) ? trace : null);
     }
 
@@ -99,5 +100,13 @@ final class ChildRun {
 
     private static String format(double d) {
         return String.format(Locale.ROOT, "%s", d == StrictMath.rint(d) ? Long.toString((long) d) : Double.toString(d));
+    }
+
+    /** @return {@code text} with each of the folder prefixes taken out (the longest first, as given) */
+    private static String strip(String text, String... prefixes) {
+        for (String p : prefixes) {
+            text = text.replace(p, "");
+        }
+        return text;
     }
 }

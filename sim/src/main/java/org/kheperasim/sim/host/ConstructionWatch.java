@@ -59,13 +59,15 @@ final class ConstructionWatch implements StepWatchdog.Watched {
         return w;
     }
 
+    private boolean ended;
+
     @Override
-    public boolean overdue(long nowNanos) {
-        if (fired || nowNanos - deadline < 0) {
+    public synchronized boolean overdue(long nowNanos) {
+        // Under the watch's lock with end(): a construction that has just returned is not marked afterwards.
+        if (fired || ended || nowNanos - deadline < 0) {
             return false;
         }
         fired = true;
-        StepWatchdog.unwatch(this);
         SimClock.stopConstructing(constructing);
         return true;
     }
@@ -73,7 +75,12 @@ final class ConstructionWatch implements StepWatchdog.Watched {
     /** The construction has returned or thrown: no longer watched. */
     private void end() {
         StepWatchdog.unwatch(this);
-        SimClock.constructed(constructing);
+        synchronized (this) {
+            ended = true;
+            if (fired) {
+                SimClock.constructed(constructing);
+            }
+        }
     }
 
     /** @return true when the construction overran and was asked to stop */

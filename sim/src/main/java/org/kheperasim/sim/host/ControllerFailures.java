@@ -67,24 +67,50 @@ final class ControllerFailures {
         return new Verdict(ControllerStatus.FAILED, "threw " + e + "; the robot was stopped.\n" + studentTrace(e));
     }
 
-    /** The stack trace without the simulator's own frames (nor reflection's): the student's part, causes included. */
+    /**
+     * The student's part of a stack trace, for each exception in it (the thrown one, each cause and
+     * suppressed one): the frames of the simulator's own code (and reflection's) above the first
+     * other frame are left out, so an API call that threw shows the student's line that called it;
+     * from the first of the simulator's frames below the student's code on, the frames are what ran
+     * the controller (or, a step controller run inline, another robot's code) and are cut.
+     */
     static String studentTrace(Throwable e) {
         StringWriter out = new StringWriter();
         e.printStackTrace(new PrintWriter(out));
         StringBuilder kept = new StringBuilder();
+        boolean seenStudent = false;
+        boolean cut = false;
         for (String line : out.toString().split("\\R")) {
             String t = line.trim();
-            // The simulator's own frames (where an API call threw, or what ran the controller) and the
-            // JDK's reflection are left out; the student's frames below them, and every "Caused by", stay.
-            if (t.startsWith("at org.kheperasim.sim.") || t.startsWith("at java.base/java.lang.Thread.run")
-                    || t.startsWith("at java.base/jdk.internal.reflect.") || t.startsWith("at java.base/java.lang.reflect.")) {
+            if (!t.startsWith("at ") && !t.startsWith("...")) {
+                // The exception's own line, or a "Caused by:" / "Suppressed:" one: a new section.
+                seenStudent = false;
+                cut = false;
+                kept.append(line).append('\n');
                 continue;
             }
+            if (cut) {
+                continue;
+            }
+            if (t.startsWith("...")) {
+                kept.append(line).append('\n');
+                continue;
+            }
+            if (simulatorFrame(t)) {
+                cut = seenStudent;
+                continue;
+            }
+            seenStudent = true;
             kept.append(line).append('\n');
         }
         return kept.toString().stripTrailing();
     }
 
+    private static boolean simulatorFrame(String t) {
+        return t.startsWith("at org.kheperasim.sim.") || t.startsWith("at java.base/jdk.internal.reflect.")
+                || t.startsWith("at java.base/java.lang.reflect.") || t.startsWith("at java.base/java.lang.Thread.run")
+                || t.startsWith("at java.base/java.lang.VirtualThread.");
+    }
 
     /**
      * @param who the controller, named with its class

@@ -356,8 +356,12 @@ public final class ControllerHost implements HostedController {
 
     /** The run is being stopped while this controller holds the turn without progress: it unwinds at its next loop or call. */
     void stopSoon() {
-        Controllers.requestStop(controller);
+        if (stopRequested) {
+            return;
+        }
+        // Announced before the controller's own killControl() runs: that may wait for a lock the loop holds.
         announceStop();
+        Controllers.requestStop(controller);
     }
 
     private void announceStop() {

@@ -114,6 +114,10 @@ public final class Lockstep {
         }
         stopAsked = stop;
         stopping = stop.getAsBoolean();
+        for (StepHost s : steps) {
+            // The step watchdog asks it: a step that loops holds the thread that would.
+            s.runStop(stop);
+        }
         HeapWatch.awaitReady();
         owner.seat(Thread.currentThread());
         turn.giveTo(owner);

@@ -25,7 +25,7 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
     /** The controller; let go (null) once it has been stopped for filling the heap, so that what it holds can be collected. */
     private StepController controller;
     /** What runs now, for messages: "setup()" or "step()". */
-    private String phase = "step()";
+    private volatile String phase = "step()";
     private int steps;
     private final long periodNanos;
     private final long apiCostNanos;
@@ -151,12 +151,20 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
     /** The watchdog's look: a step running for the hang timeout is stopped at its next loop checkpoint. */
     @Override
     public boolean overdue(long nowNanos) {
-        if (stepping && !hung && nowNanos - stepStartedAt > hangTimeoutNanos) {
+        java.util.function.BooleanSupplier stop = runStop;
+        if (stepping && !hung && !stopAsked && stop != null && nowNanos - stepStartedAt > STOP_PATIENCE_NANOS
+                && stop.getAsBoolean()) {
+            // The run is being stopped (a signal, the window's Stop) while a step loops: it ends at its next loop.
+            stopAsked = true;
+            SimClock.stopRequested();
+            return true;
+        }
+        if (stepping && !hung && !stopAsked && nowNanos - stepStartedAt > hangTimeoutNanos) {
             // Told before the step is stopped, so the message comes before the run's end.
-            say(ConsoleLine.Kind.ERROR, String.format(java.util.Locale.ROOT, "controller %s (%s): step() did not return"
+            say(ConsoleLine.Kind.ERROR, String.format(java.util.Locale.ROOT, "controller %s (%s): %s did not return"
                     + " for %.1f s of real time at simulated time %.3f s; a step must read the sensors, set the motors and"
                     + " return (no loops that wait). The controller was stopped and the robot's motors set to 0.",
-                    name, type.getName(), (nowNanos - stepStartedAt) / 1e9, now / 1e9));
+                    name, type.getName(), phase, (nowNanos - stepStartedAt) / 1e9, now / 1e9));
             hung = true;
             SimClock.stopRequested();
             return true;
@@ -175,13 +183,24 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
 
     /** Checked at every loop back-edge of the step's code. */
     void checkpoint() {
-        if (hung) {
-            throw new ControllerStoppedError("controller " + name + " hung in step()");
+        if (hung || stopAsked) {
+            throw new ControllerStoppedError("controller " + name + (hung ? " hung in " : " was stopped in ") + phase);
         }
     }
 
+    /** @param stop the run's stop request, asked by the watchdog while a step runs long (null: none) */
+    void runStop(java.util.function.BooleanSupplier stop) {
+        runStop = stop;
+    }
+
+    private volatile java.util.function.BooleanSupplier runStop;
+    /** Set by the watchdog when the run is being stopped while a step loops. */
+    private volatile boolean stopAsked;
+    /** While the run is being stopped, how long a step may run before it is stopped, ns. */
+    private static final long STOP_PATIENCE_NANOS = 200_000_000L;
+
     private void end(ControllerStatus end) {
-        if (hung) {
+        if (hung || stopAsked) {
             SimClock.stopSettled();
         }
         status = end;

@@ -98,8 +98,8 @@ public final class ReplayFiles {
 
     /**
      * The arena file a trace was recorded in, found beside it: {@code start.arena} (a recording's
-     * copy), else {@code NAME.arena} for the arena the trace names, when its SHA-256 is the one
-     * the trace records (or the trace records none).
+     * copy), else {@code NAME.arena} for the arena the trace names, either only when its SHA-256 is
+     * the one the trace records (or the trace records none).
      *
      * @param trace the trace file
      * @param name the arena's name in the trace's header, or null
@@ -112,20 +112,25 @@ public final class ReplayFiles {
             return null;
         }
         Path start = parent.resolve("start.arena");
-        if (Files.isRegularFile(start)) {
+        if (recorded(start, sha256)) {
             return start;
         }
         if (name == null || !name.matches("[A-Za-z0-9._-]+")) {
             return null;
         }
         Path named = parent.resolve(name + ArenaFormat.EXTENSION);
-        if (!Files.isRegularFile(named)) {
-            return null;
+        return recorded(named, sha256) ? named : null;
+    }
+
+    /** @return true when {@code file} is a readable arena whose SHA-256 is {@code sha256} (any, when null) */
+    private static boolean recorded(Path file, String sha256) {
+        if (!Files.isRegularFile(file)) {
+            return false;
         }
         try {
-            return sha256 == null || sha256.equals(ArenaFormat.sha256(ArenaFiles.load(named))) ? named : null;
+            return sha256 == null || sha256.equals(ArenaFormat.sha256(ArenaFiles.load(file)));
         } catch (RuntimeException e) {
-            return null;   // not a readable arena: as if none lay there
+            return false;   // not a readable arena: as if none lay there
         }
     }
 

@@ -285,7 +285,8 @@ public final class PacedRunner implements AutoCloseable {
             chunkRate = (session.timeNanos() - sim) / (double) took;
         }
         latest.set(session.snapshot());
-        if (!more) {
+        if (!more && !stopAsked) {
+            // Ended by itself; after a Stop (which may have ended a looping controller) it is stopped.
             setState(State.FINISHED);
         }
     }

@@ -68,6 +68,12 @@ class VerifyCommandTest {
         Files.writeString(arena, text.replace("light 600 600", "light 500 600"));
         assertEquals(ExitCodes.BAD_INPUT, main("verify", trace.toString()));
         assertTrue(err.contains("no arena file 'three'"), err);
+        // A stale start.arena beside a trace of a bundled arena is not taken for it either.
+        Path lab = dir.resolve("lab.trace");
+        assertEquals(ExitCodes.OK, main("run", "--arena", "lab", "--controller", "Braitenberg", "--seed", "2", "--seconds", "2",
+                "--quiet", "--trace", lab.toString()), err);
+        Files.writeString(dir.resolve("start.arena"), text);
+        assertEquals(ExitCodes.OK, main("verify", lab.toString()), err);
     }
 
     @Test

@@ -292,6 +292,7 @@ class HostileControllerTest {
         assertTrue(runner.stopAndWait(30_000), "the window's Stop ended the run");
         assertEquals("STOPPED", s.status().name(), (System.nanoTime() - began) / 1e9 + " s: " + console);
         assertTrue(runner.latest().timeNanos() >= 1_000_000_000L, "it was stopped in its loop, after its first second");
+        assertEquals(PacedRunner.State.STOPPED, runner.state(), "the window says the run was stopped, not that it ended");
         s.close();
     }
 

@@ -4,7 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.concurrent.atomic.AtomicBoolean;
-import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -30,14 +29,15 @@ class StopRequestTest {
     }
 
     /**
-     * Robots whose controllers loop without an API call: a stop request asks the one holding the turn
-     * to stop at its next loop, so the run ends long before the hang timeout would take each off in
+     * Robots whose controllers loop without an API call (in a thread of their own, or in a step): a stop
+     * request asks the one holding the turn (or the step running) to stop at its next loop, so the run ends long before the hang timeout would take each off in
      * turn (here 60 s of real time per robot).
      */
-    @Test
-    void aStopRequestEndsARunWhoseControllersLoopWithoutWaitingForTheHangTimeout() {
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = {"Looper", "StepLooper"})
+    void aStopRequestEndsARunWhoseControllersLoopWithoutWaitingForTheHangTimeout(String looper) {
         long asked = System.nanoTime() + 500_000_000L;
-        RunResult r = Simulation.builder().arena(MultiRobotTest.crowd(3)).controller("org.kheperasim.testcontrollers.Looper")
+        RunResult r = Simulation.builder().arena(MultiRobotTest.crowd(3)).controller("org.kheperasim.testcontrollers." + looper)
                 .seed(1).seconds(100).hostOptions(org.kheperasim.sim.host.HostOptions.defaults().withHangTimeout(60_000_000_000L))
                 .stopWhen(() -> System.nanoTime() > asked).run();
         assertEquals(3, r.robots().size());
