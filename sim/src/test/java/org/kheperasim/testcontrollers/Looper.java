@@ -2,7 +2,7 @@ package org.kheperasim.testcontrollers;
 
 import org.kheperasim.api.Controller;
 
-/** Drives for a second, then loops for ever without an API call (a careless student's busy wait). */
+/** Drives for a second, says "looping", then loops for ever without an API call (a careless student's busy wait). */
 public class Looper extends Controller {
     private static volatile long spins;
 
@@ -10,6 +10,7 @@ public class Looper extends Controller {
     protected void doWork() {
         setSpeeds(2, 2);
         sleepMillis(1000);
+        print("looping");
         while (spins >= 0) {
             spins++;
         }

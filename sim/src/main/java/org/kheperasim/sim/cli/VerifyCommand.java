@@ -93,16 +93,15 @@ final class VerifyCommand implements Callable<Integer> {
     /** The recorded arena: given, the recording's start.arena, the arena file beside the trace, or the bundled one the trace names; its sha256 must match. */
     private Arena arena(boolean folder, String recordedArena) {
         String[] nameAndSha = recordedArena.split(" sha256=", 2);
-        Path beside = folder ? null : ReplayFiles.arenaBeside(recording, nameAndSha[0], nameAndSha.length == 2 ? nameAndSha[1] : null);
         Arena a;
         if (arenaFile != null) {
             a = ArenaFiles.load(arenaFile, note -> { });
         } else if (folder && Files.isRegularFile(recording.resolve("start.arena"))) {
             a = ArenaFormat.load(recording.resolve("start.arena"));
-        } else if (beside != null) {
-            a = ArenaFiles.load(beside, note -> { });
         } else {
-            a = ArenaFormat.resolve(nameAndSha[0]);
+            ReplayFiles.Beside beside = folder ? null
+                    : ReplayFiles.arenaBeside(recording, nameAndSha[0], nameAndSha.length == 2 ? nameAndSha[1] : null);
+            a = beside != null ? beside.arena() : ArenaFormat.resolve(nameAndSha[0]);
         }
         if (nameAndSha.length == 2 && !ArenaFormat.sha256(a).equals(nameAndSha[1])) {
             throw new IllegalArgumentException("the arena " + a.name() + " is not the one recorded (its sha256 is "

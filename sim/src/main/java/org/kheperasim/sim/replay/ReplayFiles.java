@@ -76,10 +76,10 @@ public final class ReplayFiles {
                 sha = f.length > 1 && f[1].startsWith("sha256=") ? f[1].substring(7) : null;
             }
         }
-        Path beside = arenaBeside(trace, name, sha);
+        Beside beside = arenaBeside(trace, name, sha);
         if (beside != null) {
-            notes.add(trace + ": arena " + beside.getFileName() + " beside it");
-            return ArenaFiles.load(beside);
+            notes.add(trace + ": arena " + beside.file().getFileName() + " beside it");
+            return beside.arena();
         }
         if (name != null && ArenaFormat.bundledNames().contains(name)) {
             Arena a = ArenaFormat.loadBundled(name);
@@ -104,33 +104,39 @@ public final class ReplayFiles {
      * @param trace the trace file
      * @param name the arena's name in the trace's header, or null
      * @param sha256 the arena's SHA-256 in the header, or null
-     * @return the file, or null when none lies beside the trace
+     * @return the file and its arena, or null when none lies beside the trace
      */
-    public static Path arenaBeside(Path trace, String name, String sha256) {
+    public static Beside arenaBeside(Path trace, String name, String sha256) {
         Path parent = trace.toAbsolutePath().getParent();
         if (parent == null) {
             return null;
         }
-        Path start = parent.resolve("start.arena");
-        if (recorded(start, sha256)) {
+        Beside start = recorded(parent.resolve("start.arena"), sha256);
+        if (start != null || name == null || !name.matches("[A-Za-z0-9._-]+")) {
             return start;
         }
-        if (name == null || !name.matches("[A-Za-z0-9._-]+")) {
-            return null;
-        }
-        Path named = parent.resolve(name + ArenaFormat.EXTENSION);
-        return recorded(named, sha256) ? named : null;
+        return recorded(parent.resolve(name + ArenaFormat.EXTENSION), sha256);
     }
 
-    /** @return true when {@code file} is a readable arena whose SHA-256 is {@code sha256} (any, when null) */
-    private static boolean recorded(Path file, String sha256) {
+    /**
+     * An arena file found beside a trace, and the arena read from it.
+     *
+     * @param file the file
+     * @param arena its arena
+     */
+    public record Beside(Path file, Arena arena) {
+    }
+
+    /** @return {@code file} and its arena when it is a readable arena whose SHA-256 is {@code sha256} (any, when null), else null */
+    private static Beside recorded(Path file, String sha256) {
         if (!Files.isRegularFile(file)) {
-            return false;
+            return null;
         }
         try {
-            return sha256 == null || sha256.equals(ArenaFormat.sha256(ArenaFiles.load(file)));
+            Arena a = ArenaFiles.load(file);
+            return sha256 == null || sha256.equals(ArenaFormat.sha256(a)) ? new Beside(file, a) : null;
         } catch (RuntimeException e) {
-            return false;   // not a readable arena: as if none lay there
+            return null;   // not a readable arena: as if none lay there
         }
     }
 

@@ -32,15 +32,7 @@ public final class RobotSelectionDriver {
         robot.setAutoDelay(15);
         robot.waitForIdle();
         SwingUtilities.invokeAndWait(() -> w.action("start").actionPerformed(null));
-        long deadline = System.nanoTime() + 60_000_000_000L;
-        Snapshot s = null;
-        while (System.nanoTime() < deadline) {
-            s = w.runner() == null ? null : w.runner().latest();
-            if (s != null && s.timeSeconds() >= 2) {
-                break;
-            }
-            Thread.sleep(20);
-        }
+        runPast(w, 2);
         SwingUtilities.invokeAndWait(() -> w.action("pause").actionPerformed(null));
         Thread.sleep(300);
         robot.waitForIdle();
@@ -79,15 +71,7 @@ public final class RobotSelectionDriver {
             box.setSelectedItem("Braitenberg");
             w.action("start").actionPerformed(null);
         });
-        Snapshot mixed = null;
-        long until2 = System.nanoTime() + 60_000_000_000L;
-        while (System.nanoTime() < until2) {
-            mixed = w.runner() == null ? null : w.runner().latest();
-            if (mixed != null && mixed.timeSeconds() > 0.5) {
-                break;
-            }
-            Thread.sleep(20);
-        }
+        Snapshot mixed = runPast(w, 0.5);
         if (mixed == null || !mixed.robots().get(0).name().equals("Braitenberg#0")
                 || !mixed.robots().get(1).name().equals("WallFollower#1")) {
             fail("robot 1 should run WallFollower and robot 0 Braitenberg: " + (mixed == null ? "no run"
@@ -155,15 +139,7 @@ public final class RobotSelectionDriver {
             w.openArena(other);
             w.action("start").actionPerformed(null);
         });
-        Snapshot fresh = null;
-        long until4 = System.nanoTime() + 60_000_000_000L;
-        while (System.nanoTime() < until4) {
-            fresh = w.runner() == null ? null : w.runner().latest();
-            if (fresh != null && fresh.timeSeconds() > 0.5) {
-                break;
-            }
-            Thread.sleep(20);
-        }
+        Snapshot fresh = runPast(w, 0.5);
         if (fresh == null || !fresh.robots().get(1).name().equals("Braitenberg#1")) {
             fail("in another arena robot 1 should run the chosen Braitenberg, not the last arena's WallFollower: "
                     + (fresh == null ? "no run" : fresh.robots().get(1).name()));
@@ -171,6 +147,20 @@ public final class RobotSelectionDriver {
         System.out.println("OTHER ARENA OK");
         SwingUtilities.invokeAndWait(() -> w.action("close").actionPerformed(null));
         System.exit(0);
+    }
+
+    /** @return the window's run once it has passed {@code seconds} of simulated time (the latest seen after 60 s of waiting), or null */
+    private static Snapshot runPast(MainWindow w, double seconds) throws InterruptedException {
+        long deadline = System.nanoTime() + 60_000_000_000L;
+        Snapshot s = null;
+        while (System.nanoTime() < deadline) {
+            s = w.runner() == null ? null : w.runner().latest();
+            if (s != null && s.timeSeconds() >= seconds) {
+                break;
+            }
+            Thread.sleep(20);
+        }
+        return s;
     }
 
     private static <T> T onEdt(java.util.function.Supplier<T> s) throws Exception {

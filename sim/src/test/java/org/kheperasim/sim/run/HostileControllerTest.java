@@ -287,7 +287,11 @@ class HostileControllerTest {
         PacedRunner runner = new PacedRunner(s, null);
         runner.setSpeed(PacedRunner.MAX_SPEED);
         runner.start();
-        Thread.sleep(1500); // 1 s simulated passes in milliseconds: it loops now, holding the turn
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while (console.stream().noneMatch(l -> l.endsWith("looping")) && System.nanoTime() < deadline) {
+            Thread.sleep(5);
+        }
+        Thread.sleep(300); // it loops now, holding the turn
         // Generous for a busy machine; a hang would take the 60 s of the timeout.
         assertTrue(runner.stopAndWait(30_000), "the window's Stop ended the run");
         assertEquals("STOPPED", s.status().name(), (System.nanoTime() - began) / 1e9 + " s: " + console);
