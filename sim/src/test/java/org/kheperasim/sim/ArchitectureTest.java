@@ -2,6 +2,7 @@ package org.kheperasim.sim;
 
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.classes;
 import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noClasses;
+import static com.tngtech.archunit.lang.syntax.ArchRuleDefinition.noFields;
 
 import com.tngtech.archunit.core.domain.JavaClasses;
 import com.tngtech.archunit.core.importer.ClassFileImporter;
@@ -71,6 +72,27 @@ class ArchitectureTest {
         noClasses().that().resideInAnyPackage("..sim.task..", "..sim.grade..")
                 .should().dependOnClassesThat().resideInAnyPackage("..sim.gui..", "..sim.cli..", "..sim.serve..")
                 .because("the window and the command line call the scoring and grading, never the other way round")
+                .check(sim);
+    }
+
+    @Test
+    void onlyTheLockstepStepsTheWorld() {
+        noClasses().that().doNotHaveFullyQualifiedName("org.kheperasim.sim.host.Lockstep")
+                .and().resideOutsideOfPackage("..sim.engine..")
+                .should().callMethod("org.kheperasim.sim.engine.Engine", "advance")
+                .because("one class decides when the world moves and who runs next (a controller's clock asks it);"
+                        + " an engine without controllers (the protocol server's) runs by Engine.runUntil")
+                .check(sim);
+    }
+
+    @Test
+    void aControllersLifeIsKeptInOnePlace() {
+        noFields().that().areDeclaredInClassesThat().haveFullyQualifiedName("org.kheperasim.sim.host.ControllerHost")
+                .or().areDeclaredInClassesThat().haveFullyQualifiedName("org.kheperasim.sim.host.StepHost")
+                .should().haveRawType(boolean.class)
+                .orShould().haveRawType(org.kheperasim.sim.host.ControllerStatus.class)
+                .because("a controller's life (started, stopping, ended, and why) is one state machine, ControllerLife,"
+                        + " not flags written from several threads")
                 .check(sim);
     }
 

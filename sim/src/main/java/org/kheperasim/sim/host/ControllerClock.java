@@ -3,14 +3,14 @@ package org.kheperasim.sim.host;
 import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
-import org.kheperasim.sim.engine.RobotDriver;
 
 /**
  * A controller's own simulated clock. Each API call costs {@code api.callCostUs} of simulated time
  * (that is how a busy loop makes time pass), {@code Thread.sleep(ms)} costs exactly {@code ms}, and
  * computing between calls costs nothing. The engine lets the controller run through one tick's
- * stretch of simulated time at a time ({@link #grant}); a call that reaches past it steps the world
- * forward on the controller's own thread until some controller must run again.
+ * stretch of simulated time at a time ({@link #grant}); a call that reaches past it has the
+ * {@link Lockstep} step the world forward on the controller's own thread (no hand-over) until some
+ * controller must run again.
  *
  * <p>The class loader rewrites a controller's {@code Thread.sleep}, {@code System.nanoTime} and
  * friends onto this clock (through {@link SimClock}); calls from any other thread fall through to
@@ -161,15 +161,7 @@ final class ControllerClock implements SimClock.Clock, PortClock {
             if (!threads.single() && threads.deadlocked()) {
                 host.deadlocked(threads.describeWaits());
             }
-            RobotDriver next;
-            try {
-                next = lockstep.advance();
-            } catch (RuntimeException | Error e) {
-                lockstep.engineFailed(e);
-                next = null;
-            }
-            if (next != host) {
-                lockstep.passTo(next);
+            if (!lockstep.stepWorldFor(host)) {
                 return false;
             }
         }

@@ -29,17 +29,9 @@ public final class ControllerHost implements HostedController {
     private final ControllerThreads threads = new ControllerThreads();
     private final Thread controller;
     private Lockstep lockstep;
-    private volatile ControllerStatus status = ControllerStatus.NOT_STARTED;
-    private volatile boolean stopRequested;
-    private volatile boolean detached;
-    private boolean stopAnnounced;
-    private volatile Throwable failure;
-    private volatile String lastError;
-    /** How the controller's life ends once it has unwound, when a fault decided it; else null. */
-    private volatile ControllerStatus pendingEnd;
+    /** Its life: started, stopping, ended, and why; the only record of it (see {@link ControllerLife}). */
+    private final ControllerLife life = new ControllerLife();
     private final StrayThreads strays = new StrayThreads(this);
-    /** Set on the controller's own thread when what it threw has ended it: it never takes the turn again. */
-    private volatile boolean ownThreadOver;
     /** The thread constructing the controller, while it does; threads started then join the lockstep. */
     private volatile Thread constructing;
 
@@ -97,19 +89,19 @@ public final class ControllerHost implements HostedController {
 
     /** @return where the controller is in its life */
     public ControllerStatus status() {
-        return status;
+        return life.status();
     }
 
     /** @return what the controller threw, or null */
     public Throwable failure() {
-        return failure;
+        return life.failure();
     }
 
     // ------------------------------------------------------------------ the turn
 
     @Override
     public long wakeNanos() {
-        return status.ended() ? Long.MAX_VALUE : clock.wake();
+        return life.status().ended() ? Long.MAX_VALUE : clock.wake();
     }
 
     @Override
@@ -138,9 +130,7 @@ public final class ControllerHost implements HostedController {
 
     /** Give this host the turn, from whichever thread holds it: start the controller, or wake it. */
     void receiveTurn(Turn turn) {
-        if (status == ControllerStatus.NOT_STARTED) {
-            status = ControllerStatus.RUNNING;
-        }
+        life.on(ControllerLife.Event.START);
         clock.runNext();
     }
 
@@ -155,7 +145,7 @@ public final class ControllerHost implements HostedController {
     /** The controller allocates without bound: stop it, and let what it holds go. */
     void exceededMemory(String what) {
         // Stopped before the message is made: a controller filling the heap must not go on meanwhile.
-        if (claimEnd(ControllerStatus.EXCEEDED_MEMORY)) {
+        if (life.on(ControllerLife.Event.FAULT, ControllerStatus.EXCEEDED_MEMORY)) {
             try {
                 report("allocated without bound (" + what + "); the controller was stopped and the robot's motors set"
                         + " to 0. Does it keep adding to a list or map it never empties?");
@@ -166,22 +156,11 @@ public final class ControllerHost implements HostedController {
         }
     }
 
+    /** The first fault decides how the controller ends, and is the one reported. */
     private void fault(ControllerStatus end, String message) {
-        if (claimEnd(end)) {
+        if (life.on(ControllerLife.Event.FAULT, end)) {
             report(message);
         }
-    }
-
-    /** @return true when this fault decides how the controller ends (the first one), which is then stopped */
-    private boolean claimEnd(ControllerStatus end) {
-        synchronized (this) {
-            if (pendingEnd != null || status.ended()) {
-                return false;
-            }
-            pendingEnd = end;
-        }
-        announceStop();
-        return true;
     }
 
     private void report(String message) {
@@ -242,18 +221,16 @@ public final class ControllerHost implements HostedController {
 
     /** Every thread of the controller waits for another: nothing can ever run again. Called holding the turn. */
     void deadlocked(String waits) {
-        if (status.ended() || pendingEnd != null) {
-            return;
+        if (life.on(ControllerLife.Event.DEADLOCKED)) {
+            say(ConsoleLine.Kind.ERROR, "controller " + name + " (" + type.getName() + ") is deadlocked: " + waits
+                    + ". The controller was stopped and the robot's motors set to 0.");
+            afterEnd();
         }
-        say(ConsoleLine.Kind.ERROR, "controller " + name + " (" + type.getName() + ") is deadlocked: " + waits
-                + ". The controller was stopped and the robot's motors set to 0.");
-        announceStop();
-        finish(ControllerStatus.HUNG);
     }
 
     /** Unwind the controller's thread when it has been asked to stop. */
     void checkStop() {
-        if (stopRequested) {
+        if (life.stopRequested()) {
             throw new ControllerStoppedError("controller " + name + " was stopped");
         }
     }
@@ -266,31 +243,32 @@ public final class ControllerHost implements HostedController {
      * period (the controller is then detached and reported). Called by the run's owner.
      */
     void stop() {
-        if (status == ControllerStatus.NOT_STARTED) {
-            status = ControllerStatus.STOPPED;
+        // The owner holds the turn: the controller cannot start meanwhile.
+        if (life.state().phase() == ControllerLife.Phase.NOT_STARTED) {
+            life.on(ControllerLife.Event.STOP);
             return;
         }
-        if (status == ControllerStatus.RUNNING) {
-            announceStop();
+        if (!life.status().ended()) {
+            life.on(ControllerLife.Event.STOP);
             Controllers.requestStop(controller);
             clock.switchTo(threads.main());
             lockstep.awaitOwner(STOP_GRACE_MILLIS * 1_000_000L);
-            if (status == ControllerStatus.RUNNING) {
-                detached = true;
+            // Its thread is let go before it is interrupted: if that ends it, it must not pass the turn.
+            if (life.on(ControllerLife.Event.LEFT_BEHIND)) {
                 threads.main().interrupt();
                 say(ConsoleLine.Kind.ERROR, "did not stop within " + STOP_GRACE_MILLIS / 1000 + " s of being asked;"
                         + " it was left behind. Does it catch Throwable, or loop inside a library call?");
-                finish(ControllerStatus.STOPPED);
+                afterEnd();
             }
         }
         endThreads();
-        stopRequested = true;
+        life.signalStop();
         strays.end(STOP_GRACE_MILLIS);
     }
 
     /** @return true when the controller has ended but threads it started still live: the owner ends them */
     boolean threadsOutliveIt() {
-        if (!status.ended() || threads.single()) {
+        if (!life.status().ended() || threads.single()) {
             return false;
         }
         for (Participant p : threads.all()) {
@@ -309,11 +287,11 @@ public final class ControllerHost implements HostedController {
         if (threads.single()) {
             return;
         }
-        announceStop();
+        life.signalStop();
         for (Participant p : threads.all()) {
             // The controller's own thread was left behind, or has ended: past its uncaught-exception
             // handler it only unwinds its last frames, and may still look alive for a moment.
-            if (p.done || (p.index == 0 && (detached || ownThreadOver || !p.runner.isAlive()))) {
+            if (p.done || (p.index == 0 && (life.state().abandoned() || life.isOwnThreadOver() || !p.runner.isAlive()))) {
                 continue;
             }
             if (!p.started || !p.runner.isAlive()) {
@@ -333,95 +311,105 @@ public final class ControllerHost implements HostedController {
 
     /** The watchdog saw the controller's thread end while it held the turn: run() returned. */
     void returned() {
-        finish(pendingEnd != null ? pendingEnd : ControllerStatus.FINISHED);
+        if (life.on(ControllerLife.Event.UNWOUND, ControllerStatus.FINISHED)) {
+            afterEnd();
+        }
     }
 
     /** The watchdog saw no progress for the hang timeout while this controller held the turn. */
     void hung(Participant who, double realSeconds) {
         String thread = who.index == 0 ? "" : " (in thread " + who + " that it started)";
+        boolean returnsAtOnce = who.index == 0 && doWorkReturnsAtOnce();
         say(ConsoleLine.Kind.ERROR, ControllerFailures.hung(name + " (" + type.getName() + ")", clock.now(), thread,
-                realSeconds));
-        announceStop();
+                realSeconds, returnsAtOnce));
         if (who.index == 0) {
-            detached = true;
+            // Let go before it is interrupted: if that ends it, it must not pass the turn.
+            boolean ends = life.on(ControllerLife.Event.HUNG);
             Controllers.requestStop(controller);
             threads.main().interrupt();
+            if (ends) {
+                afterEnd();
+            }
         } else {
             // It unwinds at its next loop checkpoint; the controller's other threads end with it.
+            boolean ends = life.on(ControllerLife.Event.HELPER_HUNG);
             who.interrupt();
             threads.ended(who);
+            if (ends) {
+                afterEnd();
+            }
         }
-        finish(ControllerStatus.HUNG);
+    }
+
+    /**
+     * Is the hung controller a {@link org.kheperasim.api.Controller} whose {@code doWork()} keeps
+     * returning without a robot call (an empty one, say), rather than looping inside? Looked at for
+     * a moment of real time, on the way to reporting it hung.
+     */
+    private boolean doWorkReturnsAtOnce() {
+        long before = Controllers.doWorkRounds(controller);
+        if (before < 0) {
+            return false;
+        }
+        long deadline = System.nanoTime() + 50_000_000L;
+        while (System.nanoTime() < deadline) {
+            java.util.concurrent.locks.LockSupport.parkNanos(2_000_000L);
+            if (Controllers.doWorkRounds(controller) != before) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /** The run is being stopped while this controller holds the turn without progress: it unwinds at its next loop or call. */
     void stopSoon() {
-        if (stopRequested) {
-            return;
-        }
-        // Announced before the controller's own killControl() runs: that may wait for a lock the loop holds.
-        announceStop();
-        Controllers.requestStop(controller);
-    }
-
-    private void announceStop() {
-        stopRequested = true;
-        if (!stopAnnounced) {
-            stopAnnounced = true;
-            SimClock.stopRequested();
+        // Stopping before the controller's own killControl() runs: that may wait for a lock the loop holds.
+        if (life.on(ControllerLife.Event.STOP)) {
+            Controllers.requestStop(controller);
         }
     }
 
-    /** Called by whoever holds the turn. */
-    private void finish(ControllerStatus end) {
-        if (status.ended()) {
-            return;
-        }
-        status = end;
+    /** The controller has just ended: its robot stops, and it never needs the turn again. */
+    private void afterEnd() {
         robot.emergencyStop();
         clock.ended();
     }
 
     /** The controller thread is ending with an exception (the uncaught-exception handler). */
     private void ended(Throwable e) {
-        ownThreadOver = true;
-        if (detached) {
-            settleStop();
-            return;
+        boolean abandoned = life.state().abandoned();
+        life.ownThreadOver();
+        if (abandoned) {
+            return; // it no longer holds the turn
         }
-        if (pendingEnd != null) {
-            finish(pendingEnd);
-        } else {
+        ControllerStatus end = ControllerStatus.STOPPED; // a fault deciding the end overrides it
+        if (life.state().reason() == null) {
             if (e instanceof OutOfMemoryError) {
                 HeapWatch.ranOut(); // before the message is made
             }
             ControllerFailures.Verdict v = ControllerFailures.verdict(e, "controller " + name + " (" + type.getName() + ")");
             if (v.message() != null) {
-                failure = e;
+                life.failedWith(e);
                 say(ConsoleLine.Kind.ERROR, v.message());
             }
-            finish(v.status());
+            end = v.status();
         }
-        settleStop();
+        if (life.on(ControllerLife.Event.UNWOUND, end)) {
+            afterEnd();
+        }
         lockstep.passTo(null);
-    }
-
-    private void settleStop() {
-        if (stopAnnounced) {
-            SimClock.stopSettled();
-        }
     }
 
     /** A line for the console, stamped with the controller's simulated time. */
     void say(ConsoleLine.Kind kind, String text) {
         if (kind == ConsoleLine.Kind.ERROR) {
-            lastError = text;
+            life.error(text);
         }
         console.accept(new ConsoleLine(clock.now(), name, kind, text));
     }
 
     @Override
     public String lastError() {
-        return lastError;
+        return life.lastError();
     }
 }

@@ -160,7 +160,7 @@ public final class Lockstep {
      *
      * @return the controller to hand the turn to, or null when the run is over
      */
-    RobotDriver advance() {
+    private RobotDriver advance() {
         while (true) {
             // Asked here too, not only while the owner watches: with only step controllers (or a
             // thread that steps the world itself) nobody watches, and a signal must still end the run.
@@ -176,6 +176,31 @@ public final class Lockstep {
             }
             step.step();
         }
+    }
+
+    /**
+     * Step the world on the calling thread, which holds the turn for {@code host} and has nothing of
+     * its own due in its slice, until some driver must run. The world is stepped only here and in
+     * {@link #run}, whichever thread holds the turn: on a controller's thread when its slice ends,
+     * which spares a hand-over to the owner and back at every tick.
+     *
+     * @param host the controller whose thread calls
+     * @return true when the engine chose {@code host} again (it goes on, with a new slice); false when
+     *         the turn has been passed to another driver, or back to the owner
+     */
+    boolean stepWorldFor(ControllerHost host) {
+        RobotDriver next;
+        try {
+            next = advance();
+        } catch (RuntimeException | Error e) {
+            engineFailed(e);
+            next = null;
+        }
+        if (next == host) {
+            return true;
+        }
+        passTo(next);
+        return false;
     }
 
     /** Stop every controller (at the end of a run); returns when they have unwound or been left behind. */
@@ -224,7 +249,7 @@ public final class Lockstep {
     }
 
     /** The world threw while a controller's thread was stepping it: the owner rethrows it. */
-    void engineFailed(Throwable e) {
+    private void engineFailed(Throwable e) {
         engineFailure = e instanceof RuntimeException r ? r
                 : new IllegalStateException("the simulation failed: " + e, e);
     }

@@ -24,25 +24,40 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
     private final ConsoleSink console;
     /** The controller; let go (null) once it has been stopped for filling the heap, so that what it holds can be collected. */
     private StepController controller;
-    /** What runs now, for messages: "setup()" or "step()". */
-    private volatile String phase = "step()";
+    /** What runs now, for messages. */
+    private volatile Part part = Part.STEP;
     private int steps;
     private final long periodNanos;
     private final long apiCostNanos;
     private final long hangTimeoutNanos;
     private final StepClock clock = new StepClock(this);
-    private ControllerStatus status = ControllerStatus.NOT_STARTED;
-    private Throwable failure;
-    private String lastError;
+    /** Its life: started, stopping, ended, and why; the only record of it (see {@link ControllerLife}). */
+    private final ControllerLife life = new ControllerLife();
     private long wake;
     private long now;
-    private volatile boolean stepping;
-    private volatile long stepStartedAt;
-    private volatile boolean hung;
-    /** Whether the watchdog looks at this host: from its first step to its end (it looks only while {@link #stepping}). */
-    private boolean watched;
-    /** The rule the step broke, or null. */
-    private String broke;
+    /** {@link System#nanoTime()} when the step running now began, or {@link #NOT_STEPPING}; read by the watchdog. */
+    private volatile long stepStartedAt = NOT_STEPPING;
+    private static final long NOT_STEPPING = Long.MIN_VALUE;
+    /** The run's stop request, asked by the watchdog while a step runs long (null: none). */
+    private volatile java.util.function.BooleanSupplier runStop;
+    /** While the run is being stopped, how long a step may run before it is stopped, ns. */
+    private static final long STOP_PATIENCE_NANOS = 200_000_000L;
+
+    /** The part of a step controller's code that runs, as messages name it. */
+    private enum Part {
+        SETUP("setup()"), STEP("step()");
+
+        private final String text;
+
+        Part(String text) {
+            this.text = text;
+        }
+
+        @Override
+        public String toString() {
+            return text;
+        }
+    }
 
     /**
      * @param robot the robot it drives
@@ -76,17 +91,17 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
 
     @Override
     public ControllerStatus status() {
-        return status;
+        return life.status();
     }
 
     @Override
     public Throwable failure() {
-        return failure;
+        return life.failure();
     }
 
     @Override
     public long wakeNanos() {
-        return status.ended() ? Long.MAX_VALUE : wake;
+        return life.status().ended() ? Long.MAX_VALUE : wake;
     }
 
     @Override
@@ -100,17 +115,16 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
         SimClock.Clock outer = SimClock.current();
         SimClock.bind(clock);
         stepStartedAt = System.nanoTime();
-        stepping = true;
-        if (!watched) {
-            watched = true;
+        // Watched from its first step to its end, not registered at every step.
+        boolean first = life.on(ControllerLife.Event.START);
+        if (first) {
             StepWatchdog.watch(this);
         }
         try {
-            if (status == ControllerStatus.NOT_STARTED) {
-                status = ControllerStatus.RUNNING;
-                phase = "setup()";
+            if (first) {
+                part = Part.SETUP;
                 controller.begin();
-                phase = "step()";
+                part = Part.STEP;
             }
             controller.stepOnce();
             wake = now + periodNanos;
@@ -124,22 +138,20 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
                 end(ControllerStatus.EXCEEDED_MEMORY);
             }
         } catch (ControllerStoppedError e) {
-            end(broke != null ? ControllerStatus.BROKE_RULE : hung ? ControllerStatus.HUNG : ControllerStatus.STOPPED);
+            // Why it was stopped (a rule, a hang, the run's stop) is the life's reason already.
+            end(ControllerStatus.STOPPED);
         } catch (OutOfMemoryError e) {
             HeapWatch.ranOut();
-            failure = e;
+            life.failedWith(e);
             say(ConsoleLine.Kind.ERROR, "controller " + name + " allocated without bound: the Java heap ran out; the"
                     + " controller was stopped and the robot's motors set to 0");
             end(ControllerStatus.EXCEEDED_MEMORY);
         } catch (RuntimeException | Error e) {
-            failure = e;
-            say(ConsoleLine.Kind.ERROR, "threw " + e + " in " + phase + "; the robot was stopped.\n" + ControllerFailures.studentTrace(e));
+            life.failedWith(e);
+            say(ConsoleLine.Kind.ERROR, "threw " + e + " in " + part + "; the robot was stopped.\n" + ControllerFailures.studentTrace(e));
             end(ControllerStatus.FAILED);
         } finally {
-            stepping = false;
-            if (status.ended()) {
-                StepWatchdog.unwatch(this);
-            }
+            stepStartedAt = NOT_STEPPING;
             if (outer == null) {
                 SimClock.unbind();
             } else {
@@ -151,31 +163,29 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
     /** The watchdog's look: a step running for the hang timeout is stopped at its next loop checkpoint. */
     @Override
     public boolean overdue(long nowNanos) {
-        java.util.function.BooleanSupplier stop = runStop;
-        if (stepping && !hung && !stopAsked && stop != null && nowNanos - stepStartedAt > STOP_PATIENCE_NANOS
-                && stop.getAsBoolean()) {
-            // The run is being stopped (a signal, the window's Stop) while a step loops: it ends at its next loop.
-            stopAsked = true;
-            SimClock.stopRequested();
-            return true;
+        long started = stepStartedAt;
+        if (started == NOT_STEPPING || life.state().phase() != ControllerLife.Phase.RUNNING) {
+            return false;
         }
-        if (stepping && !hung && !stopAsked && nowNanos - stepStartedAt > hangTimeoutNanos) {
+        java.util.function.BooleanSupplier stop = runStop;
+        if (stop != null && nowNanos - started > STOP_PATIENCE_NANOS && stop.getAsBoolean()) {
+            // The run is being stopped (a signal, the window's Stop) while a step loops: it ends at its next loop.
+            return life.on(ControllerLife.Event.STOP);
+        }
+        if (nowNanos - started > hangTimeoutNanos) {
             // Told before the step is stopped, so the message comes before the run's end.
             say(ConsoleLine.Kind.ERROR, String.format(java.util.Locale.ROOT, "controller %s (%s): %s did not return"
                     + " for %.1f s of real time at simulated time %.3f s; a step must read the sensors, set the motors and"
                     + " return (no loops that wait). The controller was stopped and the robot's motors set to 0.",
-                    name, type.getName(), phase, (nowNanos - stepStartedAt) / 1e9, now / 1e9));
-            hung = true;
-            SimClock.stopRequested();
-            return true;
+                    name, type.getName(), part, (nowNanos - started) / 1e9, now / 1e9));
+            return life.on(ControllerLife.Event.FAULT, ControllerStatus.HUNG);
         }
         return false;
     }
 
     /** The step broke a rule (see {@link Containment}): it is stopped with a named fault. */
     void brokeRule(String what) {
-        if (broke == null) {
-            broke = what;
+        if (life.on(ControllerLife.Event.FAULT, ControllerStatus.BROKE_RULE)) {
             say(ConsoleLine.Kind.ERROR, "controller " + name + " (" + type.getName() + ") " + what
                     + "; the controller was stopped and the robot's motors set to 0");
         }
@@ -183,8 +193,9 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
 
     /** Checked at every loop back-edge of the step's code. */
     void checkpoint() {
-        if (hung || stopAsked) {
-            throw new ControllerStoppedError("controller " + name + (hung ? " hung in " : " was stopped in ") + phase);
+        if (life.stopRequested()) {
+            boolean hung = life.state().reason() == ControllerStatus.HUNG;
+            throw new ControllerStoppedError("controller " + name + (hung ? " hung in " : " was stopped in ") + part);
         }
     }
 
@@ -193,42 +204,37 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
         runStop = stop;
     }
 
-    private volatile java.util.function.BooleanSupplier runStop;
-    /** Set by the watchdog when the run is being stopped while a step loops. */
-    private volatile boolean stopAsked;
-    /** While the run is being stopped, how long a step may run before it is stopped, ns. */
-    private static final long STOP_PATIENCE_NANOS = 200_000_000L;
-
+    /** Its code is over: the life ends with {@code end} (or the fault that stopped it), the robot stops. */
     private void end(ControllerStatus end) {
-        if (hung || stopAsked) {
-            SimClock.stopSettled();
+        if (life.on(ControllerLife.Event.UNWOUND, end)) {
+            robot.emergencyStop();
+            if (life.status() == ControllerStatus.EXCEEDED_MEMORY) {
+                controller = null;
+            }
         }
-        status = end;
-        robot.emergencyStop();
-        if (end == ControllerStatus.EXCEEDED_MEMORY) {
-            controller = null;
-        }
+        StepWatchdog.unwatch(this);
+        life.ownThreadOver();
     }
-
 
     /** The run is over: the controller stops where it is (as a thread-style one does at its next call; no cleanup runs). */
     void stop() {
-        StepWatchdog.unwatch(this);
-        if (status != ControllerStatus.RUNNING) {
-            if (status == ControllerStatus.NOT_STARTED) {
-                status = ControllerStatus.STOPPED;
-            }
+        if (life.state().phase() == ControllerLife.Phase.NOT_STARTED) {
+            life.on(ControllerLife.Event.STOP);
             return;
         }
-        status = ControllerStatus.STOPPED;
-        robot.emergencyStop();
+        if (!life.status().ended()) {
+            life.on(ControllerLife.Event.STOP);
+            end(ControllerStatus.STOPPED);
+        }
+        StepWatchdog.unwatch(this);
     }
 
     // ------------------------------------------------------------------ the port's clock
 
     @Override
     public void enter() {
-        if (status == ControllerStatus.NOT_STARTED && !stepping) {
+        boolean stepping = stepStartedAt != NOT_STEPPING;
+        if (!stepping && life.state().phase() == ControllerLife.Phase.NOT_STARTED) {
             return; // the constructor looking around: free, no time passes
         }
         if (!stepping) {
@@ -250,7 +256,7 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
 
     @Override
     public void sleepNanos(long nanos) {
-        throw new IllegalStateException("step controller " + name + " slept in " + phase + ": a step must return instead"
+        throw new IllegalStateException("step controller " + name + " slept in " + part + ": a step must return instead"
                 + " (the next step comes " + periodNanos / 1_000_000 + " ms after this one; change periodMillis() to"
                 + " step less often)");
     }
@@ -258,13 +264,13 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
     @Override
     public void say(ConsoleLine.Kind kind, String text) {
         if (kind == ConsoleLine.Kind.ERROR) {
-            lastError = text;
+            life.error(text);
         }
         console.accept(new ConsoleLine(now, name, kind, text));
     }
 
     @Override
     public String lastError() {
-        return lastError;
+        return life.lastError();
     }
 }
