@@ -21,6 +21,8 @@ public abstract class Controller extends Thread {
     private final MessagePasser messages;
     private final Sensor[] sensors;
     private volatile boolean active = true;
+    /** How many times {@link #doWork()} has returned: tells a doWork() that returns at once from one that loops. */
+    private volatile long rounds;
 
     /** For subclasses with no constructor: the backend that creates the controller binds it. */
     protected Controller() {
@@ -60,6 +62,7 @@ public abstract class Controller extends Thread {
         setup();
         while (active) {
             doWork();
+            rounds++;
         }
         cleanup();
     }

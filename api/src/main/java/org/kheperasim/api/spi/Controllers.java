@@ -164,6 +164,27 @@ public final class Controllers {
     }
 
     /**
+     * How many times a {@link Controller}'s {@code doWork()} has returned so far, for telling a
+     * {@code doWork()} that keeps returning without a robot call (no simulated time passes) from one
+     * that loops inside.
+     *
+     * @param controller a controller's thread
+     * @return the count, or -1 when it is not a {@link Controller}
+     */
+    public static long doWorkRounds(Thread controller) {
+        if (!(controller instanceof Controller)) {
+            return -1;
+        }
+        try {
+            java.lang.reflect.Field f = Controller.class.getDeclaredField("rounds");
+            f.setAccessible(true);
+            return f.getLong(controller);
+        } catch (ReflectiveOperationException | RuntimeException e) {
+            return -1;
+        }
+    }
+
+    /**
      * The {@link ControllerStyle} that claims a class which does not extend {@code Thread}, looked
      * up in the class's own loader so that the style and the class share their base classes.
      *

@@ -117,9 +117,19 @@ final class ControllerFailures {
      * @param nowNanos its simulated time, ns
      * @param thread where it hung: empty for its own thread, else which thread it started
      * @param realSeconds the real time it ran without an API call
+     * @param returnsAtOnce its {@code doWork()} keeps returning without a robot call (rather than looping inside)
      * @return the message for a controller the watchdog found hung
      */
-    static String hung(String who, long nowNanos, String thread, double realSeconds) {
+    static String hung(String who, long nowNanos, String thread, double realSeconds, boolean returnsAtOnce) {
+        if (returnsAtOnce) {
+            return String.format(java.util.Locale.ROOT,
+                    "controller %s stopped making API calls at simulated time %.3f s: its doWork() returns without"
+                            + " reading a sensor, setting a motor or sleeping, and is called again at once, so no simulated"
+                            + " time can pass (an empty doWork() does this; it went on for %.1f s of real time). Give"
+                            + " doWork() its work, or end it with sleepMillis(100) to wait. The controller was stopped and"
+                            + " the robot's motors set to 0.",
+                    who, nowNanos / 1e9, realSeconds);
+        }
         return String.format(java.util.Locale.ROOT,
                 "controller %s stopped making API calls at simulated time %.3f s%s: it ran for %.1f s of"
                         + " real time without reading a sensor, setting a motor or sleeping. A loop that waits for"
