@@ -4,6 +4,8 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import org.kheperasim.link.robot.ControllerLoader;
 import org.kheperasim.link.robot.Recorder;
 import org.kheperasim.link.robot.RobotBackend;
@@ -66,34 +68,72 @@ final class RunCommand implements Callable<Integer> {
                         + ", " + connection.baud + " baud");
                 backend.onSample(recorder);
             }
+            RobotRun run = new RobotRun(backend, type, line -> {
+                out.println(line);
+                out.flush();
+            });
+            // On SIGTERM or Ctrl-C the run is asked to stop, and the JVM waits (up to a grace) for the
+            // lines below, which say whether the robot confirmed its stop: on the real robot that is
+            // what the user needs to know. Given to the link, so a serial port is still open meanwhile.
+            CountDownLatch reported = new CountDownLatch(1);
+            Thread onSignal = new Thread(() -> {
+                run.requestStop("stopped by a signal (SIGTERM or Ctrl-C)");
+                try {
+                    reported.await(REPORT_GRACE_SECONDS, TimeUnit.SECONDS);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                }
+            }, "khepera-link-report-on-exit");
+            session.link().addExitHook(onSignal);
             RobotRun.Result r;
             try {
-                r = new RobotRun(backend, type, line -> {
-                    out.println(line);
-                    out.flush();
-                }).run((long) (seconds * 1000));
-            } finally {
-                if (recorder != null) {
-                    recorder.close();
+                try {
+                    r = run.run((long) (seconds * 1000));
+                } finally {
+                    if (recorder != null) {
+                        recorder.close();
+                    }
                 }
+                report(out, r);
+            } finally {
+                reported.countDown();
+                session.link().removeExitHook(onSignal);
             }
-            out.println("ended: " + r.detail());
-            out.println(String.format(Locale.ROOT, "poll rate %.1f cycles/s; %d exchanges, %d retries, %d lines skipped;"
-                    + " mean round trip %.2f ms", r.pollRateHz(), r.stats().exchanges(), r.stats().retries(),
-                    r.stats().skippedLines(), r.stats().meanRoundTripNanos() / 1e6));
-            out.println(r.stopAcknowledged() ? "robot stopped (D,0,0 acknowledged)"
-                    : "D,0,0 was sent but not acknowledged: CHECK THE ROBOT HAS STOPPED");
-            if (record != null) {
-                out.println("recorded to " + record.toAbsolutePath());
-            }
-            if (r.failure() != null) {
-                r.failure().printStackTrace(out);
-            }
-            out.flush();
-            return switch (r.end()) {
-                case FINISHED, TIME_UP, STOPPED -> ExitCodes.OK;
-                case FAILED, LINK_LOST -> ExitCodes.FAILED;
-            };
+            return exitStatus(r);
         }
+    }
+
+    /** How long the JVM, stopped by a signal, waits for the run's last lines before it exits, s. */
+    private static final long REPORT_GRACE_SECONDS = 15;
+
+    private void report(PrintWriter out, RobotRun.Result r) {
+        out.println("ended: " + r.detail());
+        out.println(String.format(Locale.ROOT, "poll rate %.1f cycles/s; %d exchanges, %d retries, %d lines skipped;"
+                + " mean round trip %.2f ms", r.pollRateHz(), r.stats().exchanges(), r.stats().retries(),
+                r.stats().skippedLines(), r.stats().meanRoundTripNanos() / 1e6));
+        out.println(r.stopAcknowledged() ? "robot stopped (D,0,0 acknowledged)"
+                : "D,0,0 was sent but not acknowledged: CHECK THE ROBOT HAS STOPPED");
+        if (record != null) {
+            out.println("recorded to " + record.toAbsolutePath());
+        }
+        if (r.failure() != null) {
+            r.failure().printStackTrace(out);
+        }
+        out.flush();
+    }
+
+    /**
+     * @param r how the run ended
+     * @return the exit status: a failure, and any end whose stop the robot did not confirm, is not a
+     *     success (a script must not move on while the robot may still be driving)
+     */
+    static int exitStatus(RobotRun.Result r) {
+        if (!r.stopAcknowledged()) {
+            return ExitCodes.FAILED;
+        }
+        return switch (r.end()) {
+            case FINISHED, TIME_UP, STOPPED -> ExitCodes.OK;
+            case FAILED, LINK_LOST -> ExitCodes.FAILED;
+        };
     }
 }

@@ -16,6 +16,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.link.fake.FakeRobotOnPty;
+import org.kheperasim.link.robot.RobotRun;
+import org.kheperasim.link.session.Session;
 
 /** The commands a lab user types, against the fake robot on a pty pair. */
 @Timeout(value = 90, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
@@ -128,8 +130,26 @@ class CliPtyTest {
                 p.destroyForcibly();
             }
             Thread.sleep(200);
-            assertEquals("D,0,0", fake.robot().lastReceived(), Files.readString(dir.resolve("out.txt")));
+            String printed = Files.readString(dir.resolve("out.txt"));
+            assertEquals("D,0,0", fake.robot().lastReceived(), printed);
             assertTrue(fake.robot().speeds()[0] == 0);
+            // The user at the robot is told, as on a normal end, that the robot confirmed its stop.
+            assertTrue(printed.contains("ended: stopped by a signal") || printed.contains("ended: the program is exiting"),
+                    printed);
+            assertTrue(printed.contains("robot stopped (D,0,0 acknowledged)"), printed);
+            assertEquals(143, p.exitValue(), printed);
+        }
+    }
+
+    @Test
+    void anEndWhoseStopTheRobotDidNotConfirmIsNotASuccess() {
+        Session.Stats none = new Session.Stats(0, 0, 0, 0, 0, 0);
+        for (RobotRun.End end : RobotRun.End.values()) {
+            RobotRun.Result confirmed = new RobotRun.Result(end, "", 0, none, true, null);
+            RobotRun.Result unconfirmed = new RobotRun.Result(end, "", 0, none, false, null);
+            assertEquals(1, RunCommand.exitStatus(unconfirmed), end + " without D,0,0 acknowledged");
+            boolean ok = end == RobotRun.End.FINISHED || end == RobotRun.End.TIME_UP || end == RobotRun.End.STOPPED;
+            assertEquals(ok ? 0 : 1, RunCommand.exitStatus(confirmed), end.toString());
         }
     }
 }
