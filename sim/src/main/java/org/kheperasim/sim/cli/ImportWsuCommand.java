@@ -2,11 +2,9 @@ package org.kheperasim.sim.cli;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
+import org.kheperasim.sim.files.AtomicFiles;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -86,29 +84,12 @@ final class ImportWsuCommand implements Callable<Integer> {
         }
     }
 
-    /** Write through a temporary file beside the target, then rename: a reader never sees half a file. */
+    /** The one atomic save: a reader never sees half a file, a link stays a link, the file keeps its mode. */
     private static void writeAtomically(Path file, String text) {
-        Path target = file.toAbsolutePath();
-        Path tmp = null;
         try {
-            tmp = Files.createTempFile(target.getParent(), "." + target.getFileName() + ".", ".tmp");
-            Files.writeString(tmp, text, StandardCharsets.UTF_8);
-            try {
-                Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE);
-            } catch (AtomicMoveNotSupportedException e) {
-                Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
-            }
-            tmp = null;
+            AtomicFiles.write(file, text);
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot write arena file " + file + ": " + e, e);
-        } finally {
-            if (tmp != null) {
-                try {
-                    Files.deleteIfExists(tmp);
-                } catch (IOException e) {
-                    // The write already failed; that error is the one to report.
-                }
-            }
+            throw new UncheckedIOException("cannot write arena file " + file + ": " + e.getMessage(), e);
         }
     }
 }

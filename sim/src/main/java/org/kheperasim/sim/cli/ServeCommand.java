@@ -55,7 +55,8 @@ final class ServeCommand implements Callable<Integer> {
     SettingsOptions settingsOptions = new SettingsOptions();
 
     @Option(names = "--pty", paramLabel = "PATH",
-            description = "also make a pseudo-terminal at PATH for serial-only clients (starts socat; prints the command if it is missing)")
+            description = "also make a pseudo-terminal at PATH for serial-only clients (Linux): a program that opens PATH"
+                    + " as a serial port drives the robot")
     Path pty;
 
     @Option(names = "--idle-timeout", paramLabel = "SECONDS", defaultValue = "60",
@@ -132,20 +133,15 @@ final class ServeCommand implements Callable<Integer> {
             out.println("connect: java -jar robot-link/target/khepera-link.jar run --port " + servers.get(0).url()
                     + " --controller WallFollower");
             if (pty != null) {
-                if (PtyBridge.socatInstalled()) {
-                    for (int i = 0; i < servers.size(); i++) {
-                        java.nio.file.Path path = i == 0 ? pty : pty.resolveSibling(pty.getFileName() + "-" + i);
-                        PtyBridge bridge = PtyBridge.start(path, servers.get(i).port(), out::println);
-                        bridges.add(bridge);
-                        out.println((servers.size() == 1 ? "" : "robot " + i + " ") + "pty: " + path + " (socat: "
-                                + String.join(" ", bridge.commandLine()) + ")");
-                    }
-                    out.println("connect: java -jar robot-link/target/khepera-link.jar run --port " + pty
-                            + " --controller WallFollower");
-                } else {
-                    out.println("socat is not installed, so no pty was made. Install it, or run yourself:");
-                    out.println("  " + String.join(" ", PtyBridge.command(pty, servers.get(0).port())));
+                for (int i = 0; i < servers.size(); i++) {
+                    java.nio.file.Path path = i == 0 ? pty : pty.resolveSibling(pty.getFileName() + "-" + i);
+                    PtyBridge bridge = PtyBridge.start(path, servers.get(i).port(), out::println);
+                    bridges.add(bridge);
+                    out.println((servers.size() == 1 ? "" : "robot " + i + " ") + "pty: " + path + " (" + bridge.device()
+                            + "; open it as a serial port)");
                 }
+                out.println("connect: java -jar robot-link/target/khepera-link.jar run --port " + pty
+                        + " --controller WallFollower");
             }
             out.println("Ctrl-C stops the server (the robots stop first).");
             out.flush();

@@ -1,120 +1,91 @@
 package org.kheperasim.sim.serve;
 
-import java.io.File;
 import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.Socket;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
-import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 
 /**
  * A pseudo-terminal in front of the protocol server, for clients that only open serial ports (a C
- * program, a MATLAB toolbox, robot-link with a path): socat makes a pty with a link at a path the
- * user chose and, once a program opens it, connects it to the server's TCP port.
+ * program, Player's Khepera driver, a MATLAB toolbox, robot-link with a path): a link at the path
+ * the user chose leads to the slave of a pseudo-terminal this bridge holds ({@link PtyDevice}), and
+ * each program that opens it becomes a client of the server, over TCP on this computer, as long as
+ * it keeps it open.
  *
- * <p>The command is {@code socat -d -d pty,raw,echo=0,wait-slave,link=PATH tcp:127.0.0.1:PORT}.
- * {@code wait-slave} holds the TCP connection back until a program opens the pty, so an idle pty
- * does not take the robot's one client slot. When that program closes the pty, socat ends (and the
- * robot stops, its client having gone); the bridge starts socat again so the path is there for the
- * next program.
+ * <p>One pseudo-terminal serves every client in turn, as a serial port does, so the path is never
+ * missing nor dead between two of them. The bridge looks every 2 ms whether a program has the slave
+ * open: a program that opens it and sends at once is answered in a few milliseconds (Player's driver
+ * waits 0.3 s). When the program closes it, the connection closes (the robot stops) and whatever
+ * either side left unread is thrown away, so nothing of one client reaches the next; a program that
+ * opened, wrote and closed the port within one look is not seen, and what it wrote is thrown away
+ * too. The pseudo-terminal is raw for each new client (no echo, bytes as sent), as a fresh port.
+ *
+ * <p>No other process is involved: the pseudo-terminal ends with this JVM, however it ends. The link
+ * is removed on {@link #close()} and at exit; one left by a killed JVM (dangling) is replaced by the
+ * next bridge on that path. Linux only (elsewhere {@link #start} says to connect over TCP).
  */
 public final class PtyBridge implements AutoCloseable {
+    /** How often the bridge looks whether a program has opened the pty, ms. */
+    private static final int LOOK_MILLIS = 2;
+    /** How long a read of the pty waits for input while a client is there, ms (also how soon it sees the client leave). */
+    private static final int READ_WAIT_MILLIS = 20;
+
     private final Path link;
-    private final List<String> command;
+    private final int port;
+    private final PtyDevice pty;
     private final Consumer<String> log;
-    private final Thread supervisor;
+    private final Thread bridge;
+    private final Thread exitHook = new Thread(this::closeQuietly, "pty-bridge-exit");
     private volatile boolean closed;
-    private volatile Process socat;
+    /** The connection of the client on the pty, or null; only the bridge's thread sets it. */
+    private volatile Socket connection;
+    private volatile Thread replies;
 
-    private PtyBridge(Path link, List<String> command, Consumer<String> log) {
+    private PtyBridge(Path link, int port, PtyDevice pty, Consumer<String> log) {
         this.link = link;
-        this.command = command;
+        this.port = port;
+        this.pty = pty;
         this.log = log;
-        this.supervisor = new Thread(this::supervise, "pty-bridge");
-        this.supervisor.setDaemon(true);
+        this.bridge = new Thread(this::bridge, "pty-bridge " + link.getFileName());
+        this.bridge.setDaemon(true);
     }
 
     /**
-     * @param link where the pty's link goes
-     * @param port the server's TCP port on this computer
-     * @return the socat command line
-     */
-    public static List<String> command(Path link, int port) {
-        return List.of("socat", "-d", "-d", "pty,raw,echo=0,wait-slave,link=" + link.toAbsolutePath(),
-                "tcp:127.0.0.1:" + port);
-    }
-
-    /** @return true when socat is on the PATH */
-    public static boolean socatInstalled() {
-        for (String dir : System.getenv().getOrDefault("PATH", "/usr/bin:/bin").split(File.pathSeparator)) {
-            if (!dir.isEmpty() && Files.isExecutable(Path.of(dir, "socat"))) {
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /**
-     * Start socat, and start it again each time it ends, until {@link #close()}.
+     * Make the pty, put its link at {@code link} and serve each program that opens it, until {@link #close()}.
      *
-     * @param link where the pty's link goes (its folder must exist; an existing file there is an error)
+     * @param link where the pty's link goes (its folder must exist; an existing file there is an
+     *             error, but for a dangling link a killed bridge left)
      * @param port the server's TCP port on this computer
-     * @param log told when the pty is ready and when socat restarts
+     * @param log  told when a program opens or closes the pty
      * @return the bridge, its link in place
-     * @throws IOException when socat is missing, the link cannot be made, or socat does not start in 10 s
+     * @throws IOException when the pty or the link cannot be made, naming why
      */
-    public static PtyBridge start(Path link, int port, Consumer<String> log) throws IOException, InterruptedException {
-        if (!socatInstalled()) {
-            throw new IOException("socat is not installed (apt-get install socat); without it, connect over TCP,"
-                    + " or make the pty yourself: " + String.join(" ", command(link, port)));
+    public static PtyBridge start(Path link, int port, Consumer<String> log) throws IOException {
+        Path abs = link.toAbsolutePath();
+        if (Files.isSymbolicLink(abs) && !Files.exists(abs)) {
+            Files.delete(abs); // a link left by a bridge that was killed
         }
-        if (Files.exists(link, java.nio.file.LinkOption.NOFOLLOW_LINKS)) {
+        if (Files.exists(abs, LinkOption.NOFOLLOW_LINKS)) {
             throw new IOException(link + " already exists; choose another --pty path or remove it");
         }
-        PtyBridge b = new PtyBridge(link, command(link, port), log);
-        b.launch();
-        b.awaitLink();
-        b.supervisor.start();
+        PtyDevice pty = PtyDevice.open();
+        PtyBridge b = new PtyBridge(abs, port, pty, log);
+        try {
+            Files.createSymbolicLink(abs, Path.of(pty.slavePath()));
+        } catch (IOException | UnsupportedOperationException e) {
+            pty.close();
+            throw new IOException("cannot make the link " + link + " to " + pty.slavePath() + ": " + e.getMessage(), e);
+        }
+        Runtime.getRuntime().addShutdownHook(b.exitHook);
+        b.bridge.start();
         return b;
-    }
-
-    private void launch() throws IOException {
-        socat = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD)
-                .start();
-    }
-
-    private void awaitLink() throws IOException, InterruptedException {
-        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (!Files.exists(link)) {
-            if (!socat.isAlive() || System.nanoTime() > end) {
-                socat.destroyForcibly();
-                throw new IOException("socat did not make the pty at " + link + " (exit " +
-                        (socat.isAlive() ? "none, still running" : socat.exitValue()) + "): " + String.join(" ", command));
-            }
-            Thread.sleep(10);
-        }
-    }
-
-    private void supervise() {
-        while (!closed) {
-            try {
-                socat.waitFor();
-                if (closed) {
-                    return;
-                }
-                log.accept("the program on " + link + " closed it; the pty is ready again");
-                // socat removes its link on exit; give it a moment, then start a fresh one.
-                Thread.sleep(50);
-                launch();
-                awaitLink();
-            } catch (InterruptedException e) {
-                return;
-            } catch (IOException e) {
-                log.accept("cannot restart socat for " + link + ": " + e.getMessage());
-                return;
-            }
-        }
     }
 
     /** @return the pty's link */
@@ -122,23 +93,175 @@ public final class PtyBridge implements AutoCloseable {
         return link;
     }
 
-    /** @return the socat command line in use */
-    public List<String> commandLine() {
-        return command;
+    /** @return the pty the link leads to, e.g. {@code /dev/pts/3} */
+    public String device() {
+        return pty.slavePath();
     }
 
-    /** Stop socat (a program on the pty sees a hang-up) and stop restarting it. */
-    @Override
-    public void close() throws InterruptedException {
-        closed = true;
-        supervisor.interrupt();
-        supervisor.join(5000);
-        Process p = socat;
-        if (p != null) {
-            p.destroy();
-            if (!p.waitFor(5, TimeUnit.SECONDS)) {
-                p.destroyForcibly();
+    private void bridge() {
+        byte[] buffer = new byte[4096];
+        while (!closed) {
+            int events = pty.poll(connection == null ? 0 : READ_WAIT_MILLIS);
+            boolean present = (events & PtyDevice.POLLHUP) == 0;
+            if (!present) {
+                if (connection != null || (events & PtyDevice.POLLIN) != 0) {
+                    // The client left (or one came and went unseen): its session ends with nothing left over.
+                    leave(buffer);
+                }
+                pause();
+                continue;
             }
+            if (connection == null && !connect()) {
+                pause();
+                continue;
+            }
+            if ((events & PtyDevice.POLLIN) != 0) {
+                int n = pty.read(buffer);
+                if (n > 0 && !forward(buffer, n)) {
+                    // The server let the connection go (it was idle, or the server closed): the next
+                    // bytes the client sends open a new one.
+                    drop();
+                }
+            }
+        }
+    }
+
+    private static void pause() {
+        try {
+            TimeUnit.MILLISECONDS.sleep(LOOK_MILLIS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** A program has opened the pty: it becomes the server's client. */
+    private boolean connect() {
+        try {
+            Socket s = new Socket();
+            s.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), 2000);
+            s.setTcpNoDelay(true);
+            connection = s;
+            replies = new Thread(() -> relayReplies(s), "pty-bridge-replies " + link.getFileName());
+            replies.setDaemon(true);
+            replies.start();
+            log.accept("a program opened " + link + " (" + pty.slavePath() + "); it drives the robot");
+            return true;
+        } catch (IOException e) {
+            if (!closed) {
+                log.accept("a program opened " + link + ", but the server does not answer (" + e.getMessage() + ")");
+            }
+            return false;
+        }
+    }
+
+    private boolean forward(byte[] buffer, int n) {
+        try {
+            OutputStream out = connection.getOutputStream();
+            out.write(buffer, 0, n);
+            out.flush();
+            return true;
+        } catch (IOException e) {
+            return false;
+        }
+    }
+
+    /** What the server sends goes to the program on the pty, until the connection closes. */
+    private void relayReplies(Socket s) {
+        byte[] buffer = new byte[4096];
+        try (InputStream in = s.getInputStream()) {
+            int n;
+            while ((n = in.read(buffer)) > 0) {
+                pty.write(buffer, n);
+            }
+        } catch (IOException e) {
+            // The connection or the pty closed: the session is over.
+        }
+    }
+
+    /** The client closed the pty: its connection closes, and what either side left unread goes. */
+    private void leave(byte[] buffer) {
+        boolean had = connection != null;
+        drop();
+        // Only while nobody has it open: a client that opened it meanwhile keeps its first bytes and its settings.
+        while (pty.poll(0) == (PtyDevice.POLLIN | PtyDevice.POLLHUP) && pty.read(buffer) > 0) {
+            // Bytes of a client that has gone: for nobody.
+        }
+        if ((pty.poll(0) & PtyDevice.POLLHUP) != 0) {
+            pty.discardPending();
+            pty.makeRaw();
+        }
+        if (had) {
+            log.accept("the program on " + link + " closed it; the pty is ready for the next");
+        }
+    }
+
+    /** Close the connection and wait for its replies to stop, so none is written after. */
+    private void drop() {
+        Socket s = connection;
+        connection = null;
+        if (s != null) {
+            try {
+                s.close();
+            } catch (IOException ignored) {
+                // Closing anyway.
+            }
+        }
+        Thread r = replies;
+        replies = null;
+        if (r != null) {
+            try {
+                r.join(2000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    /** Close the pty (a program on it sees a hang-up), end its client's connection (the robot stops) and remove the link. */
+    @Override
+    public void close() {
+        closeQuietly();
+        try {
+            Runtime.getRuntime().removeShutdownHook(exitHook);
+        } catch (IllegalStateException exiting) {
+            // The JVM is exiting: the hook runs, and finds the bridge closed.
+        }
+    }
+
+    private synchronized void closeQuietly() {
+        if (closed) {
+            return;
+        }
+        closed = true;
+        Socket s = connection;
+        if (s != null) {
+            try {
+                s.close();
+            } catch (IOException ignored) {
+                // Closing anyway.
+            }
+        }
+        // The descriptor is closed only once no thread of the bridge can use it (its number could be reused).
+        join(bridge);
+        join(replies);
+        pty.close();
+        try {
+            if (Files.isSymbolicLink(link) && Path.of(pty.slavePath()).equals(Files.readSymbolicLink(link))) {
+                Files.delete(link);
+            }
+        } catch (IOException ignored) {
+            // Nothing more to do about it.
+        }
+    }
+
+    private static void join(Thread t) {
+        if (t == null || t == Thread.currentThread()) {
+            return;
+        }
+        try {
+            t.join(2000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
     }
 }

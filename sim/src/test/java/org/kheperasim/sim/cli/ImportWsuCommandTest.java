@@ -79,6 +79,37 @@ class ImportWsuCommandTest {
     }
 
     @Test
+    void itSavesAsEveryFileIsSavedKeepingALinkAndTheFilesMode() throws Exception {
+        org.junit.jupiter.api.Assumptions.assumeTrue(java.nio.file.FileSystems.getDefault().supportedFileAttributeViews()
+                .contains("posix"), "POSIX permissions only");
+        Path map = dir.resolve("course-map");
+        Files.write(map, world());
+        // A new file gets the usual mode (the process's umask), not a temporary file's 0600.
+        Path fresh = dir.resolve("fresh.arena");
+        assertEquals(0, main("import-wsu", map.toString(), "-o", fresh.toString()), err);
+        java.util.Set<java.nio.file.attribute.PosixFilePermission> perms = Files.getPosixFilePermissions(fresh);
+        assertTrue(perms.contains(java.nio.file.attribute.PosixFilePermission.OTHERS_READ)
+                || perms.contains(java.nio.file.attribute.PosixFilePermission.GROUP_READ)
+                || !defaultsAreReadable(), "a new arena file is readable as any other file: " + perms);
+        // An existing file keeps its mode; a link stays a link and its target gets the arena.
+        Path real = dir.resolve("shared.arena");
+        Files.writeString(real, "old");
+        Files.setPosixFilePermissions(real, java.nio.file.attribute.PosixFilePermissions.fromString("rw-rw-r--"));
+        Path link = Files.createSymbolicLink(dir.resolve("mine.arena"), real.getFileName());
+        assertEquals(0, main("import-wsu", map.toString(), "-o", link.toString()), err);
+        assertTrue(Files.isSymbolicLink(link), "the link is still a link");
+        assertTrue(Files.readString(real).contains("# Imported from the WSU Khepera Simulator"), "its target got the arena");
+        assertEquals("rw-rw-r--", java.nio.file.attribute.PosixFilePermissions.toString(Files.getPosixFilePermissions(real)));
+    }
+
+    /** @return true when a file made now is readable by group or others (the umask allows it) */
+    private boolean defaultsAreReadable() throws IOException {
+        Path probe = Files.createFile(dir.resolve("probe"));
+        String p = java.nio.file.attribute.PosixFilePermissions.toString(Files.getPosixFilePermissions(probe));
+        return p.charAt(3) == 'r' || p.charAt(6) == 'r';
+    }
+
+    @Test
     void withoutOutputItWritesTheMapsNameDotArenaInTheCurrentFolder() throws Exception {
         Path map = dir.resolve("gates");
         Files.write(map, world());

@@ -37,7 +37,7 @@ import org.kheperasim.sim.run.Simulation;
 
 /**
  * The end-to-end twin: the paper's wall follower in the maze, (a) run by the simulator directly
- * (lockstep, deterministic) and (b) run by robot-link, unchanged, through a socat pseudo-terminal
+ * (lockstep, deterministic) and (b) run by robot-link, unchanged, through the protocol server's pseudo-terminal
  * to the simulator's protocol server, in real time. Both must enter every corridor.
  *
  * <p>To fit a CI budget the served robot runs at {@link #SPEED}× real time (simulated seconds per
@@ -69,12 +69,6 @@ class TwinTest {
     @Test
     @Timeout(value = 300, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void theWallFollowerCoversTheMazeDirectlyAndThroughTheProtocolServer() throws Exception {
-        if (!PtyBridge.socatInstalled()) {
-            if ("true".equals(System.getenv("CI"))) {
-                fail("socat is not installed, and CI=true requires the pty tests to run: apt-get install -y socat");
-            }
-            Assumptions.assumeTrue(false, "socat is not installed (apt-get install -y socat); twin test skipped");
-        }
         Arena maze = ArenaFormat.loadBundled("maze");
         Settings settings = Settings.defaults();
         List<String> corridors = maze.regions().stream().map(Region::name).collect(Collectors.toList());
@@ -92,7 +86,7 @@ class TwinTest {
         double doneA = enteredA.values().stream().mapToDouble(Double::doubleValue).max().orElse(Double.NaN);
         assertEquals(new TreeSet<>(corridors), new TreeSet<>(enteredA.keySet()), "(a) direct: every corridor");
 
-        // (b) robot-link -> socat pty -> protocol server, at SPEED x real time.
+        // (b) robot-link -> serve's pty -> protocol server, at SPEED x real time.
         List<Pose> served = java.util.Collections.synchronizedList(new ArrayList<>());
         ServedRobot robot = new ServedRobot(maze, settings, 1, SPEED);
         // At SPEED x real time a client starved of the processor (a busy machine) would find the
