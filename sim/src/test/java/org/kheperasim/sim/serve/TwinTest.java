@@ -38,13 +38,16 @@ import org.kheperasim.sim.run.Simulation;
 /**
  * The end-to-end twin: the paper's wall follower in the maze, (a) run by the simulator directly
  * (lockstep, deterministic) and (b) run by robot-link, unchanged, through the protocol server's pseudo-terminal
- * to the simulator's protocol server, in real time. Both must enter every corridor.
+ * to the simulator's protocol server, in real time. For its first {@link #SERVED_S} simulated
+ * seconds, (b) follows (a): the same corridors in the same order, and the same path within a few
+ * millimetres over the first minute. (That (a) goes on to cover the whole maze is
+ * AppendixControllerTest's; the point here is the wire, and more of it would only cost wall time.)
  *
- * <p>To fit a CI budget the served robot runs at {@link #SPEED}× real time (simulated seconds per
- * wall second; the server divides its reply pacing by the same factor), so its ~800 simulated
- * seconds take ~80 wall seconds. The controller's own {@code Thread.sleep(100)} stays 100 ms of
- * wall time, i.e. 1 s of the served robot's time: one reason the two runs differ (see the report it
- * prints, and docs/protocol-server.md).
+ * <p>The served robot runs at {@link #SPEED}× real time (simulated seconds per wall second; the
+ * server divides its reply pacing by the same factor), so its 300 simulated seconds take 30 wall
+ * seconds. The controller's own {@code Thread.sleep(100)} stays 100 ms of wall time, i.e. 1 s of
+ * the served robot's time: one reason the two runs drift apart (see the report it prints, and
+ * docs/protocol-server.md).
  *
  * <p>Tagged {@code twin}, not {@code timing}: robot-link's controller sleeps on the wall clock, and
  * at 10x a sleep that overshoots under heavy load is a second of the served robot's time, so with
@@ -55,8 +58,10 @@ import org.kheperasim.sim.run.Simulation;
 @Tag("twin")
 class TwinTest {
     static final double SPEED = Double.parseDouble(System.getProperty("twin.speed", "10"));
-    /** Simulated seconds within which each run must enter every corridor (AppendixControllerTest's bound). */
-    static final double LIMIT_S = 1500;
+    /** Simulated seconds each run is compared over, from its start. */
+    static final double SERVED_S = 300;
+    /** Corridors (a) entered this close to the end may be entered by (b) just after it: not required. */
+    static final double MARGIN_S = 20;
     static final long SAMPLE_NANOS = 100 * Engine.TICK_NANOS;
     static final double COMPARE_S = 60;
 
@@ -76,7 +81,7 @@ class TwinTest {
         // (a) directly in the simulator.
         List<Pose> direct = new ArrayList<>();
         RunResult a = Simulation.builder().arena(maze).controller("WallFollower").seed(1).settings(settings)
-                .seconds(LIMIT_S).listener(s -> {
+                .seconds(SERVED_S).listener(s -> {
                     if (s.timeNanos() % SAMPLE_NANOS == 0) {
                         RobotView v = s.robots().get(0);
                         direct.add(new Pose(s.timeNanos() / 1e9, v.x(), v.y()));
@@ -84,7 +89,6 @@ class TwinTest {
                 }).run();
         Map<String, Double> enteredA = a.first().regionsEntered();
         double doneA = enteredA.values().stream().mapToDouble(Double::doubleValue).max().orElse(Double.NaN);
-        assertEquals(new TreeSet<>(corridors), new TreeSet<>(enteredA.keySet()), "(a) direct: every corridor");
 
         // (b) robot-link -> serve's pty -> protocol server, at SPEED x real time.
         List<Pose> served = java.util.Collections.synchronizedList(new ArrayList<>());
@@ -113,8 +117,8 @@ class TwinTest {
                 Thread watch = new Thread(() -> {
                     while (!Thread.currentThread().isInterrupted()) {
                         int n = robot.inspect(r -> r.regionsEntered().size());
-                        if (n == corridors.size() || robot.timeNanos() / 1e9 - simStart > LIMIT_S) {
-                            run.requestStop("every corridor entered, or the time limit");
+                        if (n == corridors.size() || robot.timeNanos() / 1e9 - simStart > SERVED_S) {
+                            run.requestStop("the time compared");
                             return;
                         }
                         try {
@@ -126,7 +130,7 @@ class TwinTest {
                 }, "twin-watch");
                 watch.setDaemon(true);
                 watch.start();
-                result = run.run((long) (LIMIT_S / SPEED * 1000) + 10_000);
+                result = run.run((long) (SERVED_S / SPEED * 1000) + 10_000);
                 watch.interrupt();
             }
             simEnd = robot.timeNanos() / 1e9;
@@ -155,8 +159,15 @@ class TwinTest {
                 + " (%d samples): mean distance %.1f mm, max %.1f mm; over the whole run (%d samples): mean %.1f mm, max %.1f mm%n",
                 common.size(), COMPARE_S, n, first[0], first[1], (int) whole[2], whole[0], whole[1]);
         System.out.printf(Locale.ROOT, "twin: order (a) %s%ntwin: order (b) %s%n", order(enteredA), order(enteredB));
-        assertEquals(new TreeSet<>(corridors), new TreeSet<>(enteredB.keySet()),
-                "(b) through robot-link and the protocol server: every corridor; entered " + enteredB);
+        // Each run's corridors in order, from its own start (the served robot's clock starts when the server does).
+        List<String> wantA = orderBefore(enteredA, 0, SERVED_S - MARGIN_S);
+        List<String> gotB = orderBefore(enteredB, simStart, SERVED_S);
+        assertTrue(wantA.size() >= 6, "(a) enters several corridors in " + SERVED_S + " s: " + wantA);
+        assertTrue(gotB.size() >= wantA.size() && gotB.subList(0, wantA.size()).equals(wantA),
+                "(b) through robot-link and the protocol server enters the corridors (a) does, in its order: (a) " + wantA
+                        + ", (b) " + gotB);
+        assertTrue(first[0] < 25, "(b) follows (a)'s path over the first " + COMPARE_S + " s: mean distance " + first[0]
+                + " mm");
         assertTrue(result.stopAcknowledged(), "robot-link's D,0,0 was acknowledged");
         assertTrue(n > COMPARE_S * 5, "enough samples to compare: " + n);
     }
@@ -186,6 +197,12 @@ class TwinTest {
             n++;
         }
         return new double[] {sum / Math.max(1, n), max, n};
+    }
+
+    /** @return the corridors entered between {@code from} and {@code from + span} s, in the order entered */
+    private static List<String> orderBefore(Map<String, Double> entered, double from, double span) {
+        return entered.entrySet().stream().filter(e -> e.getValue() - from <= span).sorted(Map.Entry.comparingByValue())
+                .map(Map.Entry::getKey).collect(Collectors.toList());
     }
 
     private static String order(Map<String, Double> entered) {
