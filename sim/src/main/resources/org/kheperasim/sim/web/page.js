@@ -422,6 +422,7 @@
 
   function drawArena() {
     var dpr = window.devicePixelRatio || 1, w = stage.clientWidth, h = stage.clientHeight;
+    if (!w || !h) { return; }
     if (arenaCanvas.width !== Math.round(w * dpr) || arenaCanvas.height !== Math.round(h * dpr)) {
       arenaCanvas.width = Math.round(w * dpr);
       arenaCanvas.height = Math.round(h * dpr);
@@ -666,10 +667,11 @@
     });
   }
 
-  var timeline = $('timeline');
+  var timeline = $('timeline'), marksLayer = null, marksKey = '';
 
   function drawTimeline() {
     var dpr = window.devicePixelRatio || 1, w = timeline.clientWidth, h = timeline.clientHeight;
+    if (!w || !h) { return; }   // hidden (#only=arena)
     if (timeline.width !== Math.round(w * dpr)) {
       timeline.width = Math.round(w * dpr);
       timeline.height = Math.round(h * dpr);
@@ -683,24 +685,40 @@
     g.fillRect(x0, 17, x1 - x0, 10);
     g.fillStyle = '#9DB8E8';
     g.fillRect(x0, 17, px(cur) - x0, 10);
-    marks.forEach(function (m) {
-      var x = Math.round(px(m.t)) + 0.5;
-      if (m.kind === 'contact') {
-        g.strokeStyle = C.contactMark;
-        g.lineWidth = 1;
-        line(g, x, 30, x, 40);
-      } else if (m.kind === 'cap') {
-        g.strokeStyle = C.cap;
-        g.lineWidth = 1.5;
-        line(g, x, 4, x, 14);
-      } else {
-        g.strokeStyle = C.failure;
-        g.lineWidth = 2.5;
-        if (m.failure.t === null) { g.setLineDash([3, 2]); }
-        line(g, x, 2, x, 44);
-        g.setLineDash([]);
-      }
-    });
+    // The marks do not move: drawn once for this width, then copied each frame (a swarm's run has thousands).
+    var key = w + 'x' + h + ' ' + dpr;
+    if (key !== marksKey) {
+      marksLayer = document.createElement('canvas');
+      marksLayer.width = timeline.width;
+      marksLayer.height = timeline.height;
+      var mg = marksLayer.getContext('2d');
+      mg.setTransform(dpr, 0, 0, dpr, 0, 0);
+      var done = {};
+      marks.forEach(function (m) {
+        var x = Math.round(px(m.t)) + 0.5;
+        if (done[m.kind + x] && m.kind !== 'failure') { return; }
+        done[m.kind + x] = true;
+        if (m.kind === 'contact') {
+          mg.strokeStyle = C.contactMark;
+          mg.lineWidth = 1;
+          line(mg, x, 30, x, 40);
+        } else if (m.kind === 'cap') {
+          mg.strokeStyle = C.cap;
+          mg.lineWidth = 1.5;
+          line(mg, x, 4, x, 14);
+        } else {
+          mg.strokeStyle = C.failure;
+          mg.lineWidth = 2.5;
+          if (m.failure.t === null) { mg.setLineDash([3, 2]); }
+          line(mg, x, 2, x, 44);
+          mg.setLineDash([]);
+        }
+      });
+      marksKey = key;
+    }
+    g.setTransform(1, 0, 0, 1, 0, 0);
+    g.drawImage(marksLayer, 0, 0);
+    g.setTransform(dpr, 0, 0, dpr, 0, 0);
     var cx = px(cur);
     g.fillStyle = '#1d2330';
     g.fillRect(cx - 1, 12, 2, 20);
@@ -730,11 +748,8 @@
     drawTimeline();
     $('time').textContent = (cur / 1000).toFixed(2) + ' / ' + (endMs / 1000).toFixed(2) + ' s';
     $('play').textContent = playing ? 'Pause' : 'Play';
-    var rect = arenaCanvas.getBoundingClientRect();
     document.body.setAttribute('data-t', (cur / 1000).toFixed(3));
     document.body.setAttribute('data-state', playing ? 'playing' : 'paused');
-    document.body.setAttribute('data-view', [rect.left, rect.top, rect.width, rect.height, view.s, view.ox, view.oy]
-        .map(function (n) { return +n.toFixed(4); }).join(' '));
   }
 
   function seek(t) {
