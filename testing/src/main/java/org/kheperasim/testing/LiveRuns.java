@@ -37,7 +37,7 @@ final class LiveRuns {
         } catch (ControllerException e) {
             String where = StudentLines.inText(e.getMessage()).map(w -> " (" + w + ")").orElse("");
             throw new AssertionFailedError("The controller could not run" + where + ": " + e.getMessage()
-                    + "\n  run:      " + spec.commandLine(null), e);
+                    + "\n  run:      " + spec.commandLine(), e);
         }
         String text = trace.toString();
         TraceSamples samples = TraceSamples.parse(text, "the run's trace");

@@ -183,7 +183,7 @@ public final class Run {
      *     {@link #rerun()} makes, less a window recording's arena edits)
      */
     public String commandLine() {
-        return spec.commandLine(savedTrace().orElse(null));
+        return spec.commandLine();
     }
 
     /**

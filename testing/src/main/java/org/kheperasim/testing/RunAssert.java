@@ -65,17 +65,22 @@ public sealed class RunAssert permits EntryAssert {
      */
     public RunAssert neverTouched(Obstacle... what) {
         Set<Obstacle> kinds = what.length == 0 ? EnumSet.allOf(Obstacle.class) : EnumSet.copyOf(Arrays.asList(what));
+        RobotRun first = null;
+        List<Contact> bad = List.of();
         for (RobotRun r : robots) {
-            List<Contact> bad = r.contacts().stream().filter(c -> kinds.contains(c.what())).toList();
-            if (!bad.isEmpty()) {
-                Contact first = bad.get(0);
-                String more = bad.size() == 1 ? "" : "; " + bad.size() + " such contacts in all, the last "
-                        + bad.get(bad.size() - 1);
-                throw Failure.of(r.name() + " touched " + first.what().described() + " at " + first.from() + ".")
-                        .expected("never to touch " + things(kinds))
-                        .happened("touched " + first + more)
-                        .raise(run);
+            List<Contact> its = r.contacts().stream().filter(c -> kinds.contains(c.what())).toList();
+            if (!its.isEmpty() && (first == null || its.get(0).from().isBefore(bad.get(0).from()))) {
+                first = r;
+                bad = its;
             }
+        }
+        if (first != null) {
+            Contact c = bad.get(0);
+            String more = bad.size() == 1 ? "" : "; " + bad.size() + " such contacts in all, the last " + bad.get(bad.size() - 1);
+            throw Failure.of(first.name() + " touched " + c.what().described() + " at " + c.from() + ".")
+                    .expected("never to touch " + things(kinds))
+                    .happened("touched " + c + more)
+                    .raise(run);
         }
         return this;
     }
@@ -93,7 +98,9 @@ public sealed class RunAssert permits EntryAssert {
         Optional<RobotRun> first = firstIn(region);
         if (first.isEmpty()) {
             Nearest n = nearest(g, run.duration());
-            throw Failure.of(who() + " never entered region '" + region + "'.")
+            String who = robots.size() == 1 ? robots.get(0).name() + " never entered"
+                    : "None of the " + robots.size() + " robots entered";
+            throw Failure.of(who + " region '" + region + "'.")
                     .expected("to enter region '" + region + "' " + bounds(g))
                     .happened("it did not in the " + run.duration() + " the run lasted; " + n)
                     .raise(run);
@@ -254,12 +261,6 @@ public sealed class RunAssert permits EntryAssert {
                     .raise(run);
         }
         return this;
-    }
-
-    /** @return the robot(s) this assertion is about, as a message names them */
-    String who() {
-        return robots.size() == 1 ? robots.get(0).name()
-                : robots.size() == run.robots().size() ? "No robot (of " + robots.size() + ")" : "No robot";
     }
 
     private Optional<RobotRun> firstIn(String region) {

@@ -42,6 +42,8 @@ final class RunFiles {
             AtomicFiles.write(trace, run.trace());
             ArenaFormat.save(run.spec().arena(), folder.resolve(run.arena() + ArenaFormat.EXTENSION));
             run.saved(trace);
+            // The one place a run's files are written: a web page of the run, once the simulator can draw one
+            // (run --html), goes here beside the trace, and Failure's trace line names it.
             AtomicFiles.write(folder.resolve(name + ".txt"), about(run, trace));
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write the run's files in " + folder.toAbsolutePath() + ": " + e.getMessage(), e);
@@ -54,9 +56,9 @@ final class RunFiles {
         String shown = RunSpec.shown(trace);
         StringBuilder s = new StringBuilder();
         s.append(run).append('\n').append('\n');
-        s.append("Watch it: open ").append(shown).append(" in the simulator's window (File > Open recording),\n");
-        s.append("  java -jar khepera-sim.jar gui, then File > Open recording.\n");
-        s.append("Make the same run again (the simulator is deterministic: the same trace, byte for byte):\n  ")
+        s.append("Watch it: start the simulator's window (java -jar khepera-sim.jar), choose File > Open recording\n")
+                .append("and open ").append(shown).append('\n');
+        s.append("Make the same run again (the simulator is deterministic: add --trace FILE for the same trace, byte for byte):\n  ")
                 .append(run.commandLine()).append('\n');
         s.append("Check that it still comes out the same:\n  java -jar khepera-sim.jar verify ").append(shown);
         if (!run.spec().classpath().isEmpty()) {

@@ -69,11 +69,8 @@ record RunSpec(String arenaArg, Arena arena, List<String> controllers, List<Sett
         return b;
     }
 
-    /**
-     * @param traceFile the trace file to name, or null
-     * @return the {@code khepera-sim run} command line that makes the same run
-     */
-    String commandLine(Path traceFile) {
+    /** @return the {@code khepera-sim run} command line that makes the same run (add {@code --trace FILE} for its trace) */
+    String commandLine() {
         List<String> args = new ArrayList<>(List.of("java", "-jar", "khepera-sim.jar", "run", "--arena", quote(arenaArg)));
         if (!classpath.isEmpty()) {
             args.add("--classpath");
@@ -100,9 +97,6 @@ record RunSpec(String arenaArg, Arena arena, List<String> controllers, List<Sett
         }
         if (hangTimeoutSeconds != DEFAULT_HANG_TIMEOUT) {
             args.addAll(List.of("--hang-timeout", number(hangTimeoutSeconds)));
-        }
-        if (traceFile != null) {
-            args.addAll(List.of("--trace", quote(shown(traceFile))));
         }
         return String.join(" ", args);
     }

@@ -59,8 +59,8 @@ class AssertionMessagesTest {
         assertTrue(Files.isRegularFile(trace.resolveSibling("lab.arena")));
         String about = Files.readString(trace.resolveSibling("lab-Straight-seed3.txt"));
         assertTrue(about.contains("java -jar khepera-sim.jar run --arena lab --classpath "), about);
-        assertTrue(about.contains(" --controller student.Straight --seed 3 --seconds 30 --set noise.robot=0 --trace " + trace),
-                about);
+        assertTrue(about.contains(" --controller student.Straight --seed 3 --seconds 30 --set noise.robot=0\n"), about);
+        assertTrue(about.contains("and open " + trace + "\n"), about);
         System.out.println(m);
     }
 
@@ -84,6 +84,18 @@ class AssertionMessagesTest {
         assertTrue(Pattern.compile("  happened: first entered at 6\\.\\d{3} s; at 5\\.000 s the robot was at \\(\\d+\\.\\d, \\d+\\.\\d\\)"
                 + " mm heading -?\\d+\\.\\d deg, \\d+\\.\\d mm from the region\\n").matcher(m).find(), m);
         System.out.println(m);
+    }
+
+    @Test
+    void withSeveralRobotsTheMessageNamesTheRobotAndTheEarliestContact() {
+        String touched = assertThrows(AssertionFailedError.class, () -> assertThat(headOn).neverTouched(ROBOT, LAMP)).getMessage();
+        // Robot 3 drives into the lamp 62.5 mm ahead at 40 mm/s, long before robots 0 and 1 meet.
+        assertTrue(touched.startsWith("Straight#3 touched a lamp at 1."), touched);
+        assertTrue(touched.contains("\n  expected: never to touch a lamp or another robot\n"), touched);
+        Run apart = Run.of(student.Straight.class).in(Fixtures.resource("head-on.arena")).seconds(3).run();
+        String none = assertThrows(AssertionFailedError.class, () -> assertThat(apart).entered("left_end")).getMessage();
+        assertTrue(none.startsWith("None of the 4 robots entered region 'left_end'.\n"), none);
+        assertTrue(none.contains("; Straight#2 came nearest "), none);
     }
 
     @Test
