@@ -1,0 +1,160 @@
+package org.kheperasim.testing;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.LongFunction;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.arena.Light;
+import org.kheperasim.sim.arena.Wall;
+
+/**
+ * A robot's contacts over a run, from its samples: a stretch of samples that saw it touching becomes one
+ * {@link Contact}, and a rise of the simulator's collision count between two samples that saw nothing
+ * becomes one seen between them. What was touched is the thing nearest the robot's body at the sample
+ * (the simulator reports only the side): walls (and the arena's edge), lamps, other robots and caps.
+ */
+final class ContactFinder {
+    private static final double R = Arena.ROBOT_RADIUS_MM;
+    /** How near counts as touching: the simulator's own margin (0.5 mm), and the trace's rounding. */
+    private static final double TOUCH_MM = 0.501;
+
+    private final TraceSamples samples;
+    private final LongFunction<Arena> arenaAt;
+
+    /**
+     * @param samples the run's samples
+     * @param arenaAt the arena as it was at a simulated time, ns (a window's run may have been edited)
+     */
+    ContactFinder(TraceSamples samples, LongFunction<Arena> arenaAt) {
+        this.samples = samples;
+        this.arenaAt = arenaAt;
+    }
+
+    /**
+     * @param robot the robot's index
+     * @param collisions the simulator's collision count at each of the robot's samples, or null when not
+     *     known (a recorded trace)
+     * @return its contacts, in time order
+     */
+    List<Contact> contacts(int robot, int[] collisions) {
+        TraceSamples.Series s = samples.robots.get(robot);
+        List<Contact> out = new ArrayList<>();
+        Contact open = null;
+        for (int k = 0; k < s.size; k++) {
+            String side = s.contact[k];
+            Obstacle what = null;
+            if (!side.equals("NONE")) {
+                what = nearest(robot, k, k);
+            } else {
+                // The simulator flags a cap only when it blocks the robot; one being pushed touches it too.
+                side = capTouching(robot, k);
+                what = side == null ? null : Obstacle.CAP;
+            }
+            if (what != null) {
+                if (open != null && open.what() == what) {
+                    open = new Contact(open.from(), new SimTime(s.nanos[k]), what, open.side(), open.x(), open.y(), false);
+                } else {
+                    add(out, open);
+                    open = new Contact(new SimTime(s.nanos[k]), new SimTime(s.nanos[k]), what, side, s.x[k], s.y[k], false);
+                }
+                continue;
+            }
+            add(out, open);
+            boolean wasTouching = open != null;
+            open = null;
+            // A move stopped since the last sample, with no contact seen at either: a bump between them.
+            if (k > 0 && !wasTouching && collisions != null && collisions[k] >= 0 && collisions[k - 1] >= 0
+                    && collisions[k] > collisions[k - 1]) {
+                out.add(new Contact(new SimTime(s.nanos[k - 1]), new SimTime(s.nanos[k]), nearest(robot, k - 1, k), "UNSEEN",
+                        s.x[k - 1], s.y[k - 1], true));
+            }
+        }
+        add(out, open);
+        return out;
+    }
+
+    private static void add(List<Contact> out, Contact c) {
+        if (c != null) {
+            out.add(c);
+        }
+    }
+
+    /**
+     * @return the side of the robot a cap on the floor (or in another robot's gripper) touches at sample
+     *     {@code k}, or null when none does
+     */
+    private String capTouching(int robot, int k) {
+        TraceSamples.Series s = samples.robots.get(robot);
+        Arena a = arenaAt.apply(s.nanos[k]);
+        for (int c = 0; c < samples.caps.size() && c < a.caps().size(); c++) {
+            TraceSamples.CapState cap = samples.capAt(c, s.nanos[k]);
+            double gap = StrictMath.hypot(s.x[k] - cap.x(), s.y[k] - cap.y()) - a.caps().get(c).radius() - R;
+            if (cap.heldBy() != robot && gap <= TOUCH_MM) {
+                double rel = StrictMath.atan2(cap.y() - s.y[k], cap.x() - s.x[k]) - StrictMath.toRadians(s.heading[k]);
+                return org.kheperasim.sim.engine.Contact.ofAngle(rel).name();
+            }
+        }
+        return null;
+    }
+
+    /** What lies nearest the robot's body at either of two samples. */
+    private Obstacle nearest(int robot, int k1, int k2) {
+        Nearest n = new Nearest();
+        measure(robot, k1, n);
+        if (k2 != k1) {
+            measure(robot, k2, n);
+        }
+        return n.what;
+    }
+
+    private static final class Nearest {
+        double gap = Double.POSITIVE_INFINITY;
+        Obstacle what = Obstacle.WALL;
+
+        void offer(double g, Obstacle o) {
+            if (g < gap) {
+                gap = g;
+                what = o;
+            }
+        }
+    }
+
+    /** The gaps between the robot's body and everything else at sample {@code k}. */
+    private void measure(int robot, int k, Nearest n) {
+        TraceSamples.Series s = samples.robots.get(robot);
+        double x = s.x[k];
+        double y = s.y[k];
+        long t = s.nanos[k];
+        Arena a = arenaAt.apply(t);
+        n.offer(StrictMath.min(StrictMath.min(x, a.width() - x), StrictMath.min(y, a.height() - y)) - R, Obstacle.WALL);
+        for (Wall w : a.walls()) {
+            n.offer(segmentDistance(x, y, w.x1(), w.y1(), w.x2(), w.y2()) - w.thickness() / 2 - R, Obstacle.WALL);
+        }
+        for (Light l : a.lights()) {
+            n.offer(StrictMath.hypot(x - l.x(), y - l.y()) - l.radius() - R, Obstacle.LAMP);
+        }
+        for (int j = 0; j < samples.robots.size(); j++) {
+            TraceSamples.Series o = samples.robots.get(j);
+            int i = o.indexAt(t);
+            if (j != robot && i >= 0) {
+                n.offer(StrictMath.hypot(x - o.x[i], y - o.y[i]) - 2 * R, Obstacle.ROBOT);
+            }
+        }
+        for (int c = 0; c < samples.caps.size() && c < a.caps().size(); c++) {
+            TraceSamples.CapState cap = samples.capAt(c, t);
+            if (cap.heldBy() != robot) {
+                n.offer(StrictMath.hypot(x - cap.x(), y - cap.y()) - a.caps().get(c).radius() - R, Obstacle.CAP);
+            }
+        }
+    }
+
+    /** @return the distance from (px, py) to the segment from (x1, y1) to (x2, y2), mm */
+    static double segmentDistance(double px, double py, double x1, double y1, double x2, double y2) {
+        double dx = x2 - x1;
+        double dy = y2 - y1;
+        double len2 = dx * dx + dy * dy;
+        double u = len2 == 0 ? 0 : ((px - x1) * dx + (py - y1) * dy) / len2;
+        u = StrictMath.max(0, StrictMath.min(1, u));
+        return StrictMath.hypot(px - (x1 + u * dx), py - (y1 + u * dy));
+    }
+}

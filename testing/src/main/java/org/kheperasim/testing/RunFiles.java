@@ -1,0 +1,86 @@
+package org.kheperasim.testing;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.files.AtomicFiles;
+
+/**
+ * Writes a run's files for a person to look at: the trace, the arena beside it (so that the window's
+ * File &gt; Open recording and {@code khepera-sim verify} find it by the name and SHA-256 the trace records),
+ * and a text file with the command that makes the run again, how to watch it, and the run's console.
+ */
+final class RunFiles {
+    /** The trace files runs of this JVM have written, so two runs of one test do not overwrite each other's. */
+    private static final Set<Path> CLAIMED = ConcurrentHashMap.newKeySet();
+
+    private RunFiles() {
+    }
+
+    /**
+     * @param run a run
+     * @param folder where to write
+     * @return the trace file
+     */
+    static Path save(Run run, Path folder) {
+        Path trace = run.savedTrace().filter(t -> t.toAbsolutePath().getParent().equals(folder.toAbsolutePath()))
+                .orElse(null);
+        String base = TestRuns.safe(run.arena() + "-" + simpleName(run.robot().controller()) + "-seed" + run.seed());
+        for (int i = 1; trace == null; i++) {
+            Path candidate = folder.resolve(base + (i == 1 ? "" : "-" + i) + ".trace");
+            if (CLAIMED.add(candidate.toAbsolutePath())) {
+                trace = candidate;
+            }
+        }
+        String name = trace.getFileName().toString().replaceFirst("\\.trace$", "");
+        try {
+            Files.createDirectories(folder);
+            AtomicFiles.write(trace, run.trace());
+            ArenaFormat.save(run.spec().arena(), folder.resolve(run.arena() + ArenaFormat.EXTENSION));
+            run.saved(trace);
+            // The one place a run's files are written: a web page of the run, once the simulator can draw one
+            // (run --html), goes here beside the trace, and Failure's trace line names it.
+            AtomicFiles.write(folder.resolve(name + ".txt"), about(run, trace));
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot write the run's files in " + folder.toAbsolutePath() + ": " + e.getMessage(), e);
+        }
+        return trace;
+    }
+
+    /** The text beside a trace: what the run was, how to watch it and make it again, and its console. */
+    private static String about(Run run, Path trace) {
+        String shown = RunSpec.shown(trace);
+        StringBuilder s = new StringBuilder();
+        s.append(run).append('\n').append('\n');
+        s.append("Watch it: start the simulator's window (java -jar khepera-sim.jar), choose File > Open recording\n")
+                .append("and open ").append(shown).append('\n');
+        s.append("Make the same run again (the simulator is deterministic: add --trace FILE for the same trace, byte for byte):\n  ")
+                .append(run.commandLine()).append('\n');
+        s.append("Check that it still comes out the same:\n  java -jar khepera-sim.jar verify ").append(shown);
+        if (!run.spec().classpath().isEmpty()) {
+            s.append(" --classpath ").append(String.join(java.io.File.pathSeparator,
+                    run.spec().classpath().stream().map(RunSpec::shown).toList()));
+        }
+        s.append('\n');
+        for (RobotRun r : run.robots()) {
+            s.append('\n').append(r).append("; controller ").append(r.ending());
+            if (!r.contacts().isEmpty()) {
+                s.append("; ").append(r.contacts().size()).append(" contacts, the first ").append(r.contacts().get(0));
+            }
+        }
+        s.append('\n');
+        if (!run.console().isEmpty()) {
+            s.append("\nConsole:\n");
+            run.console().forEach(line -> s.append(line).append('\n'));
+        }
+        return s.toString();
+    }
+
+    private static String simpleName(String className) {
+        return className.substring(className.lastIndexOf('.') + 1);
+    }
+}
