@@ -6,6 +6,8 @@ import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.BiPredicate;
 import org.kheperasim.sim.host.loading.AllowlistEntry.Kind;
 
@@ -22,6 +24,12 @@ final class Allowlist {
     private static final Allowlist BUNDLED = load();
 
     private final List<AllowlistEntry> entries;
+    /**
+     * Answers already given, by class, member and parameters. They are asked of platform and
+     * simulator classes only, whose place in the hierarchy is the same for every loader, and a run of
+     * many robots checks the same controller once per robot.
+     */
+    private final Map<String, Boolean> answers = new ConcurrentHashMap<>();
 
     /** @param entries the list's entries, in the file's order */
     Allowlist(List<AllowlistEntry> entries) {
@@ -56,7 +64,7 @@ final class Allowlist {
      * @return whether controller code may name the type (a cast, a superclass, a class constant)
      */
     boolean allowsType(String binaryName, BiPredicate<String, String> isSubclass) {
-        return !naming(binaryName, false, isSubclass).isEmpty();
+        return answers.computeIfAbsent(binaryName, n -> !naming(n, false, isSubclass).isEmpty());
     }
 
     /**
@@ -69,6 +77,12 @@ final class Allowlist {
      * @return whether controller code may use it
      */
     boolean allowsMember(String binaryName, String member, List<String> parameters, boolean asBootstrap,
+            BiPredicate<String, String> isSubclass) {
+        String key = binaryName + (asBootstrap ? "#" : ".") + member + (parameters == null ? "" : parameters.toString());
+        return answers.computeIfAbsent(key, k -> decide(binaryName, member, parameters, asBootstrap, isSubclass));
+    }
+
+    private boolean decide(String binaryName, String member, List<String> parameters, boolean asBootstrap,
             BiPredicate<String, String> isSubclass) {
         for (AllowlistEntry e : naming(binaryName, asBootstrap, isSubclass)) {
             if (e.allows(member, parameters)) {

@@ -7,8 +7,11 @@ import org.objectweb.asm.Type;
 
 /**
  * Where a call in controller code goes instead: the time calls to {@link SimClock}, and for
- * contained code the escapes to {@link org.kheperasim.sim.host.Containment} (see
- * {@link TimeCallRewriter} for what is rewritten and why).
+ * contained code the escapes to {@link org.kheperasim.sim.host.Containment}, the thread calls to
+ * {@link org.kheperasim.sim.host.ThreadHooks}, the resource reads to {@link ResourceHooks},
+ * {@code printStackTrace()} and {@code Logger.getLogger} to {@link ConsoleHooks}, and the parallel
+ * stream methods to their sequential twins (see {@link TimeCallRewriter} for what is rewritten and
+ * why).
  */
 final class CallTargets {
     /** Internal name of the class the time calls go to. */
@@ -109,10 +112,9 @@ final class CallTargets {
         this.contained = contained;
     }
 
-/**
+    /**
      * Where a call goes instead, or null when it stays: the {@link SimClock} method of the same
-     * name for the time calls, and for contained code the {@link org.kheperasim.sim.host.Containment}
-     * hooks.
+     * name for the time calls, and for contained code the hooks (see the class comment).
      *
      * @param opcode {@link Opcodes#INVOKESTATIC} or {@link Opcodes#INVOKEVIRTUAL}; any other
      *     kind of call always stays

@@ -47,8 +47,16 @@ final class ClassHierarchy implements HierarchyLookup {
         static final ClassFacts MISSING = new ClassFacts(false, false, null, List.of(), Set.of(), Set.of());
     }
 
+    /**
+     * What reflection told of the parent's classes, shared by every loader with that parent: the
+     * facts of a platform class never change, and a run of many robots makes a loader per robot.
+     */
+    private static final Map<ClassLoader, Map<String, ClassFacts>> PARENT_FACTS =
+            java.util.Collections.synchronizedMap(new java.util.WeakHashMap<>());
+
     private final Function<String, byte[]> localClassFile;
     private final ClassLoader parent;
+    private final Map<String, ClassFacts> parentFacts;
     private final Map<String, ClassFacts> facts = new ConcurrentHashMap<>();
     private final Map<String, List<String>> methodAnswers = new ConcurrentHashMap<>();
 
@@ -60,6 +68,7 @@ final class ClassHierarchy implements HierarchyLookup {
     ClassHierarchy(Function<String, byte[]> localClassFile, ClassLoader parent) {
         this.localClassFile = localClassFile;
         this.parent = parent;
+        this.parentFacts = PARENT_FACTS.computeIfAbsent(parent, p -> new ConcurrentHashMap<>());
     }
 
     @Override
@@ -202,7 +211,7 @@ final class ClassHierarchy implements HierarchyLookup {
 
     private ClassFacts read(String internalName) {
         byte[] classFile = localClassFile.apply(internalName);
-        return classFile != null ? fromClassFile(classFile) : fromParent(internalName);
+        return classFile != null ? fromClassFile(classFile) : parentFacts.computeIfAbsent(internalName, this::fromParent);
     }
 
     /** Superclass, interfaces and declared members from a class file the loader would define. */

@@ -47,6 +47,8 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
     private final ClassHierarchy hierarchy;
     private final boolean contained;
     private final ControllerCheck check;
+    /** Class files read for the check and the hierarchy, by internal name (empty: none). */
+    private final java.util.Map<String, java.util.Optional<byte[]>> classFiles = new java.util.concurrent.ConcurrentHashMap<>();
 
     /**
      * @param classpath directories and jar files of the user's compiled classes, searched in order
@@ -200,12 +202,15 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         if (isShared(className)) {
             return null;
         }
-        try {
-            ClassFile found = findClassFile(className);
-            return found == null ? null : found.bytes();
-        } catch (IOException e) {
-            return null; // then the parent is asked; loading the class itself reports the failure
-        }
+        // The check and the hierarchy ask for the same class files many times: read each once.
+        return classFiles.computeIfAbsent(internalName, n -> {
+            try {
+                ClassFile found = findClassFile(className);
+                return java.util.Optional.ofNullable(found == null ? null : found.bytes());
+            } catch (IOException e) {
+                return java.util.Optional.empty(); // then the parent is asked; loading the class reports the failure
+            }
+        }).orElse(null);
     }
 
     /**
