@@ -25,9 +25,10 @@ final class Allowlist {
 
     private final List<AllowlistEntry> entries;
     /**
-     * Answers already given, by class, member and parameters. They are asked of platform and
-     * simulator classes only, whose place in the hierarchy is the same for every loader, and a run of
-     * many robots checks the same controller once per robot.
+     * Answers already given, by class, member and parameters: a run of many robots checks the same
+     * controller once per robot. They are asked of platform and simulator classes only, whose place
+     * in the hierarchy (what the {@code isSubclass} of the queries answers) is the same for every
+     * loader.
      */
     private final Map<String, Boolean> answers = new ConcurrentHashMap<>();
 
