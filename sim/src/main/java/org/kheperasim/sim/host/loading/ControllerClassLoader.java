@@ -156,10 +156,16 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         }
         String failure = "Cannot load class " + name + " from " + found.location() + ": ";
         try {
+            byte[] bytes = found.bytes();
             if (contained) {
-                check.checkReachable(name.replace('.', '/'));
+                // The check reads class files through the same cache: what is defined is what was checked,
+                // even if the file changes on disk meanwhile.
+                String internalName = name.replace('.', '/');
+                bytes = classFiles.compute(internalName, (n, read) -> read != null && read.isPresent() ? read
+                        : java.util.Optional.of(found.bytes())).get();
+                check.checkReachable(internalName);
             }
-            byte[] rewritten = TimeCallRewriter.rewrite(found.bytes(), hierarchy, contained);
+            byte[] rewritten = TimeCallRewriter.rewrite(bytes, hierarchy, contained);
             return defineClass(name, rewritten, 0, rewritten.length, found.domain());
         } catch (ControllerPolicyError e) {
             throw withCause(new ControllerPolicyError(failure + e.getMessage()), e);
