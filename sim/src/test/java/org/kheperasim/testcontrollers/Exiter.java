@@ -16,7 +16,7 @@ public class Exiter extends Thread {
     public void run() {
         motor.setMotorSpeeds(3, 3);
         try {
-            Thread.sleep(Long.getLong("exiter.afterMillis", 20_000));
+            Thread.sleep(20_000);
         } catch (InterruptedException e) {
             return;
         }

@@ -155,7 +155,7 @@ class HostileControllerTest {
     void filesNetworkReflectionAndTheSimulatorAreRefusedAtLoadNamingTheLine() throws IOException {
         for (String[] c : new String[][] {{"Writer", "java.nio.file."}, {"Deleter", "java.io.File"},
             {"Networker", "java.net.Socket"}, {"Reflector", "java.lang.Class.forName"},
-            {"Intruder", "org.kheperasim.sim.engine.Khepera"}, {"HandleBot", "MethodHandles$Lookup.findStatic"}}) {
+            {"Intruder", "org.kheperasim.sim.engine.Khepera"}, {"HandleBot", "java.lang.invoke.MethodHandles.lookup()"}}) {
             ControllerException e = assertThrows(ControllerException.class, () -> run(c[0], 1), c[0]);
             assertTrue(e.getMessage().contains(c[1]), c[0] + " names the call: " + e.getMessage());
             assertTrue(e.getMessage().contains(c[0] + ".java:"), c[0] + " names the student's line: " + e.getMessage());

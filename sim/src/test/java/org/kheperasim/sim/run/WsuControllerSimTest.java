@@ -154,7 +154,9 @@ class WsuControllerSimTest {
     @Test
     void aControllersOwnWindowInAHeadlessRunIsAClearMessageNotACrash() {
         List<ConsoleLine> console = Collections.synchronizedList(new ArrayList<>());
-        RunResult r = run("WsuWindowed", 10, console);
+        // A controller that opens a window of its own runs only trusted (untrusted, it is refused at load).
+        RunResult r = Simulation.builder().arena("lab").controller("WsuWindowed").classpath(List.of(classes)).seed(7)
+                .seconds(10).console(console::add).trusted(true).run();
         assertEquals(ControllerStatus.FAILED, r.first().status(), console.toString());
         String text = console.toString();
         assertTrue(text.contains("opened a window, but this run has no display"), text);

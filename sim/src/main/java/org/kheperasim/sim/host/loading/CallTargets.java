@@ -7,8 +7,11 @@ import org.objectweb.asm.Type;
 
 /**
  * Where a call in controller code goes instead: the time calls to {@link SimClock}, and for
- * contained code the escapes to {@link org.kheperasim.sim.host.Containment} (see
- * {@link TimeCallRewriter} for what is rewritten and why).
+ * contained code the escapes to {@link org.kheperasim.sim.host.Containment}, the thread calls to
+ * {@link org.kheperasim.sim.host.ThreadHooks}, the resource reads to {@link ResourceHooks},
+ * {@code printStackTrace()} and {@code Logger.getLogger} to {@link ConsoleHooks}, and the parallel
+ * stream methods to their sequential twins (see {@link TimeCallRewriter} for what is rewritten and
+ * why).
  */
 final class CallTargets {
     /** Internal name of the class the time calls go to. */
@@ -42,7 +45,6 @@ final class CallTargets {
     /** {@code Thread.currentThread()}, which {@link org.kheperasim.sim.host.ThreadHooks} answers for contained code. */
     private static final String CURRENT_THREAD = "currentThread()Ljava/lang/Thread;";
 
-    /** Where a call goes instead. */
     /**
      * Static calls redirected to {@link org.kheperasim.sim.host.Containment}, by owner, name and
      * descriptor, to the method of the given name and the same descriptor.
@@ -63,11 +65,40 @@ final class CallTargets {
             java.util.Map.entry("java/time/LocalTime.now()Ljava/time/LocalTime;", "localTimeNow"),
             java.util.Map.entry("java/time/ZonedDateTime.now()Ljava/time/ZonedDateTime;", "zonedDateTimeNow"));
 
-    /** Instance calls redirected to static hooks that take the receiver first, by owner, name and descriptor. */
-    private static final java.util.Map<String, String> CONTAINED_VIRTUALS = java.util.Map.of(
-            "java/lang/Runtime.exit(I)V", "exit",
-            "java/lang/Runtime.halt(I)V", "halt",
-            "java/lang/Runtime.addShutdownHook(Ljava/lang/Thread;)V", "addShutdownHook");
+    /** Internal name of the class the resource hooks are in. */
+    private static final String RESOURCES = Type.getInternalName(ResourceHooks.class);
+
+    /** Internal name of the class the console hooks are in. */
+    private static final String CONSOLE = Type.getInternalName(ConsoleHooks.class);
+
+    /**
+     * Instance calls redirected to static hooks that take the receiver first, by owner, name and
+     * descriptor, to the hook's class and name.
+     */
+    private static final java.util.Map<String, String[]> CONTAINED_VIRTUALS = java.util.Map.of(
+            "java/lang/Runtime.exit(I)V", new String[] {CONTAINMENT, "exit"},
+            "java/lang/Runtime.halt(I)V", new String[] {CONTAINMENT, "halt"},
+            "java/lang/Runtime.addShutdownHook(Ljava/lang/Thread;)V", new String[] {CONTAINMENT, "addShutdownHook"},
+            "java/lang/Class.getResource(Ljava/lang/String;)Ljava/net/URL;", new String[] {RESOURCES, "getResource"},
+            "java/lang/Class.getResourceAsStream(Ljava/lang/String;)Ljava/io/InputStream;",
+            new String[] {RESOURCES, "getResourceAsStream"},
+            "java/lang/ClassLoader.getResource(Ljava/lang/String;)Ljava/net/URL;", new String[] {RESOURCES, "getResource"},
+            "java/lang/ClassLoader.getResourceAsStream(Ljava/lang/String;)Ljava/io/InputStream;",
+            new String[] {RESOURCES, "getResourceAsStream"});
+
+    /** {@code Logger.getLogger(String)}, which {@link ConsoleHooks} answers with a logger of the run's own. */
+    private static final String GET_LOGGER = "java/util/logging/Logger.getLogger(Ljava/lang/String;)Ljava/util/logging/Logger;";
+
+    private static final String THROWABLE = "java/lang/Throwable";
+    private static final String PRINT_STACK_TRACE = "printStackTrace()V";
+
+    /** Methods of parallel streams, by declaring class, name and descriptor: the sequential method of the same descriptor. */
+    private static final java.util.Map<String, String> SEQUENTIAL = java.util.Map.of(
+            "java/util/Collection.parallelStream()Ljava/util/stream/Stream;", "stream",
+            "java/util/stream/BaseStream.parallel()Ljava/util/stream/BaseStream;", "sequential",
+            "java/util/stream/IntStream.parallel()Ljava/util/stream/IntStream;", "sequential",
+            "java/util/stream/LongStream.parallel()Ljava/util/stream/LongStream;", "sequential",
+            "java/util/stream/DoubleStream.parallel()Ljava/util/stream/DoubleStream;", "sequential");
 
     private final HierarchyLookup lookup;
     private final boolean contained;
@@ -81,10 +112,9 @@ final class CallTargets {
         this.contained = contained;
     }
 
-/**
+    /**
      * Where a call goes instead, or null when it stays: the {@link SimClock} method of the same
-     * name for the time calls, and for contained code the {@link org.kheperasim.sim.host.Containment}
-     * hooks.
+     * name for the time calls, and for contained code the hooks (see the class comment).
      *
      * @param opcode {@link Opcodes#INVOKESTATIC} or {@link Opcodes#INVOKEVIRTUAL}; any other
      *     kind of call always stays
@@ -107,6 +137,9 @@ final class CallTargets {
             if (contain != null) {
                 return new Target(CONTAINMENT, contain, descriptor);
             }
+            if (contained && GET_LOGGER.equals(owner + "." + method)) {
+                return new Target(CONSOLE, name, descriptor);
+            }
         } else if (opcode == Opcodes.INVOKEVIRTUAL) {
             if (owner.equals(TIME_UNIT) && name.equals("sleep") && descriptor.equals("(J)V")) {
                 return new Target(SIM_CLOCK, name, TIME_UNIT_SLEEP_HOOK);
@@ -114,12 +147,16 @@ final class CallTargets {
             if (!contained) {
                 return null;
             }
-            String contain = CONTAINED_VIRTUALS.get(owner + "." + name + descriptor);
+            String[] contain = CONTAINED_VIRTUALS.get(owner + "." + name + descriptor);
             if (contain != null) {
-                return new Target(CONTAINMENT, contain, "(L" + owner + ";" + descriptor.substring(1));
+                return new Target(contain[0], contain[1], "(L" + owner + ";" + descriptor.substring(1));
             }
             if (owner.startsWith("[")) {
                 return null;
+            }
+            if ((name + descriptor).equals(PRINT_STACK_TRACE)
+                    && (owner.equals(THROWABLE) || THROWABLE.equals(lookup.declaringClass(owner, name, descriptor)))) {
+                return new Target(CONSOLE, name, "(L" + THROWABLE + ";)V");
             }
             String receiver = "(Ljava/lang/Object;";
             switch (name + descriptor) {
@@ -142,5 +179,26 @@ final class CallTargets {
             }
         }
         return null;
+    }
+
+    /**
+     * The sequential twin of a parallel stream method, for contained code: {@code parallel()}
+     * becomes {@code sequential()} and {@code Collection.parallelStream()} {@code stream()}, with the
+     * same owner and descriptor. A parallel stream would run the controller's lambdas on the JDK's
+     * common pool, outside the lockstep; running it on the calling thread is one of the executions a
+     * parallel stream allows, so every correct stream computes the same.
+     *
+     * @return the method's new name, or null when the call stays
+     */
+    String renamed(String owner, String name, String descriptor) {
+        if (!contained || owner.startsWith("[") || !(name.equals("parallel") || name.equals("parallelStream"))) {
+            return null;
+        }
+        String sequential = SEQUENTIAL.get(owner + "." + name + descriptor);
+        if (sequential != null) {
+            return sequential;
+        }
+        String declaring = lookup.declaringClass(owner, name, descriptor);
+        return declaring == null ? null : SEQUENTIAL.get(declaring + "." + name + descriptor);
     }
 }

@@ -4,23 +4,14 @@ import java.io.Closeable;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.UncheckedIOException;
-import java.net.MalformedURLException;
-import java.net.URI;
-import java.net.URISyntaxException;
 import java.net.URL;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.security.CodeSigner;
-import java.security.CodeSource;
 import java.security.ProtectionDomain;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.Enumeration;
 import java.util.List;
 import java.util.Objects;
-import java.util.jar.JarEntry;
-import java.util.jar.JarFile;
-import java.util.zip.ZipFile;
 
 /**
  * Loads controller classes with their time calls rewritten onto the simulation clock (see
@@ -34,8 +25,12 @@ import java.util.zip.ZipFile;
  * rewritten too), and defined here after rewriting; a class found nowhere is left to the parent.
  * Each loader defines its own classes, so a new loader picks up a recompiled controller.
  *
- * <p>Resources are looked up in the classpath entries first, then in the parent. Closing the loader
- * closes its jar files; classes and resources not yet loaded from them can then no longer be found.
+ * <p>A loader that contains its code ({@link #contained()}, the default) checks every class against
+ * the controller allowlist before it defines it, together with every class of the controller's own
+ * that class can reach ({@link ControllerCheck}); the code's resource reads then see its classpath
+ * entries only ({@link ResourceHooks}), never the simulator's jar or classpath. Resources are
+ * looked up in the classpath entries first, then in the parent. Closing the loader closes its jar
+ * files; classes and resources not yet loaded from them can then no longer be found.
  */
 public final class ControllerClassLoader extends ClassLoader implements Closeable {
     static {
@@ -48,9 +43,12 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
             "org.kheperasim.api.", "org.kheperasim.sim.", "org.kheperasim.link.", "edu.wsu.KheperaSimulator.",
             "org.objectweb.asm.", "picocli.", "org.junit.", "org.opentest4j.", "org.apiguardian.");
 
-    private final List<Root> roots;
+    private final List<ClasspathEntry> roots;
     private final ClassHierarchy hierarchy;
     private final boolean contained;
+    private final ControllerCheck check;
+    /** Class files read for the check and the hierarchy, by internal name (empty: none). */
+    private final java.util.Map<String, java.util.Optional<byte[]>> classFiles = new java.util.concurrent.ConcurrentHashMap<>();
 
     /**
      * @param classpath directories and jar files of the user's compiled classes, searched in order
@@ -66,17 +64,18 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
     /**
      * @param classpath see {@link #ControllerClassLoader(List, ClassLoader)}
      * @param parent see {@link #ControllerClassLoader(List, ClassLoader)}
-     * @param contained true (the default) to contain the code: its calls that could end the
-     *     application or stall a run go to {@link org.kheperasim.sim.host.Containment}, and a class
-     *     that reaches for files, the network, processes, native code, class loaders, reflection or
-     *     the simulator is refused ({@link ControllerPolicyError}); false only for a controller the
-     *     user trusts
+     * @param contained true (the default) to contain the code: a class that uses anything the
+     *     controller allowlist does not allow is refused ({@link ControllerPolicyError}), and the
+     *     calls that could end the application, stall a run or leave it go to the simulator's hooks
+     *     ({@link org.kheperasim.sim.host.Containment} and the others); false only for a controller
+     *     the user trusts
      */
     public ControllerClassLoader(List<Path> classpath, ClassLoader parent, boolean contained) {
         super(Objects.requireNonNull(parent, "parent"));
         this.contained = contained;
         this.roots = open(classpath);
         this.hierarchy = new ClassHierarchy(this::localClassFile, parent);
+        this.check = new ControllerCheck(new ControllerPolicy(Allowlist.bundled(), hierarchy), this::localClassFile);
     }
 
     /** @return true when it contains the code it loads (rewrites its escapes and thread calls) */
@@ -84,15 +83,15 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         return contained;
     }
 
-    private static List<Root> open(List<Path> classpath) {
-        List<Root> opened = new ArrayList<>();
+    private static List<ClasspathEntry> open(List<Path> classpath) {
+        List<ClasspathEntry> opened = new ArrayList<>();
         try {
             for (Path entry : classpath) {
-                opened.add(Root.open(entry));
+                opened.add(ClasspathEntry.open(entry));
             }
             return List.copyOf(opened);
         } catch (RuntimeException e) {
-            for (Root root : opened) {
+            for (ClasspathEntry root : opened) {
                 try {
                     root.close();
                 } catch (IOException suppressed) {
@@ -157,7 +156,16 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         }
         String failure = "Cannot load class " + name + " from " + found.location() + ": ";
         try {
-            byte[] rewritten = TimeCallRewriter.rewrite(found.bytes(), hierarchy, contained);
+            byte[] bytes = found.bytes();
+            if (contained) {
+                // The check reads class files through the same cache: what is defined is what was checked,
+                // even if the file changes on disk meanwhile.
+                String internalName = name.replace('.', '/');
+                bytes = classFiles.compute(internalName, (n, read) -> read != null && read.isPresent() ? read
+                        : java.util.Optional.of(found.bytes())).get();
+                check.checkReachable(internalName);
+            }
+            byte[] rewritten = TimeCallRewriter.rewrite(bytes, hierarchy, contained);
             return defineClass(name, rewritten, 0, rewritten.length, found.domain());
         } catch (ControllerPolicyError e) {
             throw withCause(new ControllerPolicyError(failure + e.getMessage()), e);
@@ -177,7 +185,7 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
     /** The class file this loader would define for {@code className}, or null. */
     private ClassFile findClassFile(String className) throws IOException {
         String resource = className.replace('.', '/') + ".class";
-        for (Root root : roots) {
+        for (ClasspathEntry root : roots) {
             byte[] bytes = root.read(resource);
             if (bytes != null) {
                 return new ClassFile(bytes, root.describe(resource), root.domain);
@@ -200,22 +208,43 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         if (isShared(className)) {
             return null;
         }
-        try {
-            ClassFile found = findClassFile(className);
-            return found == null ? null : found.bytes();
-        } catch (IOException e) {
-            return null; // then the parent is asked; loading the class itself reports the failure
-        }
+        // The check and the hierarchy ask for the same class files many times: read each once.
+        return classFiles.computeIfAbsent(internalName, n -> {
+            try {
+                ClassFile found = findClassFile(className);
+                return java.util.Optional.ofNullable(found == null ? null : found.bytes());
+            } catch (IOException e) {
+                return java.util.Optional.empty(); // then the parent is asked; loading the class reports the failure
+            }
+        }).orElse(null);
     }
 
-    /** Look a resource up in the classpath entries first, then in the parent. */
+    /**
+     * Check a class, and every class of the controller's own it reaches, against the allowlist,
+     * without defining any (what loading it does first, when the loader contains its code).
+     *
+     * @param className the class's binary name
+     * @throws ControllerPolicyError naming the first use refused
+     */
+    void check(String className) {
+        check.checkReachable(className.replace('.', '/'));
+    }
+
+    /**
+     * Look a resource up in the classpath entries first, then in the parent: for the simulator's own
+     * code (its service lookups of controller styles, say). Contained controller code never reaches
+     * this method: its resource reads are rewritten to {@link ResourceHooks}, which read only the
+     * classpath entries ({@link #findResource} and {@link #ownResource}).
+     *
+     * @return the resource, or null
+     */
     @Override
     public URL getResource(String name) {
         URL url = findResource(name);
         return url != null ? url : getParent().getResource(name);
     }
 
-    /** All copies of a resource: those in the classpath entries in order, then the parent's. */
+    /** All copies of a resource: those in the classpath entries in order, then the parent's (see {@link #getResource}). */
     @Override
     public Enumeration<URL> getResources(String name) throws IOException {
         List<URL> urls = Collections.list(findResources(name));
@@ -223,10 +252,28 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         return Collections.enumeration(urls);
     }
 
+    /**
+     * @param name a resource name, relative to the classpath entries' roots
+     * @return its bytes from the first classpath entry that has it, or null (also when it cannot be read)
+     */
+    byte[] ownResource(String name) {
+        for (ClasspathEntry root : roots) {
+            try {
+                byte[] bytes = root.read(name);
+                if (bytes != null) {
+                    return bytes;
+                }
+            } catch (IOException e) {
+                return null; // as ClassLoader.getResourceAsStream answers an unreadable resource
+            }
+        }
+        return null;
+    }
+
     /** @return the resource in the first classpath entry that has it, or null */
     @Override
     protected URL findResource(String name) {
-        for (Root root : roots) {
+        for (ClasspathEntry root : roots) {
             URL url = root.url(name);
             if (url != null) {
                 return url;
@@ -239,7 +286,7 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
     @Override
     protected Enumeration<URL> findResources(String name) {
         List<URL> urls = new ArrayList<>();
-        for (Root root : roots) {
+        for (ClasspathEntry root : roots) {
             URL url = root.url(name);
             if (url != null) {
                 urls.add(url);
@@ -252,7 +299,7 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
     @Override
     public void close() throws IOException {
         IOException failure = null;
-        for (Root root : roots) {
+        for (ClasspathEntry root : roots) {
             try {
                 root.close();
             } catch (IOException e) {
@@ -271,140 +318,5 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
     private static <T extends Throwable> T withCause(T error, Throwable cause) {
         error.initCause(cause);
         return error;
-    }
-
-    private static URL toUrl(URI uri) {
-        try {
-            return uri.toURL();
-        } catch (MalformedURLException e) {
-            throw new IllegalStateException("No URL for " + uri, e);
-        }
-    }
-
-    /** One classpath entry: a directory or a jar file. */
-    private abstract static class Root implements Closeable {
-        final ProtectionDomain domain;
-
-        Root(Path path) {
-            this.domain = new ProtectionDomain(new CodeSource(toUrl(path.toUri()), (CodeSigner[]) null), null);
-        }
-
-        static Root open(Path entry) {
-            Path path = entry.toAbsolutePath().normalize();
-            if (Files.isDirectory(path)) {
-                return new DirectoryRoot(path);
-            }
-            if (Files.isRegularFile(path)) {
-                return new JarRoot(path);
-            }
-            throw new IllegalArgumentException("Classpath entry " + entry + " is neither a directory nor a jar file");
-        }
-
-        /** @return the resource's bytes, or null when this entry has no such resource */
-        abstract byte[] read(String resource) throws IOException;
-
-        /** @return the resource's URL, or null when this entry has no such resource */
-        abstract URL url(String resource);
-
-        /** @return where the resource is, for messages */
-        abstract String describe(String resource);
-    }
-
-    private static final class DirectoryRoot extends Root {
-        private final Path directory;
-
-        DirectoryRoot(Path directory) {
-            super(directory);
-            this.directory = directory;
-        }
-
-        /** The resource's file, or null when it is missing or its name points outside the directory. */
-        private Path file(String resource) {
-            Path file = directory.resolve(resource).normalize();
-            return file.startsWith(directory) && Files.isRegularFile(file) ? file : null;
-        }
-
-        @Override
-        byte[] read(String resource) throws IOException {
-            Path file = file(resource);
-            if (file == null) {
-                return null;
-            }
-            try {
-                return Files.readAllBytes(file);
-            } catch (IOException e) {
-                throw new IOException("cannot read " + file + ": " + e, e);
-            }
-        }
-
-        @Override
-        URL url(String resource) {
-            Path file = file(resource);
-            return file == null ? null : toUrl(file.toUri());
-        }
-
-        @Override
-        String describe(String resource) {
-            return directory.resolve(resource).toString();
-        }
-
-        @Override
-        public void close() {
-        }
-    }
-
-    private static final class JarRoot extends Root {
-        private final Path path;
-        private final JarFile jar;
-
-        JarRoot(Path path) {
-            super(path);
-            this.path = path;
-            try {
-                this.jar = new JarFile(path.toFile(), false, ZipFile.OPEN_READ, JarFile.runtimeVersion());
-            } catch (IOException e) {
-                throw new UncheckedIOException("Cannot open classpath jar " + path + ": " + e.getMessage(), e);
-            }
-        }
-
-        private JarEntry entry(String resource) {
-            JarEntry entry = jar.getJarEntry(resource);
-            return entry == null || entry.isDirectory() ? null : entry;
-        }
-
-        @Override
-        byte[] read(String resource) throws IOException {
-            JarEntry entry = entry(resource);
-            if (entry == null) {
-                return null;
-            }
-            try (InputStream in = jar.getInputStream(entry)) {
-                return in.readAllBytes();
-            } catch (IOException e) {
-                throw new IOException("cannot read " + describe(resource) + ": " + e, e);
-            }
-        }
-
-        @Override
-        URL url(String resource) {
-            if (entry(resource) == null) {
-                return null;
-            }
-            try {
-                return toUrl(new URI("jar", path.toUri() + "!/" + resource, null));
-            } catch (URISyntaxException e) {
-                throw new IllegalStateException("No URL for " + describe(resource), e);
-            }
-        }
-
-        @Override
-        String describe(String resource) {
-            return path + "!/" + resource;
-        }
-
-        @Override
-        public void close() throws IOException {
-            jar.close();
-        }
     }
 }

@@ -1,105 +1,174 @@
 package org.kheperasim.sim.host.loading;
 
+import java.util.Arrays;
 import java.util.List;
+import java.util.function.BiPredicate;
+import java.util.stream.Collectors;
+import org.objectweb.asm.Type;
 
 /**
- * What controller code may not touch: a controller runs untrusted, in grading and in headless runs
- * alike, so the loader refuses a class that reaches for the machine or for the simulator behind the
- * API. The check is made on the bytecode at load time (Java 17's SecurityManager is deprecated),
- * on every call, field access, type use, class constant and method handle, so a forbidden method
- * cannot be reached by a method reference either; reflection and method-handle lookups, which could
- * reach anything by name, are refused as such.
+ * What untrusted controller code may use: a class of its own, or a class or member of the Java
+ * platform and the simulator that the {@link Allowlist} allows. Everything else is refused when the
+ * class is loaded (Java's SecurityManager is gone, so the check is made on the bytecode): every
+ * call, field access, type use, class constant, method handle and bootstrap method, and every
+ * superclass and interface. A member is looked up first where the JVM would find it
+ * ({@link ClassHierarchy}), so a method inherited from the platform is judged as the platform's,
+ * whatever class the call names.
  *
- * <p>Allowed: the student API, the Java library for computing (collections, maths, strings,
- * {@code java.time}, threads, which the simulator contains), printing to {@code System.out},
- * Swing and AWT for a controller's own debug window.
+ * <p>A list of forbidden calls always misses a door: the JDK does forbidden things on its caller's
+ * behalf (bean scripting, JMX, XML entities, file-name constructors, preferences). An allowlist
+ * names only what is known to stay inside the run.
  */
 final class ControllerPolicy {
-    /** A forbidden group of classes or members, and why. */
-    private record Rule(String ownerPrefix, List<String> members, String why) {
-        boolean matches(String owner, String member) {
-            if (!owner.startsWith(ownerPrefix)) {
-                return false;
-            }
-            if (members.isEmpty()) {
-                return true;
-            }
-            return member != null && members.stream().anyMatch(m -> m.endsWith("*") ? member.startsWith(m.substring(0, m.length() - 1)) : m.equals(member));
-        }
+    /** Where a refusal sends the student. */
+    static final String DOCS = "docs/controller-rules.md lists what controller code may use";
+
+    /** The rule for a use that no entry of the refused group explains. */
+    static final String NOT_ALLOWED = "it is not on the allowlist of what untrusted controller code may use (computing,"
+            + " collections, text, printing, its own resources, its own threads and the robot's API); remove the use,"
+            + " or run a controller you trust with --trusted";
+
+    /**
+     * A use refused.
+     *
+     * @param verb how the class uses it ({@code uses}, {@code extends}, {@code declares})
+     * @param what the class or member, as a student reads it
+     * @param why the rule
+     */
+    record Refusal(String verb, String what, String why) {
     }
 
-    private static final String FILES = "controllers may not touch files";
-    private static final String NETWORK = "controllers may not open network connections";
-    private static final String PROCESSES = "controllers may not start processes";
-    private static final String NATIVE = "controllers may not load native code or use internal JDK classes";
-    private static final String LOADERS = "controllers may not define or load classes themselves";
-    private static final String REFLECTION = "controllers may not use reflection to reach members by name";
-    private static final String SIMULATOR = "controllers see only the student API (org.kheperasim.api), not the simulator";
-    private static final String STREAMS = "controllers may not replace the standard streams or system properties";
+    private final Allowlist list;
+    private final ClassHierarchy hierarchy;
+    private final BiPredicate<String, String> isSubclass;
 
-    private static final List<Rule> RULES = List.of(
-            new Rule("java/io/File", List.of(), FILES),
-            new Rule("java/io/RandomAccessFile", List.of(), FILES),
-            new Rule("java/nio/file/", List.of(), FILES),
-            new Rule("java/nio/channels/", List.of(), FILES + " or the network"),
-            new Rule("java/net/", List.of(), NETWORK),
-            new Rule("javax/net/", List.of(), NETWORK),
-            new Rule("java/lang/ProcessBuilder", List.of(), PROCESSES),
-            new Rule("java/lang/ProcessHandle", List.of(), PROCESSES),
-            new Rule("java/lang/Runtime", List.of("exec", "load", "loadLibrary"), PROCESSES + " or native code"),
-            new Rule("java/lang/System", List.of("load", "loadLibrary", "mapLibraryName"), NATIVE),
-            new Rule("java/lang/System", List.of("setOut", "setErr", "setIn", "setProperty", "setProperties",
-                    "clearProperty", "setSecurityManager"), STREAMS),
-            new Rule("sun/", List.of(), NATIVE),
-            new Rule("jdk/internal/", List.of(), NATIVE),
-            new Rule("java/lang/ClassLoader", List.of(), LOADERS),
-            new Rule("java/lang/Class", List.of("forName", "newInstance", "getClassLoader"), REFLECTION + " or load classes"),
-            new Rule("java/lang/reflect/Method", List.of("invoke", "setAccessible", "trySetAccessible"), REFLECTION),
-            new Rule("java/lang/reflect/Field", List.of("get*", "set*", "trySetAccessible"), REFLECTION),
-            new Rule("java/lang/reflect/Constructor", List.of("newInstance", "setAccessible", "trySetAccessible"), REFLECTION),
-            new Rule("java/lang/reflect/AccessibleObject", List.of("setAccessible", "trySetAccessible"), REFLECTION),
-            new Rule("java/lang/reflect/Proxy", List.of(), REFLECTION),
-            new Rule("java/lang/invoke/MethodHandles", List.of("privateLookupIn", "reflectAs"), REFLECTION),
-            new Rule("java/lang/invoke/MethodHandles$Lookup", List.of("find*", "unreflect*", "in", "defineClass",
-                    "defineHiddenClass", "accessClass", "ensureInitialized"), REFLECTION),
-            new Rule("org/kheperasim/sim/", List.of(), SIMULATOR),
-            new Rule("org/kheperasim/link/", List.of(), SIMULATOR));
-
-    private ControllerPolicy() {
+    /**
+     * @param list what is allowed
+     * @param hierarchy the classes as the loader sees them
+     */
+    ControllerPolicy(Allowlist list, ClassHierarchy hierarchy) {
+        this.list = list;
+        this.hierarchy = hierarchy;
+        this.isSubclass = (type, ancestor) -> hierarchy.isSubtypeOf(type.replace('.', '/'), ancestor.replace('.', '/'));
     }
 
     /**
-     * @param owner internal name of the class used
-     * @param member the member's name, or null for a use of the type itself
-     * @return why the use is refused, or null when it is allowed
+     * @param internalName a type named by a cast, an instanceof, a {@code new}, an array creation or
+     *     a class constant (an internal name, or an array descriptor)
+     * @return the refusal, or null when it is allowed
      */
-    static String refusal(String owner, String member) {
-        for (Rule r : RULES) {
-            if (r.matches(owner, member)) {
-                // A use of the type alone (a local variable's type, a cast) is harmless unless every member is forbidden.
-                if (member == null && !r.members().isEmpty()) {
-                    return null;
-                }
-                return r.why();
+    Refusal type(String internalName) {
+        String element = elementType(internalName);
+        if (element == null || isOwn(element)) {
+            return null;
+        }
+        String binary = binary(element);
+        return list.allowsType(binary, isSubclass) ? null : new Refusal("uses", binary, why(binary, null, null));
+    }
+
+    /**
+     * @param verb {@code extends} or {@code implements}
+     * @return the refusal of a superclass or interface, or null when it may be extended or implemented
+     */
+    Refusal supertype(String internalName, String verb) {
+        Refusal r = type(internalName);
+        return r == null ? null : new Refusal(verb, r.what(), r.why());
+    }
+
+    /**
+     * @param owner the class a call or method handle names
+     * @param asBootstrap the method is named as a bootstrap method (of an invokedynamic or a dynamic
+     *     constant)
+     * @return the refusal, or null when it is allowed
+     */
+    Refusal method(String owner, String name, String descriptor, boolean asBootstrap) {
+        if (owner.startsWith("[")) {
+            return type(owner); // clone() of an array
+        }
+        List<String> declaring = hierarchy.declaringClasses(owner, name, descriptor);
+        if (declaring.isEmpty()) {
+            if (isOwn(owner)) {
+                return null; // found nowhere: the call fails on its own
+            }
+            declaring = List.of(owner);
+        }
+        List<String> parameters = Arrays.stream(Type.getArgumentTypes(descriptor)).map(Type::getClassName).toList();
+        for (String d : declaring) {
+            if (hierarchy.isLocal(d)) {
+                continue;
+            }
+            String binary = binary(d);
+            if (!list.allowsMember(binary, name, parameters, asBootstrap, isSubclass)) {
+                String what = (name.equals("<init>") ? "new " + binary : binary + "." + name) + "("
+                        + parameters.stream().map(ControllerPolicy::simple).collect(Collectors.joining(", ")) + ")";
+                return new Refusal("uses", what + through(owner, d), why(binary, name, parameters));
             }
         }
         return null;
     }
 
+    /** @return the refusal of a field access, or null when it is allowed */
+    Refusal field(String owner, String name) {
+        String declaring = hierarchy.declaringField(owner, name);
+        if (declaring == null) {
+            if (isOwn(owner)) {
+                return null;
+            }
+            declaring = owner;
+        }
+        if (hierarchy.isLocal(declaring)) {
+            return null;
+        }
+        String binary = binary(declaring);
+        return list.allowsMember(binary, name, null, false, isSubclass) ? null
+                : new Refusal("uses", binary + "." + name + through(owner, declaring), why(binary, name, null));
+    }
+
+    /** @return the refusal of a class that declares a finalizer */
+    Refusal finalizer() {
+        return new Refusal("declares", "finalize()", why("java.lang.Object", "finalize", List.of()));
+    }
+
     /**
-     * @param className the class being loaded (internal name)
+     * @param className the class being checked (internal name)
      * @param source its source file, or null
-     * @param line the source line, or -1
-     * @param owner the class used
-     * @param member the member used, or null
-     * @param why the rule
-     * @return the error to throw
+     * @param line the source line, or 0 or less when unknown
+     * @return the error to throw: one line naming the student's file and line, the use and the rule
      */
-    static ControllerPolicyError error(String className, String source, int line, String owner, String member,
-            String why) {
+    static ControllerPolicyError error(String className, String source, int line, Refusal r) {
         String where = (source != null ? source : className.replace('/', '.')) + (line > 0 ? ":" + line : "");
-        String what = owner.replace('/', '.') + (member != null ? "." + member : "");
-        return new ControllerPolicyError(where + ": uses " + what + ": " + why + " (the simulator refuses it so that"
-                + " a run cannot harm the machine or fake a result; remove the call)");
+        return new ControllerPolicyError(where + ": " + r.verb() + " " + r.what() + ": " + r.why() + " (" + DOCS + ")");
+    }
+
+    /** A class the controller's loader defines, or one found nowhere (its use fails on its own when it runs). */
+    private boolean isOwn(String internalName) {
+        return hierarchy.isLocal(internalName) || !hierarchy.exists(internalName) && !internalName.contains(".");
+    }
+
+    private String why(String binary, String member, List<String> parameters) {
+        String reason = list.refusalReason(binary, member, parameters, isSubclass);
+        return reason != null ? reason : NOT_ALLOWED;
+    }
+
+    private static String through(String owner, String declaring) {
+        return owner.equals(declaring) ? "" : " (called through " + binary(owner) + ")";
+    }
+
+    /** @return the class an array type is made of, or null for a primitive array */
+    private static String elementType(String internalName) {
+        if (!internalName.startsWith("[")) {
+            return internalName;
+        }
+        Type element = Type.getType(internalName).getElementType();
+        return element.getSort() == Type.OBJECT ? element.getInternalName() : null;
+    }
+
+    private static String binary(String internalName) {
+        return internalName.replace('/', '.');
+    }
+
+    /** {@code java.lang.String} as {@code String}, {@code java.util.Map$Entry[]} as {@code Map$Entry[]}. */
+    private static String simple(String binaryName) {
+        return binaryName.substring(binaryName.lastIndexOf('.') + 1);
     }
 }

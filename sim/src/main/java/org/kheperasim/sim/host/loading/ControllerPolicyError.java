@@ -1,9 +1,10 @@
 package org.kheperasim.sim.host.loading;
 
 /**
- * A controller class makes a call the simulator does not allow controller code to make (files,
- * network, processes, native code, class loaders, reflection, the simulator's own classes). Thrown
- * when the class is loaded; the message names the call, the student's source line and the fix.
+ * A controller class uses something that the controller allowlist does not allow untrusted code to
+ * use (files, the network, processes, reflection, the JVM's settings, thread pools, windows, the
+ * simulator's own classes, and everything else not on the list). Thrown when the class is loaded;
+ * the one-line message names the use, the student's source file and line, and the rule.
  */
 public final class ControllerPolicyError extends LinkageError {
     private static final long serialVersionUID = 1L;

@@ -1,9 +1,9 @@
 package org.kheperasim.sim.host.loading;
 
 /**
- * Answers the one class-hierarchy question {@link TimeCallRewriter} cannot answer from the class
- * it is rewriting: whether a static call made through some class reaches a method of
- * {@code java.lang.Thread}.
+ * Answers the class-hierarchy questions {@link TimeCallRewriter} cannot answer from the class it is
+ * rewriting: whether a static call made through some class reaches a method of
+ * {@code java.lang.Thread}, and where a method is declared.
  *
  * <p>javac compiles an unqualified {@code sleep(100)} inside {@code class Robot extends Thread} as
  * {@code INVOKESTATIC Robot.sleep (J)V}; the JVM resolves it by searching {@code Robot} and then its
@@ -26,4 +26,14 @@ public interface HierarchyLookup {
      *     false when that is not so or cannot be told
      */
     boolean resolvesToThread(String owner, String name, String descriptor);
+
+    /**
+     * The class or interface where the JVM finds the method {@code owner.name descriptor}.
+     *
+     * @return its internal name, or null when it cannot be told (or there is no single one); the
+     *     default tells nothing
+     */
+    default String declaringClass(String owner, String name, String descriptor) {
+        return null;
+    }
 }

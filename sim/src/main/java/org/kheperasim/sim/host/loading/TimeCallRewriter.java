@@ -40,8 +40,9 @@ import org.objectweb.asm.Type;
  * not change control flow, so the class's own stack map frames stay valid and are kept.
  *
  * <p>Untrusted controller code is also contained (see {@link CallTargets} for the calls that go to
- * {@link org.kheperasim.sim.host.Containment}, and {@link ControllerPolicy} for the calls refused
- * at load): every handler that catches {@code Throwable} or {@code Error} first rethrows a stop of
+ * {@link org.kheperasim.sim.host.Containment} and the other hooks, and for the parallel streams made
+ * sequential; {@link ControllerCheck} refuses what the allowlist does not allow before this rewrite
+ * runs): every handler that catches {@code Throwable} or {@code Error} first rethrows a stop of
  * the simulator, so a catch-all loop cannot keep a stopped controller alive.
  */
 public final class TimeCallRewriter {
@@ -72,15 +73,14 @@ public final class TimeCallRewriter {
     }
 
     /**
-     * Rewrite one class file, and with {@code contained} also put its escapes under the simulator's
-     * control and refuse its forbidden calls (see {@link ControllerPolicy} and
-     * {@link org.kheperasim.sim.host.Containment}).
+     * Rewrite one class file, and with {@code contained} also put its escapes, threads, monitors,
+     * output and resource reads under the simulator's control (see {@link CallTargets}); what it may
+     * use at all is {@link ControllerCheck}'s to decide, before.
      *
      * @param classFile the class file's bytes (not modified)
      * @param lookup see {@link #rewrite(byte[], HierarchyLookup)}
      * @param contained true for untrusted controller code
      * @return the rewritten class file, or {@code classFile} itself when nothing had to change
-     * @throws ControllerPolicyError naming the first forbidden call and its source line
      */
     public static byte[] rewrite(byte[] classFile, HierarchyLookup lookup, boolean contained) {
         ClassFileHeader.check(classFile);
@@ -92,8 +92,6 @@ public final class TimeCallRewriter {
             writer = new ClassWriter(reader, ClassWriter.COMPUTE_MAXS);
             rewriter = new ClassRewriter(writer, lookup, contained);
             reader.accept(rewriter, 0);
-        } catch (ControllerPolicyError e) {
-            throw e;
         } catch (RuntimeException e) {
             // ASM reports a malformed class file with whatever runtime exception it runs into.
             throw withCause(new ClassFormatError("not a well-formed class file (" + e + ")"), e);
@@ -124,7 +122,6 @@ public final class TimeCallRewriter {
         private final boolean contained;
         private boolean changed;
         private String className;
-        private String source;
         private int version;
 
         ClassRewriter(ClassVisitor next, HierarchyLookup lookup, boolean contained) {
@@ -137,32 +134,7 @@ public final class TimeCallRewriter {
         public void visit(int version, int access, String name, String signature, String superName, String[] interfaces) {
             className = name;
             this.version = version;
-            if (contained) {
-                check(-1, superName, null);
-                if (interfaces != null) {
-                    for (String i : interfaces) {
-                        check(-1, i, null);
-                    }
-                }
-            }
             super.visit(version, access, name, signature, superName, interfaces);
-        }
-
-        @Override
-        public void visitSource(String file, String debug) {
-            source = file;
-            super.visitSource(file, debug);
-        }
-
-        /** Refuse a forbidden use (contained code only). */
-        private void check(int line, String owner, String member) {
-            if (!contained || owner == null) {
-                return;
-            }
-            String why = ControllerPolicy.refusal(owner, member);
-            if (why != null) {
-                throw ControllerPolicy.error(className, source, line, owner, member, why);
-            }
         }
 
         @Override
@@ -188,16 +160,17 @@ public final class TimeCallRewriter {
                     case Opcodes.H_INVOKEVIRTUAL -> Opcodes.INVOKEVIRTUAL;
                     default -> 0;
                 };
-                check(-1, handle.getOwner(), handle.getName());
                 CallTargets.Target hook = targets.of(opcode, handle.getOwner(), handle.getName(), handle.getDesc());
                 if (hook == null) {
-                    return handle;
+                    String renamed = targets.renamed(handle.getOwner(), handle.getName(), handle.getDesc());
+                    if (renamed == null) {
+                        return handle;
+                    }
+                    changed = true;
+                    return new Handle(handle.getTag(), handle.getOwner(), renamed, handle.getDesc(), handle.isInterface());
                 }
                 changed = true;
                 return new Handle(Opcodes.H_INVOKESTATIC, hook.owner(), hook.name(), hook.descriptor(), false);
-            }
-            if (value instanceof Type type && type.getSort() == Type.OBJECT) {
-                check(-1, type.getInternalName(), null);
             }
             if (value instanceof ConstantDynamic dynamic) {
                 Object[] arguments = new Object[dynamic.getBootstrapMethodArgumentCount()];
@@ -273,7 +246,6 @@ public final class TimeCallRewriter {
                 super.visitLookupSwitchInsn(dflt, keys, labels);
             }
 
-            private int line = -1;
             /** Handlers of catch-alls ({@code Throwable}, {@code Error}): a stop must not end in them. */
             private final Set<Label> catchAlls = new HashSet<>();
             private boolean atCatchAll;
@@ -328,19 +300,14 @@ public final class TimeCallRewriter {
             }
 
             @Override
-            public void visitLineNumber(int number, Label start) {
-                line = number;
-                super.visitLineNumber(number, start);
-            }
-
-            @Override
             public void visitMethodInsn(int opcode, String owner, String name, String descriptor,
                     boolean isInterface) {
                 rethrowStops();
-                check(line, owner, name);
                 CallTargets.Target hook = targets.of(opcode, owner, name, descriptor);
                 if (hook == null) {
-                    super.visitMethodInsn(opcode, owner, name, descriptor, isInterface);
+                    String renamed = targets.renamed(owner, name, descriptor);
+                    changed |= renamed != null;
+                    super.visitMethodInsn(opcode, owner, renamed != null ? renamed : name, descriptor, isInterface);
                 } else {
                     changed = true;
                     super.visitMethodInsn(Opcodes.INVOKESTATIC, hook.owner(), hook.name(), hook.descriptor(), false);
@@ -350,16 +317,12 @@ public final class TimeCallRewriter {
             @Override
             public void visitFieldInsn(int opcode, String owner, String name, String descriptor) {
                 rethrowStops();
-                check(line, owner, name);
                 super.visitFieldInsn(opcode, owner, name, descriptor);
             }
 
             @Override
             public void visitTypeInsn(int opcode, String type) {
                 rethrowStops();
-                if (!type.startsWith("[")) {
-                    check(line, type, null);
-                }
                 super.visitTypeInsn(opcode, type);
             }
 
@@ -374,9 +337,6 @@ public final class TimeCallRewriter {
             @Override
             public void visitLdcInsn(Object value) {
                 rethrowStops();
-                if (value instanceof Type type && type.getSort() == Type.OBJECT) {
-                    check(line, type.getInternalName(), null);
-                }
                 super.visitLdcInsn(constant(value));
             }
 

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
@@ -467,6 +468,9 @@ class ControllerClassLoaderTest {
                             parentDir.resolve("greeting.txt").toUri().toURL()),
                     Collections.list(loader.getResources("greeting.txt")));
             assertEquals(parentDir.resolve("only-parent.txt").toUri().toURL(), loader.getResource("only-parent.txt"));
+            // Controller code asks through ResourceHooks instead (ControllerResourcesTest): its own entry only.
+            assertNull(loader.ownResource("only-parent.txt"));
+            assertEquals("child", new String(loader.ownResource("greeting.txt"), StandardCharsets.UTF_8));
         }
     }
 

@@ -1,0 +1,120 @@
+package org.kheperasim.sim.host.loading;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Supplier;
+import java.util.jar.JarEntry;
+import java.util.jar.JarOutputStream;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * A contained controller reads the resources of its own classpath entry (its folder or its jar),
+ * read-only, every way course code asks for them, and nothing else: not the simulator's jar or
+ * classpath, not a file beside the entry, whichever class or loader it asks.
+ */
+class ControllerResourcesTest {
+    /** Reads in each way course code does; each answer is the text read, or "none". */
+    private static final String READER = """
+            package bot;
+            import java.io.*;
+            import java.net.URL;
+            import java.nio.charset.StandardCharsets;
+            import java.util.*;
+            public class Reader implements java.util.function.Supplier<String> {
+                static String text(InputStream in) throws IOException {
+                    if (in == null) {
+                        return "none";
+                    }
+                    try (BufferedReader r = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8))) {
+                        return r.readLine();
+                    }
+                }
+                static String url(URL url) throws IOException {
+                    return url == null ? "none" : text(url.openStream());
+                }
+                public String get() {
+                    try {
+                        Properties p = new Properties();
+                        p.load(getClass().getResourceAsStream("config.properties"));
+                        return String.join(",", p.getProperty("speed"),
+                                text(getClass().getResourceAsStream("/top.txt")),
+                                text(getClass().getClassLoader().getResourceAsStream("bot/config.properties")),
+                                text(Thread.currentThread().getContextClassLoader().getResourceAsStream("top.txt")),
+                                url(getClass().getResource("config.properties")),
+                                url(getClass().getClassLoader().getResource("top.txt")),
+                                new Scanner(Reader.class.getResourceAsStream("/top.txt")).nextLine(),
+                                text(String.class.getResourceAsStream("/top.txt")),
+                                text(getClass().getResourceAsStream("/org/kheperasim/sim/host/loading/controller-allowlist.txt")),
+                                text(String.class.getResourceAsStream("/java/lang/Object.class")),
+                                text(getClass().getResourceAsStream("../../outside.txt")),
+                                text(getClass().getResourceAsStream("/org/junit/jupiter/api/Test.class")),
+                                url(Thread.currentThread().getContextClassLoader().getResource("META-INF/MANIFEST.MF")));
+                    } catch (IOException e) {
+                        throw new UncheckedIOException(e);
+                    }
+                }
+            }
+            """;
+
+    /** Own resources read, in each way; the simulator's resources and a file outside the entry not. */
+    private static final String EXPECTED = "7,top,speed=7,top,speed=7,top,top,top,none,none,none,none,none";
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void aControllerInAFolderReadsItsOwnResourcesOnly() throws Exception {
+        Path classes = JavaSources.compile(Files.createDirectories(dir.resolve("classes")), Map.of("bot.Reader", READER));
+        Files.writeString(classes.resolve("bot/config.properties"), "speed=7\n");
+        Files.writeString(classes.resolve("top.txt"), "top\n");
+        Files.writeString(dir.resolve("outside.txt"), "outside\n");
+
+        assertEquals(EXPECTED, read(classes));
+    }
+
+    @Test
+    void aControllerInAJarReadsItsOwnResourcesOnly() throws Exception {
+        Path classes = JavaSources.compile(Files.createDirectories(dir.resolve("classes")), Map.of("bot.Reader", READER));
+        Files.writeString(classes.resolve("bot/config.properties"), "speed=7\n");
+        Files.writeString(classes.resolve("top.txt"), "top\n");
+        Path jar = dir.resolve("bot.jar");
+        try (JarOutputStream out = new JarOutputStream(Files.newOutputStream(jar)); Stream<Path> files = Files.walk(classes)) {
+            for (Path f : files.filter(Files::isRegularFile).toList()) {
+                out.putNextEntry(new JarEntry(classes.relativize(f).toString().replace('\\', '/')));
+                Files.copy(f, (OutputStream) out);
+            }
+        }
+
+        assertEquals(EXPECTED, read(jar));
+    }
+
+    @SuppressWarnings("unchecked")
+    private String read(Path entry) throws Exception {
+        try (ControllerClassLoader loader = new ControllerClassLoader(List.of(entry), getClass().getClassLoader())) {
+            return ((Supplier<String>) loader.loadClass("bot.Reader").getConstructor().newInstance()).get();
+        }
+    }
+
+    @Test
+    void aTrustedControllerReadsAsJavaDoes() throws Exception {
+        Path classes = JavaSources.compile(Files.createDirectories(dir.resolve("classes")), Map.of("bot.Reader", READER));
+        Files.writeString(classes.resolve("bot/config.properties"), "speed=7\n");
+        Files.writeString(classes.resolve("top.txt"), "top\n");
+        try (ControllerClassLoader loader = new ControllerClassLoader(List.of(classes), getClass().getClassLoader(), false)) {
+            @SuppressWarnings("unchecked")
+            String read = ((Supplier<String>) loader.loadClass("bot.Reader").getConstructor().newInstance()).get();
+            List<String> answers = List.of(read.split(","));
+            assertEquals("#", answers.get(8).substring(0, 1), "the simulator's allowlist, through the parent: " + read);
+            assertEquals("none", answers.get(7), "String's loader does not see the controller's entry: " + read);
+        }
+    }
+}
