@@ -16,7 +16,7 @@ import org.opentest4j.AssertionFailedError;
  *   happened: it did not in the 60.000 s the run lasted; nearest 212.4 mm from it at 41.250 s; ended at (380.0, 610.2) mm heading 90.0 deg
  *   run:      MyController in goal-field, seed 1, settings defaults, 60.000 s simulated
  *   trace:    target/kheperasim-runs/MyControllerTest/reachesTheGoal/goal-field-MyController-seed1.trace
- *             (watch it: khepera-sim's window, File &gt; Open recording; how to make it again: the .txt beside it)
+ *             (watch it in a browser: target/kheperasim-runs/.../goal-field-MyController-seed1.html; how to make it again: the .txt beside it)
  * </pre>
  */
 final class Failure {
@@ -80,8 +80,8 @@ final class Failure {
         }
         try {
             Path saved = run.saveTo(TestRuns.folderNow());
-            return RunSpec.shown(saved) + "\n            (watch it: khepera-sim's window, File > Open recording;"
-                    + " how to make it again: the .txt beside it)";
+            return RunSpec.shown(saved) + "\n            (watch it in a browser: " + RunSpec.shown(RunFiles.page(saved))
+                    + "; how to make it again: the .txt beside it)";
         } catch (RuntimeException e) {
             return "not saved (" + e.getMessage() + "); make the run again with: " + run.commandLine();
         }

@@ -4,10 +4,15 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.files.AtomicFiles;
+import org.kheperasim.sim.web.RunOutcome;
+import org.kheperasim.sim.web.RunPage;
 
 /**
  * Writes a run's files for a person to look at: the trace, the arena beside it (so that the window's
@@ -42,8 +47,8 @@ final class RunFiles {
             AtomicFiles.write(trace, run.trace());
             ArenaFormat.save(run.spec().arena(), folder.resolve(run.arena() + ArenaFormat.EXTENSION));
             run.saved(trace);
-            // The one place a run's files are written: a web page of the run, once the simulator can draw one
-            // (run --html), goes here beside the trace, and Failure's trace line names it.
+            // The run as a web page beside the trace, to watch in a browser (no simulator needed).
+            RunPage.write(trace, run.spec().arena(), outcome(run), page(trace));
             AtomicFiles.write(folder.resolve(name + ".txt"), about(run, trace));
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write the run's files in " + folder.toAbsolutePath() + ": " + e.getMessage(), e);
@@ -51,12 +56,31 @@ final class RunFiles {
         return trace;
     }
 
+    /** @return the web page written beside {@code trace} */
+    static Path page(Path trace) {
+        return trace.resolveSibling(trace.getFileName().toString().replaceFirst("\\.trace$", "") + ".html");
+    }
+
+    /** What the page shows beyond the samples: its heading and how each controller that failed ended. */
+    private static RunOutcome outcome(Run run) {
+        List<RunOutcome.Failure> failures = new ArrayList<>();
+        for (int i = 0; i < run.robots().size(); i++) {
+            Ending e = run.robots().get(i).ending();
+            if (!e.normal() && e.kind() != Ending.Kind.NOT_RECORDED) {
+                failures.add(new RunOutcome.Failure(i, e.at().map(SimTime::seconds).orElse(Double.NaN),
+                        e.kind().name().toLowerCase(Locale.ROOT).replace('_', ' '), e.toString()));
+            }
+        }
+        return new RunOutcome(run.toString(), failures, null);
+    }
+
     /** The text beside a trace: what the run was, how to watch it and make it again, and its console. */
     private static String about(Run run, Path trace) {
         String shown = RunSpec.shown(trace);
         StringBuilder s = new StringBuilder();
         s.append(run).append('\n').append('\n');
-        s.append("Watch it: start the simulator's window (java -jar khepera-sim.jar), choose File > Open recording\n")
+        s.append("Watch it in a browser: open ").append(RunSpec.shown(page(trace))).append('\n');
+        s.append("Or in the simulator's window: start it (java -jar khepera-sim.jar), choose File > Open recording\n")
                 .append("and open ").append(shown).append('\n');
         s.append("Make the same run again (the simulator is deterministic: add --trace FILE for the same trace, byte for byte):\n  ")
                 .append(run.commandLine()).append('\n');
