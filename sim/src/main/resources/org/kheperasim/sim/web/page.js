@@ -493,7 +493,7 @@
 
   function drawSensors() {
     var dpr = window.devicePixelRatio || 1, w = sensorCanvas.clientWidth || 300, h = 410;
-    if (sensorCanvas.width !== Math.round(w * dpr)) {
+    if (sensorCanvas.width !== Math.round(w * dpr) || sensorCanvas.height !== Math.round(h * dpr)) {
       sensorCanvas.width = Math.round(w * dpr);
       sensorCanvas.height = Math.round(h * dpr);
     }
@@ -672,7 +672,7 @@
   function drawTimeline() {
     var dpr = window.devicePixelRatio || 1, w = timeline.clientWidth, h = timeline.clientHeight;
     if (!w || !h) { return; }   // hidden (#only=arena)
-    if (timeline.width !== Math.round(w * dpr)) {
+    if (timeline.width !== Math.round(w * dpr) || timeline.height !== Math.round(h * dpr)) {
       timeline.width = Math.round(w * dpr);
       timeline.height = Math.round(h * dpr);
     }
