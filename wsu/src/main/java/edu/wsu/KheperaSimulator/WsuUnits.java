@@ -11,6 +11,14 @@ package edu.wsu.KheperaSimulator;
  *
  * <p><b>Wheel positions</b> are the Khepera's position counters in encoder pulses (about 0.08 mm of
  * wheel travel each), counted from 0 at the start of each run, in a {@code long} that does not wrap.
+ * With the backend's option {@value #POSITION_UNITS} set to {@value #LEGACY} they count as the original
+ * simulator's counter did instead: {@value #LEGACY_COUNTS_PER_DEGREE} counts per degree of a turn on the
+ * spot (course code divides by 3 to get degrees), which on the Khepera's 53 mm wheel base is
+ * {@link #LEGACY_COUNTS_PER_PULSE} counts per pulse.
+ *
+ * <p><b>The pose</b> of the later fork's API is in the original's panel: pixels of 2.4384 mm
+ * ({@value #PANEL_PX} px = 1219.2 mm, the paper's 4 ft lab), x to the right and y down from the
+ * top-left corner, the heading in radians growing clockwise on the screen, 0 facing east (+x).
  */
 final class WsuUnits {
     /** The slowest speed a WSU controller may ask for (full speed backwards), WSU units. */
@@ -22,12 +30,54 @@ final class WsuUnits {
     /** Khepera speed units (≈ 8 mm/s each) per WSU speed unit. */
     static final int KHEPERA_SPEED_PER_WSU_SPEED = 1;
 
+    /** The backend option that chooses the wheel positions' unit: {@value #PULSES} (default) or {@value #LEGACY}. */
+    static final String POSITION_UNITS = "wsu.positionUnits";
+    /** Wheel positions in the Khepera's encoder pulses (≈ 0.08 mm each), the same numbers as on the robot. */
+    static final String PULSES = "pulses";
+    /** Wheel positions counted as the original simulator counted them. */
+    static final String LEGACY = "legacy";
+    /**
+     * The original simulator's counts per degree of a turn on the spot (course code turns by
+     * {@code counts / 3} degrees; measured on the original: about 980 counts a second at speed 5,
+     * about 3 counts per degree).
+     */
+    static final double LEGACY_COUNTS_PER_DEGREE = 3;
+    /** The Khepera's wheel base, mm. */
+    static final double WHEEL_BASE_MM = 53;
+    /** Wheel travel per encoder pulse, mm (Khepera User Manual). */
+    static final double MM_PER_PULSE = 0.08;
+    /** Legacy counts per encoder pulse: {@value #LEGACY_COUNTS_PER_DEGREE} over the pulses a wheel turns per degree on the spot. */
+    static final double LEGACY_COUNTS_PER_PULSE = LEGACY_COUNTS_PER_DEGREE
+            / (WHEEL_BASE_MM / 2 * StrictMath.PI / 180 / MM_PER_PULSE);
+    /** The original's panel, pixels a side. */
+    static final int PANEL_PX = 500;
+    /** Millimetres per pixel of the original's panel (1219.2 mm / 500 px). */
+    static final double MM_PER_PX = 1219.2 / PANEL_PX;
+    /** Where the original starts its robot: the centre at (263, 263) px, facing east. */
+    static final double START_PX = 263;
+
     private WsuUnits() {
     }
 
     /** @param wsu a wheel speed, WSU units @return whether the original accepted it (−9..9) */
     static boolean validSpeed(int wsu) {
         return wsu >= MIN_SPEED && wsu <= MAX_SPEED;
+    }
+
+    /**
+     * @param option the backend's {@value #POSITION_UNITS} option, or null
+     * @return true for {@value #LEGACY}
+     * @throws IllegalArgumentException for a value that is neither unit, naming both
+     */
+    static boolean legacyPositions(String option) {
+        if (option == null || option.equals(PULSES)) {
+            return false;
+        }
+        if (option.equals(LEGACY)) {
+            return true;
+        }
+        throw new IllegalArgumentException(POSITION_UNITS + "=" + option + " is not a unit: use " + PULSES
+                + " (the Khepera's encoder pulses, the default) or " + LEGACY + " (the original simulator's counts)");
     }
 
     /** @param wsu a valid wheel speed, −9..9 WSU units @return the same speed in Khepera speed units (≈ 8 mm/s) */

@@ -38,8 +38,10 @@ public final class TraceReader {
      * @param robotLines  how many robot sample lines
      * @param capLines    how many cap lines
      * @param lastSeconds the time of the last sample line, s (0 without samples)
+     * @param visionLines how many vision lines (images a robot's vision turret gave its controller)
      */
-    public record Summary(Map<String, String> header, int robotLines, int capLines, double lastSeconds) {
+    public record Summary(Map<String, String> header, int robotLines, int capLines, double lastSeconds,
+            int visionLines) {
     }
 
     private TraceReader() {
@@ -94,8 +96,14 @@ public final class TraceReader {
         }
         int robots = 0;
         int caps = 0;
+        int visions = 0;
         double last = 0;
         for (; i < n; i++) {
+            if (lines[i].startsWith(TraceWriter.VISION_PREFIX)) {
+                last = visionLine(source, i + 1, lines[i], last);
+                visions++;
+                continue;
+            }
             String[] t = lines[i].split(" ", -1);
             double time = time(source, i + 1, t[0], last);
             if (t.length == CAP_COLUMNS && t[1].equals("cap")) {
@@ -113,8 +121,30 @@ public final class TraceReader {
             }
             last = time;
         }
-        return new Summary(header, robots, caps, last);
+        return new Summary(header, robots, caps, last, visions);
     }
+
+    /** A vision line: the sample's time, the robot, when the image was taken, 64 grey levels 0..255. */
+    private static double visionLine(String source, int line, String text, double previous) {
+        String[] t = text.substring(TraceWriter.VISION_PREFIX.length()).split(" ", -1);
+        if (t.length != 3 + VISION_PIXELS) {
+            throw new TraceFormatException(source, line, "a vision line has " + t.length + " columns after '"
+                    + TraceWriter.VISION_PREFIX.strip() + "'; it has t_s, robot, taken_s and " + VISION_PIXELS + " pixels");
+        }
+        double time = time(source, line, t[0], previous);
+        check(source, line, t[1], INT, "robot");
+        check(source, line, t[2], FIXED, "taken_s");
+        for (int c = 3; c < t.length; c++) {
+            check(source, line, t[c], INT, "pixel " + (c - 3));
+            int grey = Integer.parseInt(t[c]);
+            if (grey < 0 || grey > 255) {
+                throw new TraceFormatException(source, line, "pixel " + (c - 3) + " is " + grey + "; a grey level is 0..255");
+            }
+        }
+        return time;
+    }
+
+    private static final int VISION_PIXELS = 64;
 
     private static void robotLine(String source, int line, String[] t) {
         check(source, line, t[1], INT, "robot");
