@@ -28,6 +28,7 @@ public final class TraceReader {
     private static final Pattern TIME = Pattern.compile("\\d{1,12}\\.\\d{3}");
     private static final Pattern FIXED = Pattern.compile("-?\\d{1,12}\\.\\d{3}");
     private static final Pattern INT = Pattern.compile("-?\\d{1,10}");
+    private static final Pattern GREY = Pattern.compile("\\d{1,3}");
     private static final Set<String> CONTACTS = names(Contact.values());
     private static final Set<String> FINGERS = names(GripperState.values());
 
@@ -135,9 +136,9 @@ public final class TraceReader {
         check(source, line, t[1], INT, "robot");
         check(source, line, t[2], FIXED, "taken_s");
         for (int c = 3; c < t.length; c++) {
-            check(source, line, t[c], INT, "pixel " + (c - 3));
+            check(source, line, t[c], GREY, "pixel " + (c - 3));
             int grey = Integer.parseInt(t[c]);
-            if (grey < 0 || grey > 255) {
+            if (grey > 255) {
                 throw new TraceFormatException(source, line, "pixel " + (c - 3) + " is " + grey + "; a grey level is 0..255");
             }
         }
@@ -182,7 +183,7 @@ public final class TraceReader {
     private static void check(String source, int line, String token, Pattern form, String column) {
         if (!form.matcher(token).matches()) {
             throw new TraceFormatException(source, line, column + " is '" + shorten(token) + "'; expected "
-                    + (form == INT ? "a whole number" : "a number with 3 decimals"));
+                    + (form == INT ? "a whole number" : form == GREY ? "a grey level, 0..255" : "a number with 3 decimals"));
         }
     }
 
