@@ -26,6 +26,8 @@ public class CurrentRobotState {
     private final WsuPose pose;
     /** Wheel positions count as the original simulator's counter did (the backend's {@code wsu.positionUnits}). */
     private final boolean legacyPositions;
+    /** Speeds are as fast as the original simulator drew them (the backend's {@code wsu.speedUnits}). */
+    private final boolean legacySpeeds;
     /** The speeds last accepted, WSU units. */
     private int leftSpeed;
     private int rightSpeed;
@@ -40,13 +42,15 @@ public class CurrentRobotState {
         this.port = port;
         this.pose = port == null ? null : new WsuPose(port);
         this.legacyPositions = port != null && WsuUnits.legacyPositions(port.option(WsuUnits.POSITION_UNITS));
+        this.legacySpeeds = port != null && WsuUnits.legacySpeeds(port.option(WsuUnits.SPEED_UNITS));
     }
 
     /**
      * Set both wheel speeds. A speed outside −9..9 is ignored, and that wheel keeps its speed (the
      * original's rule); when both are outside, nothing is sent.
      *
-     * @param left left wheel, −9..9 WSU units (one Khepera speed unit, ≈ 8 mm/s, each); positive drives forward
+     * @param left left wheel, −9..9 WSU units (one Khepera speed unit, ≈ 8 mm/s, each, or ≈ 30 mm/s with the
+     *     backend's {@code wsu.speedUnits=legacy}); positive drives forward
      * @param right right wheel, −9..9 WSU units
      */
     public void setMotorSpeeds(int left, int right) {
@@ -70,7 +74,7 @@ public class CurrentRobotState {
         // The robot is told outside the lock: in the simulator the call may give the turn to the
         // controller's other threads, which must not find the lock taken.
         if (port != null) {
-            port.setSpeeds(WsuUnits.toKheperaSpeed(l), WsuUnits.toKheperaSpeed(r));
+            port.setSpeeds(WsuUnits.toKheperaSpeed(l, legacySpeeds), WsuUnits.toKheperaSpeed(r, legacySpeeds));
         }
     }
 

@@ -24,6 +24,11 @@ public record RobotSettings(int maxSpeed, boolean gripper, boolean parkGripperOn
      */
     public static final String WSU_POSITION_UNITS_PROPERTY = "kheperasim." + WSU_POSITION_UNITS;
 
+    /** The WSU API's speed unit ({@code khepera} or {@code legacy}), as the simulator's setting of the same name. */
+    public static final String WSU_SPEED_UNITS = "wsu.speedUnits";
+    /** The system property that sets {@value #WSU_SPEED_UNITS} for a run. */
+    public static final String WSU_SPEED_UNITS_PROPERTY = "kheperasim." + WSU_SPEED_UNITS;
+
     /** The default speed clamp: 20 units ≈ 16 cm/s, well below the robot's 127. */
     public static final int DEFAULT_MAX_SPEED = 20;
 
@@ -40,13 +45,19 @@ public record RobotSettings(int maxSpeed, boolean gripper, boolean parkGripperOn
     }
 
     /**
-     * @return clamp 20, no gripper; {@value #WSU_POSITION_UNITS} from the system property
-     *     {@value #WSU_POSITION_UNITS_PROPERTY} when it is set
+     * @return clamp 20, no gripper; {@value #WSU_POSITION_UNITS} and {@value #WSU_SPEED_UNITS} from the
+     *     system properties {@value #WSU_POSITION_UNITS_PROPERTY} and {@value #WSU_SPEED_UNITS_PROPERTY}
+     *     when they are set
      */
     public static RobotSettings defaults() {
-        String units = System.getProperty(WSU_POSITION_UNITS_PROPERTY);
-        return new RobotSettings(DEFAULT_MAX_SPEED, false, false, 180, 249, 1000,
-                units == null ? java.util.Map.of() : java.util.Map.of(WSU_POSITION_UNITS, units));
+        java.util.Map<String, String> options = new java.util.TreeMap<>();
+        for (String key : new String[] {WSU_POSITION_UNITS, WSU_SPEED_UNITS}) {
+            String value = System.getProperty("kheperasim." + key);
+            if (value != null) {
+                options.put(key, value);
+            }
+        }
+        return new RobotSettings(DEFAULT_MAX_SPEED, false, false, 180, 249, 1000, options);
     }
 
     /** @param units the clamp @return these settings with it */

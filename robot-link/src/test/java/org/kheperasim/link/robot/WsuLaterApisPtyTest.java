@@ -151,6 +151,19 @@ class WsuLaterApisPtyTest {
     }
 
     @Test
+    void legacySpeedsAreSentAsFastAsTheOriginalDrewThem() throws Exception {
+        Class<?> starter = compile("Starter", STARTER);
+        try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null)) {
+            RobotRun.Result r = run(fake, starter, RobotSettings.defaults().withMaxSpeed(40)
+                    .withOption("wsu.speedUnits", "legacy"));
+            assertEquals(RobotRun.End.FINISHED, r.end(), r.detail());
+            List<String> d = speeds(fake.robot());
+            assertEquals("D,19,19", d.get(1), "5 WSU units are 19 Khepera units (about 151 mm/s): " + d);
+            assertEquals("D,-19,19", d.get(2), d.toString());
+        }
+    }
+
+    @Test
     void theVisionTurretIsReadWithItsOwnCommands() throws Exception {
         Class<?> looker = compile("Looker", LOOKER);
         try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null)) {

@@ -82,6 +82,9 @@ public final class Settings {
         choice("wsu.positionUnits", "unit of a WSU controller's wheel positions: pulses (the Khepera's 0.08 mm encoder"
                 + " pulses, the default) or legacy (the original simulator's counts, 3 per degree of a turn on the spot)",
                 "pulses", "legacy");
+        choice("wsu.speedUnits", "unit of a WSU controller's wheel speeds: khepera (one Khepera speed unit, about 8 mm/s,"
+                + " the default) or legacy (as fast as the original simulator drew it, about 30 mm/s: 3.78 Khepera units)",
+                "khepera", "legacy");
     }
 
     private static void choice(String key, String meaning, String... values) {

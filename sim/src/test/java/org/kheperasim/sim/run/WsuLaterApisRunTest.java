@@ -142,6 +142,20 @@ class WsuLaterApisRunTest {
         assertEquals(5, at1s.speedRight(), "the right wheel kept simStart's 5 when doWork asked 70");
     }
 
+    @Test
+    void legacySpeedsDriveAsFastAsTheOriginalDrew() {
+        List<RobotView> seen = new CopyOnWriteArrayList<>();
+        run("Starter", 0.5, new ArrayList<>()).settings(Settings.defaults().with("wsu.speedUnits", "legacy"))
+                .listener(s -> seen.add(s.robots().get(0)), 10).run();
+        RobotView at20ms = seen.get(2);
+        assertEquals(19, at20ms.speedLeft(), "5 WSU units are 19 Khepera units (3.78 each): " + at20ms);
+        assertEquals(19, at20ms.speedRight());
+        RobotView at400ms = seen.get(40);
+        RobotView at200ms = seen.get(20);
+        double mmPerS = (at400ms.x() - at200ms.x()) / 0.2;
+        assertEquals(151, mmPerS, 8, "about 151 mm/s, the original's 980 counts a second at speed 5");
+    }
+
     private static double[] numbers(List<String> console, String head) {
         String line = console.stream().filter(l -> l.startsWith(head + " ")).findFirst().orElseThrow();
         String[] t = line.split(" ");
