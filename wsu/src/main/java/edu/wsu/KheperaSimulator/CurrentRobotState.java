@@ -228,14 +228,25 @@ public class CurrentRobotState {
         return out;
     }
 
-    /** @return the index of the turret's brightest pixel, 0..63 (the turret's {@code T,2,O}) */
+    /**
+     * @return the greatest grey level of a new image (KSuite 1.1.2's {@code getPixelMaxIntensity()}, as
+     *     the original returned it: 255.0 with a lamp in view); one image read ({@code T,2,N} on the robot)
+     */
     float pixelMaxIntensity() {
-        return connected().visionBrightest();
+        int max = 0;
+        for (int v : connected().visionImage()) {
+            max = Math.max(max, v);
+        }
+        return max;
     }
 
-    /** @return the index of the turret's darkest pixel, 0..63 (the turret's {@code T,2,P}) */
+    /** @return the least grey level of a new image (KSuite 1.1.2's {@code getPixelMinIntensity()}) */
     float pixelMinIntensity() {
-        return connected().visionDarkest();
+        int min = 255;
+        for (int v : connected().visionImage()) {
+            min = Math.min(min, v);
+        }
+        return min;
     }
 
     /** @return the heading, radians in [0, 2π), growing clockwise on the screen, 0 facing east */

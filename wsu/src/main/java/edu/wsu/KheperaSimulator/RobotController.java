@@ -302,21 +302,23 @@ public abstract class RobotController implements Controller {
     }
 
     /**
-     * The turret's brightest point (KSuite 1.1.2's API; the turret's own {@code T,2,O} command): the
-     * index of its brightest pixel, 0 (left) .. 63 (right), the leftmost of equals. Steer towards it
-     * to face a lamp: pixel 31.5 is straight ahead.
+     * The brightest grey level the turret sees (KSuite 1.1.2's API): the greatest of the 64 pixels of
+     * an image, as the original returned it (run, it gave 255.0 with a lamp in view, 230.0 with its
+     * border brightest, 10.0 facing a wall); 0.0..255.0. It reads an image (about 60 ms at 38400 baud).
+     * The index of the brightest pixel, which the turret itself can give ({@code T,2,O}), is the
+     * student API's {@code vision().getBrightestPixel()}.
      *
-     * @return a pixel's index, 0.0..63.0
+     * @return a grey level, 0.0..255.0
      */
     public float getPixelMaxIntensity() {
         return robot().pixelMaxIntensity();
     }
 
     /**
-     * The turret's darkest point (KSuite 1.1.2's API; the turret's own {@code T,2,P} command): the
-     * index of its darkest pixel, 0 (left) .. 63 (right), the leftmost of equals.
+     * The darkest grey level the turret sees (KSuite 1.1.2's API): the least of the 64 pixels of an
+     * image, as the original returned it (10.0 with a wall in view); 0.0..255.0.
      *
-     * @return a pixel's index, 0.0..63.0
+     * @return a grey level, 0.0..255.0
      */
     public float getPixelMinIntensity() {
         return robot().pixelMinIntensity();

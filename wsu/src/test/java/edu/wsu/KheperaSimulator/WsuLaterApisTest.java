@@ -125,7 +125,7 @@ class WsuLaterApisTest {
     }
 
     @Test
-    void theVisionTurretGivesFloatsOfGreyLevelsAndTheBrightestAndDarkestPixelsIndex() throws Exception {
+    void theVisionTurretGivesFloatsOfGreyLevelsAndTheBrightestAndDarkestLevels() throws Exception {
         int[] img = new int[64];
         java.util.Arrays.fill(img, 10);
         img[40] = 255;
@@ -138,8 +138,8 @@ class WsuLaterApisTest {
             expected[i] = img[i];
         }
         assertArrayEquals(expected, Looker.image);
-        assertEquals(40f, Looker.max, "the leftmost of the brightest pixels");
-        assertEquals(12f, Looker.min);
+        assertEquals(255f, Looker.max, "the brightest grey level, as the original returned it (not the pixel's index)");
+        assertEquals(0f, Looker.min, "the darkest grey level");
     }
 
     /** Reports the fork's pose, and the wheel positions. */

@@ -4,11 +4,11 @@ package org.kheperasim.sim.engine;
  * The K213 linear vision turret's numbers: what its manual fixes (pixels, grey levels, field of
  * view) as constants, the rest read once from {@link Settings} ({@code vision.*}).
  *
- * <p>From the K213 Vision Turret User Manual (K-Team, version 1.2, 1999): the image sensor is "an
- * array of 64x1 cells giving a linear image of 64 pixels with 256 grey levels each", numbered 0 to
- * 63 "starting from the left of the field of view"; "the view angle is of about 36 degrees"; the
- * optics focus "from 5 to 50 cm in front of the robot"; and a second sensor, a light intensity
- * detector, "automatically adapts the basic scanning speed" (an iris).
+ * <p>From the K213 Vision Turret User Manual (K-Team, version 1.2, 1999): the image sensor is a
+ * 64 × 1 cell array giving one linear image of 64 pixels of 256 grey levels, numbered 0 to 63 from
+ * the left of the field of view; the view angle is about 36°; the optics focus from 5 to 50 cm
+ * ahead; and a second sensor, a light intensity detector, adapts the scanning speed to the light
+ * (an iris).
  *
  * @param refreshNanos time between two images, ns ({@code vision.refreshMs})
  * @param noise per-pixel noise σ, grey levels, already scaled by {@code noise.reading}
