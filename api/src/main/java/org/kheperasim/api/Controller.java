@@ -131,6 +131,11 @@ public abstract class Controller extends Thread {
         return robot.getGripper();
     }
 
+    /** @return the K213 linear vision turret: 64 grey pixels across 36° ahead, pixel 0 on the left */
+    protected final VisionTurret vision() {
+        return robot.getVisionTurret();
+    }
+
     /**
      * Lower the gripper arm to the floor and wait until it is there (about a second). Returns
      * early if the controller is asked to stop.

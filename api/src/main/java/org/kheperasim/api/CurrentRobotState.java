@@ -17,6 +17,7 @@ public final class CurrentRobotState {
     private final Sensor[] sensors;
     private final Motor motor;
     private final Gripper gripper;
+    private final VisionTurret vision;
     private final RobotPort port;
 
     /** @param port the backend behind the view (backends construct this, students do not) */
@@ -28,6 +29,7 @@ public final class CurrentRobotState {
         }
         motor = new Motor(port);
         gripper = new Gripper(port);
+        vision = new VisionTurret(port);
     }
 
     /**
@@ -54,6 +56,11 @@ public final class CurrentRobotState {
     /** @return the gripper turret */
     public Gripper getGripper() {
         return gripper;
+    }
+
+    /** @return the K213 linear vision turret (a one-dimensional camera looking ahead) */
+    public VisionTurret getVisionTurret() {
+        return vision;
     }
 
     /** The backend behind this view, for {@link Controller}'s helpers. */

@@ -12,7 +12,8 @@ import org.kheperasim.api.spi.RobotPort;
  *
  * <p>Speeds are WSU units, −9..9, one Khepera speed unit (about 8 mm/s) each; a value outside
  * −9..9 is ignored and that wheel keeps its speed. Wheel positions are encoder pulses (about
- * 0.08 mm each), 0 at the start of the run.
+ * 0.08 mm each), 0 at the start of the run; with the backend's option {@code wsu.positionUnits=legacy}
+ * they count as the original simulator's counter did (3 counts per degree of a turn on the spot).
  *
  * <p>A state made with the public constructor is not connected to a robot: it remembers the speeds
  * it is given and reports wheel positions of 0.
@@ -22,6 +23,11 @@ public class CurrentRobotState {
     private final RobotPort port;
     private final Odometer left = new Odometer();
     private final Odometer right = new Odometer();
+    private final WsuPose pose;
+    /** Wheel positions count as the original simulator's counter did (the backend's {@code wsu.positionUnits}). */
+    private final boolean legacyPositions;
+    /** Speeds are as fast as the original simulator drew them (the backend's {@code wsu.speedUnits}). */
+    private final boolean legacySpeeds;
     /** The speeds last accepted, WSU units. */
     private int leftSpeed;
     private int rightSpeed;
@@ -34,13 +40,17 @@ public class CurrentRobotState {
     /** @param port the backend, or null for a state connected to no robot */
     CurrentRobotState(RobotPort port) {
         this.port = port;
+        this.pose = port == null ? null : new WsuPose(port);
+        this.legacyPositions = port != null && WsuUnits.legacyPositions(port.option(WsuUnits.POSITION_UNITS));
+        this.legacySpeeds = port != null && WsuUnits.legacySpeeds(port.option(WsuUnits.SPEED_UNITS));
     }
 
     /**
      * Set both wheel speeds. A speed outside −9..9 is ignored, and that wheel keeps its speed (the
      * original's rule); when both are outside, nothing is sent.
      *
-     * @param left left wheel, −9..9 WSU units (one Khepera speed unit, ≈ 8 mm/s, each); positive drives forward
+     * @param left left wheel, −9..9 WSU units (one Khepera speed unit, ≈ 8 mm/s, each, or ≈ 30 mm/s with the
+     *     backend's {@code wsu.speedUnits=legacy}); positive drives forward
      * @param right right wheel, −9..9 WSU units
      */
     public void setMotorSpeeds(int left, int right) {
@@ -64,7 +74,7 @@ public class CurrentRobotState {
         // The robot is told outside the lock: in the simulator the call may give the turn to the
         // controller's other threads, which must not find the lock taken.
         if (port != null) {
-            port.setSpeeds(WsuUnits.toKheperaSpeed(l), WsuUnits.toKheperaSpeed(r));
+            port.setSpeeds(WsuUnits.toKheperaSpeed(l, legacySpeeds), WsuUnits.toKheperaSpeed(r, legacySpeeds));
         }
     }
 
@@ -91,16 +101,22 @@ public class CurrentRobotState {
     }
 
     /**
-     * @return the left wheel's position counter, encoder pulses (≈ 0.08 mm each) since the run
-     *     started; it grows driving forward and stands still while the robot is blocked
+     * @return the left wheel's position counter since the run started: encoder pulses (≈ 0.08 mm
+     *     each), or with the backend's {@code wsu.positionUnits=legacy} the original simulator's counts
+     *     (3 per degree of a turn on the spot); it grows driving forward and stands still while the
+     *     robot is blocked
      */
     public long getLeftPosition() {
-        return port == null ? 0 : left.read(port.leftPosition());
+        return port == null ? 0 : inUnits(left.read(port.leftPosition()));
     }
 
-    /** @return the right wheel's position counter, encoder pulses (≈ 0.08 mm each) since the run started */
+    /** @return the right wheel's position counter since the run started, in the units of {@link #getLeftPosition()} */
     public long getRightPosition() {
-        return port == null ? 0 : right.read(port.rightPosition());
+        return port == null ? 0 : inUnits(right.read(port.rightPosition()));
+    }
+
+    private long inUnits(long pulses) {
+        return legacyPositions ? StrictMath.round(pulses * WsuUnits.LEGACY_COUNTS_PER_PULSE) : pulses;
     }
 
     // ------------------------------------------------------------------ for RobotController
@@ -108,8 +124,11 @@ public class CurrentRobotState {
     /** The run starts now: wheel positions count from here, and the wheels stand still. */
     void startRun() {
         RobotPort p = connected();
-        left.zero(p.leftPosition());
-        right.zero(p.rightPosition());
+        int l = p.leftPosition();
+        int r = p.rightPosition();
+        left.zero(l);
+        right.zero(r);
+        pose.start(l, r);
         synchronized (this) {
             leftSpeed = 0;
             rightSpeed = 0;
@@ -194,6 +213,58 @@ public class CurrentRobotState {
     /** @return resistivity of what the fingers hold, 0..255 */
     int resistivity() {
         return connected().resistivity();
+    }
+
+    /**
+     * @return a new image of the K213 vision turret as KSuite 1.1.2 returned it: 64 floats, the grey
+     *     levels 0..255 (higher = brighter), index 0 the leftmost pixel
+     */
+    float[] lvtImage() {
+        int[] grey = connected().visionImage();
+        float[] out = new float[grey.length];
+        for (int i = 0; i < grey.length; i++) {
+            out[i] = grey[i];
+        }
+        return out;
+    }
+
+    /**
+     * @return the greatest grey level of a new image (KSuite 1.1.2's {@code getPixelMaxIntensity()}, as
+     *     the original returned it: 255.0 with a lamp in view); one image read ({@code T,2,N} on the robot)
+     */
+    float pixelMaxIntensity() {
+        int max = 0;
+        for (int v : connected().visionImage()) {
+            max = Math.max(max, v);
+        }
+        return max;
+    }
+
+    /** @return the least grey level of a new image (KSuite 1.1.2's {@code getPixelMinIntensity()}) */
+    float pixelMinIntensity() {
+        int min = 255;
+        for (int v : connected().visionImage()) {
+            min = Math.min(min, v);
+        }
+        return min;
+    }
+
+    /** @return the heading, radians in [0, 2π), growing clockwise on the screen, 0 facing east */
+    float robotAngle() {
+        connected();
+        return pose.angle();
+    }
+
+    /** @return the centre's x, the original's panel pixels from the left */
+    int robotX() {
+        connected();
+        return pose.x();
+    }
+
+    /** @return the centre's y, the original's panel pixels down from the top */
+    int robotY() {
+        connected();
+        return pose.y();
     }
 
     /**

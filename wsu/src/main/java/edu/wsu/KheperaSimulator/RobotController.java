@@ -16,14 +16,16 @@ package edu.wsu.KheperaSimulator;
  * }
  * }</pre>
  * The simulator (or robot-link) constructs it, calls {@link #initialize} with a pause of 20 ms,
- * and runs {@link #run()} on the controller's own thread: {@code doWork()}, pause, {@code doWork()},
- * … until {@link #setFinished setFinished(true)} (the user's Stop does the same), then
- * {@code close()} once.
+ * then, on the controller's own thread, {@link #simStart()} (an override that sets speeds acts at
+ * time 0) and {@link #run()}: {@code doWork()}, pause, {@code doWork()}, … until
+ * {@link #setFinished setFinished(true)} (the user's Stop does the same), then {@code close()} once.
  *
  * <p>Units: speeds −9..9 per wheel, one Khepera speed unit (≈ 8 mm/s) each, a value outside
  * ignored; proximity 0..1023, higher = nearer; ambient light 0..1023, lower = brighter; wheel
- * positions in encoder pulses (≈ 0.08 mm), from 0 at the start of the run; times in milliseconds of
- * robot time (simulated time in the simulator).
+ * positions in encoder pulses (≈ 0.08 mm), from 0 at the start of the run (or the original
+ * simulator's counts, with the setting {@code wsu.positionUnits=legacy}); times in milliseconds of
+ * robot time (simulated time in the simulator). The K213 vision turret of KSuite 1.1.2
+ * ({@link #readLvtImage()}) and the later fork's pose ({@link #getRobotAngle()}) are here too.
  *
  * <p>An exception from {@code doWork()} ends the loop; {@code close()} still runs, the wheels are
  * stopped, and the exception leaves {@code run()} unchanged for the simulator to report. The
@@ -60,8 +62,12 @@ public abstract class RobotController implements Controller {
     }
 
     /**
-     * Start the controller's thread, when it has not started yet. The simulator and robot-link start
-     * it themselves; a controller never needs to call this.
+     * Start the controller's loop. The simulator and robot-link call this once, after
+     * {@link #initialize} and before the first {@code doWork()}, on the controller's own thread, as
+     * the original's loader did: an override that sets speeds ({@code super.simStart();
+     * setMotorSpeeds(5, 5);}) takes effect at time 0. Calling {@code super.simStart()} from an
+     * override, or {@code simStart()} again, starts no second loop. (The loop runs even if an
+     * override leaves out {@code super.simStart()}; in the original it then never started.)
      */
     protected void simStart() {
         if (Boolean.TRUE.equals(BACKEND_CREATING.get())) {
@@ -98,6 +104,21 @@ public abstract class RobotController implements Controller {
     /** @return true while the {@code doWork()} loop runs */
     protected boolean isRunning() {
         return running;
+    }
+
+    /**
+     * What the backend's thread runs: {@link #simStart()}, then the loop. An exception from
+     * {@code simStart()} ends the controller as one from {@code doWork()} would: {@code close()} runs
+     * and the exception leaves unchanged.
+     */
+    void runFromBackend() {
+        try {
+            simStart();
+        } catch (RuntimeException e) {
+            closeAndRethrow(e);
+            return;
+        }
+        run();
     }
 
     /**
@@ -252,14 +273,85 @@ public abstract class RobotController implements Controller {
         return robot().resistivity();
     }
 
-    /** @return the left wheel's position counter, encoder pulses (≈ 0.08 mm) since the run started */
+    /**
+     * @return the left wheel's position counter since the run started: encoder pulses (≈ 0.08 mm), or
+     *     with the setting {@code wsu.positionUnits=legacy} the original simulator's counts (3 per degree
+     *     of a turn on the spot)
+     */
     public long getLeftWheelPosition() {
         return robot().getLeftPosition();
     }
 
-    /** @return the right wheel's position counter, encoder pulses (≈ 0.08 mm) since the run started */
+    /** @return the right wheel's position counter since the run started, in the units of {@link #getLeftWheelPosition()} */
     public long getRightWheelPosition() {
         return robot().getRightPosition();
+    }
+
+    // ------------------------------------------------------------------ KSuite 1.1.2: the K213 vision turret
+
+    /**
+     * Read the K213 linear vision turret (KSuite 1.1.2's API): one image of 64 pixels across the
+     * turret's 36° field of view, index 0 the leftmost, each a grey level 0..255, higher = brighter (a
+     * lamp 255, a ball bright, a wall dark). Reading takes the turret's reply over the serial link
+     * (about 60 ms at 38400 baud), in the simulator and on the robot.
+     *
+     * @return a new array of 64 grey levels, 0.0..255.0
+     */
+    public float[] readLvtImage() {
+        return robot().lvtImage();
+    }
+
+    /**
+     * The brightest grey level the turret sees (KSuite 1.1.2's API): the greatest of the 64 pixels of
+     * an image, as the original returned it (run, it gave 255.0 with a lamp in view, 230.0 with its
+     * border brightest, 10.0 facing a wall); 0.0..255.0. It reads an image (about 60 ms at 38400 baud).
+     * The index of the brightest pixel, which the turret itself can give ({@code T,2,O}), is the
+     * student API's {@code vision().getBrightestPixel()}.
+     *
+     * @return a grey level, 0.0..255.0
+     */
+    public float getPixelMaxIntensity() {
+        return robot().pixelMaxIntensity();
+    }
+
+    /**
+     * The darkest grey level the turret sees (KSuite 1.1.2's API): the least of the 64 pixels of an
+     * image, as the original returned it (10.0 with a wall in view); 0.0..255.0.
+     *
+     * @return a grey level, 0.0..255.0
+     */
+    public float getPixelMinIntensity() {
+        return robot().pixelMinIntensity();
+    }
+
+    // ------------------------------------------------------------------ the later fork: the robot's pose
+
+    /**
+     * The robot's heading, as a later WSU fork's API gives it: radians in [0, 2π), growing clockwise on
+     * the screen (y down), 0 facing east (+x). In the simulator the true heading; on a real robot its
+     * odometry since the start (the console says so once).
+     *
+     * @return the heading, radians
+     */
+    public float getRobotAngle() {
+        return robot().robotAngle();
+    }
+
+    /**
+     * @return the robot centre's x in the original's 500 × 500 px panel (1 px = 2.4384 mm), from the
+     *     left edge; in the simulator the true position, on a real robot its odometry since the start
+     *     (from the original's start spot, 263 px)
+     */
+    public int getRobotXPosition() {
+        return robot().robotX();
+    }
+
+    /**
+     * @return the robot centre's y in the original's panel pixels, down from the top edge; in the
+     *     simulator the true position, on a real robot its odometry since the start
+     */
+    public int getRobotYPosition() {
+        return robot().robotY();
     }
 
     // ------------------------------------------------------------------ for the runner

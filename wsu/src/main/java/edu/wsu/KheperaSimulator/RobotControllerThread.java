@@ -1,8 +1,9 @@
 package edu.wsu.KheperaSimulator;
 
 /**
- * The thread a backend starts for a {@link RobotController}: it zeroes the wheel positions, runs
- * the controller's loop, and stops the wheels on the way out, however the loop ends. An exception
+ * The thread a backend starts for a {@link RobotController}: it zeroes the wheel positions, calls
+ * the controller's {@code simStart()} and runs its loop, and stops the wheels on the way out,
+ * however the loop ends. An exception
  * from the controller leaves {@link #run()} unchanged, for the backend to report.
  */
 final class RobotControllerThread extends Thread {
@@ -33,7 +34,7 @@ final class RobotControllerThread extends Thread {
     public void run() {
         try {
             state.startRun();
-            controller.run();
+            controller.runFromBackend();
         } finally {
             state.stopQuietly();
         }

@@ -15,8 +15,8 @@ import org.kheperasim.api.spi.RobotPort;
  * {@code org.kheperasim.api.spi.Controllers} finds it; nothing else calls it.
  *
  * <p>Creating a controller does what the original did: construct it, then
- * {@code initialize(simpleName, state, 20)}. The thread returned runs its loop over the backend's
- * {@link RobotPort}.
+ * {@code initialize(simpleName, state, 20)}. The thread returned calls its {@code simStart()} and runs
+ * its loop over the backend's {@link RobotPort}.
  */
 public final class WsuControllerStyle implements ControllerStyle {
     private static final String BASE = RobotController.class.getName();

@@ -24,6 +24,12 @@ class FakePort implements RobotPort {
     volatile int resistivity;
     /** When set, each sleep also parks the thread 1 ms of real time (for loops the test stops). */
     volatile boolean sleepsTakeRealTime;
+    /** What the vision turret sees: 64 grey levels. */
+    volatile int[] image = new int[64];
+    /** Where the simulator has the robot, or null for a real robot (odometry). */
+    volatile org.kheperasim.api.spi.TruePose truth;
+    /** The backend's options (wsu.positionUnits). */
+    final java.util.Map<String, String> options = new java.util.concurrent.ConcurrentHashMap<>();
 
     @Override
     public int proximity(int index) {
@@ -114,6 +120,41 @@ class FakePort implements RobotPort {
     @Override
     public void message(String text) {
         messages.add(text);
+    }
+
+    @Override
+    public int[] visionImage() {
+        return image.clone();
+    }
+
+    @Override
+    public int visionBrightest() {
+        int[] img = image;
+        int best = 0;
+        for (int i = 1; i < img.length; i++) {
+            best = img[i] > img[best] ? i : best;
+        }
+        return best;
+    }
+
+    @Override
+    public int visionDarkest() {
+        int[] img = image;
+        int best = 0;
+        for (int i = 1; i < img.length; i++) {
+            best = img[i] < img[best] ? i : best;
+        }
+        return best;
+    }
+
+    @Override
+    public java.util.Optional<org.kheperasim.api.spi.TruePose> truePose() {
+        return java.util.Optional.ofNullable(truth);
+    }
+
+    @Override
+    public String option(String key) {
+        return options.get(key);
     }
 
     /** @return the last speed command, "left,right", or "" */

@@ -51,6 +51,13 @@ class WsuSignatureTest {
         has(rc, pub, int.class, "getResistivity");
         has(rc, pub, long.class, "getLeftWheelPosition");
         has(rc, pub, long.class, "getRightWheelPosition");
+        // KSuite 1.1.2's K213 vision turret, and a later fork's pose (descriptors as course classes call them).
+        has(rc, pub, float[].class, "readLvtImage");
+        has(rc, pub, float.class, "getPixelMaxIntensity");
+        has(rc, pub, float.class, "getPixelMinIntensity");
+        has(rc, pub, float.class, "getRobotAngle");
+        has(rc, pub, int.class, "getRobotXPosition");
+        has(rc, pub, int.class, "getRobotYPosition");
     }
 
     @Test
@@ -96,7 +103,9 @@ class WsuSignatureTest {
         java.util.Set<String> original = java.util.Set.of("initialize", "simStart", "setWaitTime", "setFinished",
                 "isRunning", "run", "sleep", "setMotorSpeeds", "setLeftMotorSpeed", "setRightMotorSpeed", "setArmState",
                 "setGripperState", "getArmState", "getGripperState", "isObjectPresent", "isObjectHeld", "getLightValue",
-                "getDistanceValue", "getResistivity", "getLeftWheelPosition", "getRightWheelPosition");
+                "getDistanceValue", "getResistivity", "getLeftWheelPosition", "getRightWheelPosition",
+                "readLvtImage", "getPixelMaxIntensity", "getPixelMinIntensity", "getRobotAngle", "getRobotXPosition",
+                "getRobotYPosition");
         for (Method m : RobotController.class.getDeclaredMethods()) {
             int mod = m.getModifiers();
             if ((Modifier.isPublic(mod) || Modifier.isProtected(mod)) && !m.isSynthetic()) {

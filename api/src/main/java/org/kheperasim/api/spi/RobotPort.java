@@ -1,5 +1,6 @@
 package org.kheperasim.api.spi;
 
+import java.util.Optional;
 import org.kheperasim.api.ArmPosition;
 import org.kheperasim.api.GripperState;
 
@@ -101,4 +102,53 @@ public interface RobotPort {
      * @param text the line, without a line end
      */
     void message(String text);
+
+    /**
+     * Take an image with the K213 linear vision turret (its {@code T,2,N} command): 64 pixels, 0 the
+     * leftmost of its 36° field of view, each a grey level 0..255 (higher = brighter). On the robot
+     * and in a tethered simulation the call waits for the turret's reply on the serial line.
+     *
+     * @return a new array of {@link org.kheperasim.api.VisionTurret#PIXELS} grey levels, 0..255
+     * @throws UnsupportedOperationException when this backend has no vision turret
+     */
+    default int[] visionImage() {
+        throw new UnsupportedOperationException("this robot has no K213 vision turret");
+    }
+
+    /**
+     * @return the index, 0..63, of the turret's brightest pixel (its {@code T,2,O} command; the
+     *     leftmost of equals)
+     * @throws UnsupportedOperationException when this backend has no vision turret
+     */
+    default int visionBrightest() {
+        throw new UnsupportedOperationException("this robot has no K213 vision turret");
+    }
+
+    /**
+     * @return the index, 0..63, of the turret's darkest pixel (its {@code T,2,P} command; the
+     *     leftmost of equals)
+     * @throws UnsupportedOperationException when this backend has no vision turret
+     */
+    default int visionDarkest() {
+        throw new UnsupportedOperationException("this robot has no K213 vision turret");
+    }
+
+    /**
+     * @return where the robot truly is, when the backend knows (the simulator); empty on a real
+     *     robot, whose pose only its odometry can estimate
+     */
+    default Optional<TruePose> truePose() {
+        return Optional.empty();
+    }
+
+    /**
+     * A backend's setting that a controller style may consult (the WSU API's {@code wsu.positionUnits},
+     * say): the simulator's settings, robot-link's options.
+     *
+     * @param key the setting's name
+     * @return its value, or null when the backend does not know it
+     */
+    default String option(String key) {
+        return null;
+    }
 }

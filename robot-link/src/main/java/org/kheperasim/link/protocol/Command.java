@@ -225,12 +225,14 @@ public sealed interface Command {
     }
 
     /**
-     * {@code T,id,<cmd>}: pass a command to turret {@code id} (1 = the gripper); the reply is
+     * {@code T,id,<cmd>}: pass a command to turret {@code id} (1 = the gripper, 2 = the K213 vision turret); the reply is
      * {@code t,id,<reply>}.
      */
     record Turret(int id, TurretCommand body) implements Command {
         /** The gripper turret's id. */
         public static final int GRIPPER = 1;
+        /** The K213 linear vision turret's id. */
+        public static final int VISION = 2;
 
         /** @param id turret id, 0..255 @param body the turret's own command */
         public Turret {
@@ -243,6 +245,11 @@ public sealed interface Command {
         /** @param body a gripper command @return it, addressed to the gripper turret */
         public static Turret gripper(TurretCommand body) {
             return new Turret(GRIPPER, body);
+        }
+
+        /** @param body a K213 command @return it, addressed to the vision turret */
+        public static Turret vision(TurretCommand body) {
+            return new Turret(VISION, body);
         }
 
         public char letter() { return 'T'; }

@@ -99,6 +99,18 @@ public final class KheperaProtocol {
                 return new Command.Turret(id, typed);
             }
         }
+        if (id == Command.Turret.VISION && inner[0].length() == 1) {
+            TurretCommand typed = switch (inner[0].charAt(0)) {
+                case 'N' -> { ints(text, inner, 0); yield new TurretCommand.Image(); }
+                case 'O' -> { ints(text, inner, 0); yield new TurretCommand.BrightestPixel(); }
+                case 'P' -> { ints(text, inner, 0); yield new TurretCommand.DarkestPixel(); }
+                case 'B' -> { ints(text, inner, 0); yield new TurretCommand.Version(); }
+                default -> null;
+            };
+            if (typed != null) {
+                return new Command.Turret(id, typed);
+            }
+        }
         return new Command.Turret(id, new TurretCommand.Raw(body));
     }
 

@@ -1,8 +1,13 @@
 package org.kheperasim.link.protocol;
 
 /**
- * A command for a turret, sent inside {@code T,id,<cmd>}. The gripper turret's commands are
- * typed; any other text is carried as {@link Raw}.
+ * A command for a turret, sent inside {@code T,id,<cmd>}. The gripper turret's (id 1) and the K213
+ * vision turret's (id 2) commands are typed; any other text is carried as {@link Raw}.
+ *
+ * <p>The K213's commands are those of Appendix A of its manual (K213 Vision Turret User Manual,
+ * K-Team, version 1.2, 1999, "Communication protocol to control the K213 vision turret"), as two
+ * independent clients of the real turret use them: {@code N} reads the image, {@code O} and
+ * {@code P} the brightest and darkest pixel's position, {@code B} the version.
  */
 public sealed interface TurretCommand {
 
@@ -70,7 +75,34 @@ public sealed interface TurretCommand {
         public int replyValueCount() { return 1; }
     }
 
-    /** {@code B}: the turret's version; reply {@code t,1,b,v,r}. */
+    /**
+     * K213 {@code N}: the image, 64 grey levels 0..255, pixel 0 the leftmost of the 36° field of
+     * view; reply {@code t,2,n,v0,...,v63}.
+     */
+    record Image() implements TurretCommand {
+        /** Pixels in a K213 image. */
+        public static final int PIXELS = 64;
+
+        public char letter() { return 'N'; }
+        public String encode() { return "N"; }
+        public int replyValueCount() { return PIXELS; }
+    }
+
+    /** K213 {@code O}: the index, 0..63, of the brightest pixel; reply {@code t,2,o,k}. */
+    record BrightestPixel() implements TurretCommand {
+        public char letter() { return 'O'; }
+        public String encode() { return "O"; }
+        public int replyValueCount() { return 1; }
+    }
+
+    /** K213 {@code P}: the index, 0..63, of the darkest pixel; reply {@code t,2,p,k}. */
+    record DarkestPixel() implements TurretCommand {
+        public char letter() { return 'P'; }
+        public String encode() { return "P"; }
+        public int replyValueCount() { return 1; }
+    }
+
+    /** {@code B}: the turret's version; reply {@code t,id,b,v,r}. */
     record Version() implements TurretCommand {
         public char letter() { return 'B'; }
         public String encode() { return "B"; }

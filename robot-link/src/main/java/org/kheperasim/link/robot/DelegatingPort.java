@@ -29,4 +29,9 @@ class DelegatingPort implements RobotPort {
     @Override public int resistivity() { return target.resistivity(); }
     @Override public void sleep(long millis) throws InterruptedException { target.sleep(millis); }
     @Override public void message(String text) { target.message(text); }
+    @Override public int[] visionImage() { return target.visionImage(); }
+    @Override public int visionBrightest() { return target.visionBrightest(); }
+    @Override public int visionDarkest() { return target.visionDarkest(); }
+    @Override public java.util.Optional<org.kheperasim.api.spi.TruePose> truePose() { return target.truePose(); }
+    @Override public String option(String key) { return target.option(key); }
 }

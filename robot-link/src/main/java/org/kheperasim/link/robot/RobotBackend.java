@@ -1,9 +1,12 @@
 package org.kheperasim.link.robot;
 
 import java.util.Queue;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 import org.kheperasim.api.ArmPosition;
 import org.kheperasim.api.GripperState;
@@ -23,6 +26,11 @@ import org.kheperasim.link.timing.PollStep;
  * sends what the controller changed: a {@code D} when the asked speeds differ from those last sent,
  * and queued position-counter and gripper commands. So a motor command waits at most one exchange.
  *
+ * <p>The K213 vision turret is not polled (its image is a long reply: about 60 ms at 38400 baud): a
+ * controller's read goes onto the line between two exchanges of the cycle, and the controller waits
+ * for the reply. A robot that refuses the turret's commands has none: a warning, once, and images
+ * of zeros from then on.
+ *
  * <p>{@link #stop()} ends polling and sends {@code D,0,0} (and parks the gripper if asked); after it,
  * nothing more is sent, so {@code D,0,0} is the last thing the robot hears.
  */
@@ -33,6 +41,9 @@ public final class RobotBackend implements RobotPort {
     private final RobotSettings settings;
     private final Consumer<String> console;
     private final Queue<Command> queued = new ConcurrentLinkedQueue<>();
+    /** Reads of the vision turret a controller waits for, served by the poll thread in order. */
+    private final Queue<VisionRead> visionReads = new ConcurrentLinkedQueue<>();
+    private volatile boolean visionRefused;
     private final CountDownLatch firstCycle = new CountDownLatch(1);
     private final Thread poller;
 
@@ -199,6 +210,38 @@ public final class RobotBackend implements RobotPort {
         while ((c = queued.poll()) != null) {
             session.exchange(c);
         }
+        VisionRead v;
+        while ((v = visionReads.poll()) != null) {
+            serveVision(v);
+        }
+    }
+
+    /** A controller's read of the vision turret, waiting for its reply. */
+    private record VisionRead(TurretCommand body, CompletableFuture<int[]> reply) {
+    }
+
+    private void serveVision(VisionRead v) throws SessionException {
+        if (visionRefused) {
+            v.reply().complete(blank(v.body()));
+            return;
+        }
+        try {
+            v.reply().complete(session.exchange(Command.Turret.vision(v.body())).ints());
+        } catch (SessionException e) {
+            if (e.kind() != SessionException.Kind.REFUSED) {
+                v.reply().completeExceptionally(e);
+                throw e;
+            }
+            visionRefused = true;
+            console.accept("warning: the robot refused a vision turret command (" + e.getMessage()
+                    + "); is the K213 vision turret fitted? The controller's images are all 0 from now on");
+            v.reply().complete(blank(v.body()));
+        }
+    }
+
+    /** What a read of a turret that is not there gives: an image of zeros, or pixel 0. */
+    private static int[] blank(TurretCommand body) {
+        return new int[body.replyValueCount()];
     }
 
     /**
@@ -223,6 +266,10 @@ public final class RobotBackend implements RobotPort {
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
                 }
+            }
+            VisionRead v;
+            while ((v = visionReads.poll()) != null) {
+                v.reply().completeExceptionally(new ControllerStoppedError());
             }
             boolean ok = sendStop();
             if (settings.parkGripperOnStop() && settings.gripper() && !session.isLost()) {
@@ -428,6 +475,51 @@ public final class RobotBackend implements RobotPort {
     @Override
     public int resistivity() {
         return resistivity;
+    }
+
+    @Override
+    public int[] visionImage() {
+        return readVision(new TurretCommand.Image());
+    }
+
+    @Override
+    public int visionBrightest() {
+        return readVision(new TurretCommand.BrightestPixel())[0];
+    }
+
+    @Override
+    public int visionDarkest() {
+        return readVision(new TurretCommand.DarkestPixel())[0];
+    }
+
+    /** Hand a turret read to the poll thread and wait for its reply; unwound when the run stops. */
+    private int[] readVision(TurretCommand body) {
+        unwindIfStopped();
+        if (visionRefused) {
+            return blank(body);
+        }
+        VisionRead read = new VisionRead(body, new CompletableFuture<>());
+        visionReads.add(read);
+        while (true) {
+            try {
+                return read.reply().get(50, TimeUnit.MILLISECONDS);
+            } catch (TimeoutException e) {
+                if (stopped || !running) {
+                    // The poll thread has gone (a stop, a lost link): nobody will answer.
+                    throw new ControllerStoppedError();
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new ControllerStoppedError();
+            } catch (ExecutionException e) {
+                throw new ControllerStoppedError();
+            }
+        }
+    }
+
+    @Override
+    public String option(String key) {
+        return settings.options().get(key);
     }
 
     @Override

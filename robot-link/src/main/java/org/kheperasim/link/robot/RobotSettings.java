@@ -10,15 +10,31 @@ package org.kheperasim.link.robot;
  * @param armUp arm position sent for {@code UP}, 0..255 (larger = lower)
  * @param armDown arm position sent for {@code DOWN}
  * @param armTravelMillis how long the arm takes between up and down, ms (the robot does not say)
+ * @param options settings a controller style consults ({@code RobotPort.option}), e.g.
+ *     {@code wsu.positionUnits=legacy} for WSU controllers whose wheel positions count as in the original
  */
 public record RobotSettings(int maxSpeed, boolean gripper, boolean parkGripperOnStop, int armUp, int armDown,
-        long armTravelMillis) {
+        long armTravelMillis, java.util.Map<String, String> options) {
+
+    /** The WSU API's wheel-position unit ({@code pulses} or {@code legacy}), as the simulator's setting of the same name. */
+    public static final String WSU_POSITION_UNITS = "wsu.positionUnits";
+    /**
+     * The system property that sets {@value #WSU_POSITION_UNITS} for a run
+     * ({@code java -Dkheperasim.wsu.positionUnits=legacy -jar khepera-link.jar run ...}).
+     */
+    public static final String WSU_POSITION_UNITS_PROPERTY = "kheperasim." + WSU_POSITION_UNITS;
+
+    /** The WSU API's speed unit ({@code khepera} or {@code legacy}), as the simulator's setting of the same name. */
+    public static final String WSU_SPEED_UNITS = "wsu.speedUnits";
+    /** The system property that sets {@value #WSU_SPEED_UNITS} for a run. */
+    public static final String WSU_SPEED_UNITS_PROPERTY = "kheperasim." + WSU_SPEED_UNITS;
 
     /** The default speed clamp: 20 units ≈ 16 cm/s, well below the robot's 127. */
     public static final int DEFAULT_MAX_SPEED = 20;
 
     /** Checks the values. */
     public RobotSettings {
+        options = java.util.Map.copyOf(options);
         if (maxSpeed < 0 || maxSpeed > 127) {
             throw new IllegalArgumentException("--max-speed " + maxSpeed + " must lie in 0..127 speed units"
                     + " (1 unit is about 8 mm/s)");
@@ -28,18 +44,36 @@ public record RobotSettings(int maxSpeed, boolean gripper, boolean parkGripperOn
         }
     }
 
-    /** @return clamp 20, no gripper */
+    /**
+     * @return clamp 20, no gripper; {@value #WSU_POSITION_UNITS} and {@value #WSU_SPEED_UNITS} from the
+     *     system properties {@value #WSU_POSITION_UNITS_PROPERTY} and {@value #WSU_SPEED_UNITS_PROPERTY}
+     *     when they are set
+     */
     public static RobotSettings defaults() {
-        return new RobotSettings(DEFAULT_MAX_SPEED, false, false, 180, 249, 1000);
+        java.util.Map<String, String> options = new java.util.TreeMap<>();
+        for (String key : new String[] {WSU_POSITION_UNITS, WSU_SPEED_UNITS}) {
+            String value = System.getProperty("kheperasim." + key);
+            if (value != null) {
+                options.put(key, value);
+            }
+        }
+        return new RobotSettings(DEFAULT_MAX_SPEED, false, false, 180, 249, 1000, options);
     }
 
     /** @param units the clamp @return these settings with it */
     public RobotSettings withMaxSpeed(int units) {
-        return new RobotSettings(units, gripper, parkGripperOnStop, armUp, armDown, armTravelMillis);
+        return new RobotSettings(units, gripper, parkGripperOnStop, armUp, armDown, armTravelMillis, options);
     }
 
     /** @param fitted gripper fitted @param park park it on stop @return these settings with them */
     public RobotSettings withGripper(boolean fitted, boolean park) {
-        return new RobotSettings(maxSpeed, fitted, park, armUp, armDown, armTravelMillis);
+        return new RobotSettings(maxSpeed, fitted, park, armUp, armDown, armTravelMillis, options);
+    }
+
+    /** @param key an option's name @param value its value @return these settings with it */
+    public RobotSettings withOption(String key, String value) {
+        java.util.Map<String, String> next = new java.util.TreeMap<>(options);
+        next.put(key, value);
+        return new RobotSettings(maxSpeed, gripper, parkGripperOnStop, armUp, armDown, armTravelMillis, next);
     }
 }

@@ -149,7 +149,10 @@ public final class Session implements AutoCloseable {
      */
     public synchronized Reply exchange(Command command) throws SessionException {
         String line = command.encode();
-        long waitNanos = options.replyTimeoutMillis() * 1_000_000L + timing.exchangeNanos(line.length() + 1, 64);
+        // A reply's wire time: 64 characters cover every reply but the long ones (the K213's image of
+        // 64 numbers), which take up to 4 characters a value.
+        int replyChars = StrictMath.max(64, 8 + 4 * command.replyValueCount());
+        long waitNanos = options.replyTimeoutMillis() * 1_000_000L + timing.exchangeNanos(line.length() + 1, replyChars);
         ProtocolException refusal = null;
         int tries = options.retries() + 1;
         for (int attempt = 0; attempt < tries; attempt++) {

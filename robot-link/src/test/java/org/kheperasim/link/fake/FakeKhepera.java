@@ -43,6 +43,8 @@ public final class FakeKhepera implements AutoCloseable {
     private volatile boolean bannerBeforeReply;
     private volatile boolean silent;
     private volatile boolean gripperFitted = true;
+    private volatile boolean visionFitted = true;
+    private final FakeLinearTurret vision = new FakeLinearTurret();
 
     // Robot state.
     private final int[] proximity = new int[8];
@@ -205,6 +207,18 @@ public final class FakeKhepera implements AutoCloseable {
             return c.reply(light.clone());
         } else if (c instanceof Command.ReadBus) {
             return c.reply(0);
+        } else if (c instanceof Command.Turret t && t.id() == Command.Turret.VISION && visionFitted) {
+            TurretCommand body = t.body();
+            if (body instanceof TurretCommand.Image) {
+                return c.reply(vision.image());
+            } else if (body instanceof TurretCommand.BrightestPixel) {
+                return c.reply(vision.brightest());
+            } else if (body instanceof TurretCommand.DarkestPixel) {
+                return c.reply(vision.darkest());
+            } else if (body instanceof TurretCommand.Version) {
+                return c.reply(1, 2);
+            }
+            throw new ProtocolException(ProtocolException.Kind.UNKNOWN_COMMAND, c.encode(), "unknown vision command");
         } else if (c instanceof Command.Turret t) {
             if (t.id() != Command.Turret.GRIPPER || !gripperFitted) {
                 throw new ProtocolException(ProtocolException.Kind.UNKNOWN_COMMAND, c.encode(), "no turret " + t.id());
@@ -252,6 +266,22 @@ public final class FakeKhepera implements AutoCloseable {
     /** @param fitted whether the gripper turret answers */
     public void setGripperFitted(boolean fitted) {
         gripperFitted = fitted;
+    }
+
+    /** @param fitted whether the K213 vision turret answers */
+    public void setVisionFitted(boolean fitted) {
+        visionFitted = fitted;
+    }
+
+    /** @return the K213 vision turret on top of this robot: set what it sees */
+    public FakeLinearTurret vision() {
+        return vision;
+    }
+
+    /** @return the position counters now, [left, right], pulses */
+    public synchronized int[] positions() {
+        advanceWheels();
+        return new int[] {(int) posLeft, (int) posRight};
     }
 
     /** @param t wire timing to delay replies by, or null for none */

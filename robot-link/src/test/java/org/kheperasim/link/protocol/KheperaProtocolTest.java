@@ -45,8 +45,18 @@ class KheperaProtocolTest {
                 Arguments.of(Command.Turret.gripper(new TurretCommand.Barrier()), "T,1,G", "t,1,g,0", List.of("0")),
                 Arguments.of(Command.Turret.gripper(new TurretCommand.MotorPosition(1)), "T,1,H,1", "t,1,h,250", List.of("250")),
                 Arguments.of(Command.Turret.gripper(new TurretCommand.Version()), "T,1,B", "t,1,b,2,1", List.of("2", "1")),
+                Arguments.of(Command.Turret.vision(new TurretCommand.Image()), "T,2,N", "t,2,n," + IMAGE, IMAGE_VALUES),
+                Arguments.of(Command.Turret.vision(new TurretCommand.BrightestPixel()), "T,2,O", "t,2,o,63", List.of("63")),
+                Arguments.of(Command.Turret.vision(new TurretCommand.DarkestPixel()), "T,2,P", "t,2,p,0", List.of("0")),
+                Arguments.of(Command.Turret.vision(new TurretCommand.Version()), "T,2,B", "t,2,b,1,0", List.of("1", "0")),
+                Arguments.of(new Command.Turret(2, new TurretCommand.Raw("U,3")), "T,2,U,3", "t,2,u", List.of()),
                 Arguments.of(new Command.Turret(3, new TurretCommand.Raw("X,5,6")), "T,3,X,5,6", "t,3,x,9", List.of("9")));
     }
+
+    /** A K213 image: 64 grey levels, a ramp from 0 to 252 in steps of 4. */
+    private static final List<String> IMAGE_VALUES = java.util.stream.IntStream.range(0, 64)
+            .mapToObj(i -> Integer.toString(4 * i)).toList();
+    private static final String IMAGE = String.join(",", IMAGE_VALUES);
 
     @ParameterizedTest(name = "{1}")
     @MethodSource("commands")

@@ -295,6 +295,12 @@ public final class Engine {
                     r.encoderLeft(), r.encoderRight(), r.contact(), prox, light, r.collisions(),
                     r.distanceTravelledMm(), driverStatus.get(r.id()).apply(r), r.gripper().view(), r.leds()));
         }
-        return new Snapshot(timeNanos(), views, world.caps());
+        List<VisionView> vision = new ArrayList<>();
+        for (SimRobot r : robots) {
+            if (r.vision().lastView() != null) {
+                vision.add(r.vision().lastView());
+            }
+        }
+        return new Snapshot(timeNanos(), views, world.caps(), vision);
     }
 }

@@ -59,6 +59,11 @@ final class ProximitySensing {
      */
     private boolean shortcuts = true;
 
+    /** The robot's gripper, whose lowered arm some settings put in front of sensors; null: never. */
+    private GripperModel arm;
+    /** The sensors that read as touching the lowered arm ({@code gripper.armInView}). */
+    private final boolean[] armBlinds = new boolean[IrSensor.COUNT];
+
     /**
      * How far a cap's cells on the grid reach beyond its disc (mm): a cell is the cap's when its
      * centre lies in the disc, so its far corner may lie half a cell's diagonal outside; and the
@@ -221,8 +226,30 @@ final class ProximitySensing {
         }
     }
 
+    /**
+     * Put the lowered gripper arm in front of some sensors ({@code gripper.armInView}): with the arm
+     * low they read as touching it ({@code front}: sensors 2 and 3, which look straight at it;
+     * {@code wsu}: sensors 0 to 5, as the WSU simulator had it; {@code none}: no sensor).
+     */
+    void armInView(GripperModel gripper, String mode) {
+        switch (mode) {
+            case "front" -> {
+                armBlinds[2] = true;
+                armBlinds[3] = true;
+            }
+            case "wsu" -> java.util.Arrays.fill(armBlinds, 0, 6, true);
+            default -> {
+                return;
+            }
+        }
+        this.arm = gripper;
+    }
+
     /** Sensor i's reading for a beam response {@code raw}: gain, offset, noise and spikes. */
     private int reading(int i, double raw, long sample) {
+        if (arm != null && armBlinds[i] && arm.armLow()) {
+            raw = StrictMath.max(raw, reflectance[OccupancyGrid.WALL] * profile.valueAt(0));
+        }
         double value = raw * gain[i] + offset[i];
         if (noiseScale[i] > 0) {
             CounterNoise n = noise[i];

@@ -16,12 +16,14 @@ import java.util.TreeMap;
  */
 public final class Settings {
 
-    private enum Kind { NUMBER, FLAG, PROFILE, STEPPING }
+    private enum Kind { NUMBER, FLAG, PROFILE, STEPPING, CHOICE }
 
     private record Def(String defaultValue, Kind kind, double min, double max, String meaning) {
     }
 
     private static final Map<String, Def> DEFS = new LinkedHashMap<>();
+    /** The values a {@link Kind#CHOICE} setting may take, in order; the first is the default. */
+    private static final Map<String, java.util.List<String>> CHOICES = new LinkedHashMap<>();
 
     static {
         DEFS.put("engine.stepping", new Def("events", Kind.STEPPING, 0, 0, "how the engine advances time: events"
@@ -65,6 +67,29 @@ public final class Settings {
         num("gripper.fingerMs", "400", 1, 10_000, "time the gripper fingers take to open or close, ms (an estimate)");
         num("gripper.capResistivity", "120", 0, 255, "resistivity reading of a held bottle cap, 0..255 (empty fingers read 0)");
         num("encoder.mmPerPulse", "0.08", 0.001, 10, "wheel travel per encoder pulse, mm (the manual also gives 1/12 mm)");
+        choice("gripper.armInView", "what the lowered gripper arm does to the proximity sensors: none (the default: it"
+                + " stays out of their beams), front (sensors 2 and 3 read as touching it) or wsu (sensors 0 to 5 read as"
+                + " touching it, as in the WSU simulator)", "none", "front", "wsu");
+        num("vision.refreshMs", "50", 1, 10_000, "time between two images of the K213 vision turret, ms (an estimate:"
+                + " its manual says its light detector adapts the scan speed to the light)");
+        num("vision.noise", "0.5", 0, 255, "per-pixel noise of the vision turret, standard deviation, grey levels");
+        num("vision.grey.wall", "10", 0, 255, "grey level the vision turret sees on a wall in the room's light (0 black, 255 white)");
+        num("vision.grey.cap", "200", 0, 255, "grey level of a cap or ball in the room's light");
+        num("vision.grey.robot", "60", 0, 255, "grey level of another robot's body in the room's light");
+        num("vision.grey.background", "0", 0, 255, "grey level of a pixel that sees nothing (beyond the arena)");
+        num("vision.lampGain", "0.25", 0, 10, "how much brighter a surface looks lit by a lamp at full exposure (the"
+                + " light sensors' exposure model); a lamp itself is always 255");
+        choice("wsu.positionUnits", "unit of a WSU controller's wheel positions: pulses (the Khepera's 0.08 mm encoder"
+                + " pulses, the default) or legacy (the original simulator's counts, 3 per degree of a turn on the spot)",
+                "pulses", "legacy");
+        choice("wsu.speedUnits", "unit of a WSU controller's wheel speeds: khepera (one Khepera speed unit, about 8 mm/s,"
+                + " the default) or legacy (as fast as the original simulator drew it, about 30 mm/s: 3.78 Khepera units)",
+                "khepera", "legacy");
+    }
+
+    private static void choice(String key, String meaning, String... values) {
+        DEFS.put(key, new Def(values[0], Kind.CHOICE, 0, 0, meaning));
+        CHOICES.put(key, java.util.List.of(values));
     }
 
     private static void num(String key, String def, double min, double max, String meaning) {
@@ -128,6 +153,12 @@ public final class Settings {
                 }
             }
             case PROFILE -> ProximityProfile.named(v);
+            case CHOICE -> {
+                if (!CHOICES.get(key).contains(v)) {
+                    throw new IllegalArgumentException("setting " + key + "=" + value + ": must be one of "
+                            + String.join(", ", CHOICES.get(key)) + " (" + def.meaning + ")");
+                }
+            }
             case STEPPING -> RobotModel.Stepping.named(v);
         }
         TreeMap<String, String> next = new TreeMap<>(overrides);

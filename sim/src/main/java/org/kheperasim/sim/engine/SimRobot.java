@@ -45,6 +45,8 @@ public final class SimRobot {
     private final LinkEnd end;
     private final Glides glides;
     private final ControllerLink controls;
+    private final World world;
+    private final LinearCamera camera;
 
     /**
      * @param id the robot's index in the engine
@@ -58,6 +60,7 @@ public final class SimRobot {
     SimRobot(int id, String name, World world, Pose start, Settings settings, SplittableRandom random) {
         this.id = id;
         this.name = name;
+        this.world = world;
         this.settings = settings;
         this.model = RobotModel.of(settings);
         CounterNoise systematic = new CounterNoise(random.nextLong());
@@ -72,6 +75,7 @@ public final class SimRobot {
         this.proximity = new ProximitySensing(world, id, placement, model, calibration, proxNoise);
         this.light = new LightSensing(world, placement, model, calibration, lightNoise);
         this.gripper = new GripperModel(id, world, body, model.gripper());
+        proximity.armInView(gripper, settings.raw("gripper.armInView"));
         this.capContacts = new CapContacts(world.capSet(), gripper, id);
         this.gripperPort = new GripperPort(gripper);
         this.onBoard = new OnBoardControl(this, body, gripper);
@@ -81,6 +85,8 @@ public final class SimRobot {
         this.end = new LinkEnd(body, sense, proximity, light, gripper, coverage);
         this.link = new RobotLink(model.link().timing(), end);
         this.controls = new ControllerLink(this, link);
+        // The turret's stream is drawn last, so that it shifts none of the others.
+        this.camera = new LinearCamera(world, id, body, VisionModel.of(settings), new CounterNoise(random.nextLong()));
         sense.at(0);
         link.prime();
     }
@@ -280,6 +286,21 @@ public final class SimRobot {
         onBoard.speedMode();
         link.reset();
         body.wheels().setSpeeds(0, 0);
+    }
+
+    /** @return the K213 linear vision turret, as the controller and a protocol client read it */
+    public LinearCamera vision() {
+        return camera;
+    }
+
+    /** @return the arena's width, mm */
+    public double arenaWidth() {
+        return world.arena().width();
+    }
+
+    /** @return the arena's height, mm (y up from its bottom edge) */
+    public double arenaHeight() {
+        return world.arena().height();
     }
 
     /** @return the gripper turret, as the controller and a protocol client see it */

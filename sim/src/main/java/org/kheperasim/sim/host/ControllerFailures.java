@@ -9,8 +9,10 @@ final class ControllerFailures {
     }
 
     static final String HEADLESS = "opened a window, but this run has no display (java.awt.HeadlessException):"
-            + " a controller's own windows open only in the simulator's window ('khepera-sim gui'), and close with"
-            + " its run. To run it headless too, open the window only when"
+            + " a controller's own windows open only in the simulator's window, and close with its run. Open it"
+            + " there ('khepera-sim gui --arena ... --classpath ... --controller ...') and run it trusted: tick"
+            + " Controller > Trust this controller, then Start (a controller that opens windows needs to be trusted;"
+            + " --trusted is the same on the command line). To run it headless too, open the window only when"
             + " !java.awt.GraphicsEnvironment.isHeadless(). The controller was stopped and the robot's motors set to 0.";
 
     static boolean isHeadless(Throwable e) {

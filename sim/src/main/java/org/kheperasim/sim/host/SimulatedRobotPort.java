@@ -1,23 +1,38 @@
 package org.kheperasim.sim.host;
 
+import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import org.kheperasim.api.ArmPosition;
 import org.kheperasim.api.GripperState;
 import org.kheperasim.api.spi.RobotPort;
+import org.kheperasim.api.spi.TruePose;
+import org.kheperasim.link.timing.LinkTiming;
+import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
 
 /**
  * The simulated robot behind a controller's API: every call goes through the controller's clock
  * (which charges its simulated time and keeps the lockstep) to the robot's link, so the controller
  * sees what the serial link would have delivered by then.
+ *
+ * <p>The vision turret is read as robot-link reads it, one exchange per read: the controller waits
+ * for the command's characters and the robot's turnaround, the turret gives the image it has at
+ * that moment, and the controller waits for the reply's characters (64 numbers: about 60 ms at
+ * 38400 baud). A step controller runs on the robot's own processor and reads the turret at once.
  */
 final class SimulatedRobotPort implements RobotPort {
+    /** The vision turret's id on the extension bus ({@code T,2,...}). */
+    private static final String VISION = "T,2,";
+
     private final SimRobot robot;
     private final PortClock clock;
+    private final boolean onBoard;
 
     SimulatedRobotPort(SimRobot robot, PortClock clock) {
         this.robot = robot;
         this.clock = clock;
+        // A step controller runs on the robot's processor: no serial line between it and the turret.
+        this.onBoard = clock instanceof StepHost;
     }
 
     @Override
@@ -134,6 +149,72 @@ final class SimulatedRobotPort implements RobotPort {
         int v = robot.gripper().resistivity();
         clock.leave();
         return v;
+    }
+
+    @Override
+    public int[] visionImage() {
+        int[] image = exchange('N');
+        return image;
+    }
+
+    @Override
+    public int visionBrightest() {
+        return exchange('O')[0];
+    }
+
+    @Override
+    public int visionDarkest() {
+        return exchange('P')[0];
+    }
+
+    /**
+     * One turret command ({@code T,2,N}, {@code O} or {@code P}) and its reply, at the link's pace.
+     *
+     * @return the image for {@code N}; the pixel's index, alone, for {@code O} and {@code P}
+     */
+    private int[] exchange(char command) {
+        LinkTiming timing = robot.link();
+        if (!onBoard) {
+            waitFor(timing.wireNanos(VISION.length() + 2) + timing.turnaroundNanos());
+        }
+        clock.enter();
+        int[] answer = switch (command) {
+            case 'N' -> robot.vision().image(clock.now());
+            case 'O' -> new int[] {robot.vision().brightest(clock.now())};
+            default -> new int[] {robot.vision().darkest(clock.now())};
+        };
+        clock.leave();
+        if (!onBoard) {
+            // The reply: "t,2,n" and a comma and the digits of each value, then CR LF.
+            int chars = VISION.length() + 1 + 2;
+            for (int v : answer) {
+                chars += 1 + Integer.toString(v).length();
+            }
+            waitFor(timing.wireNanos(chars));
+        }
+        return answer;
+    }
+
+    private void waitFor(long nanos) {
+        try {
+            clock.sleepNanos(nanos);
+        } catch (InterruptedException e) {
+            // A controller interrupted while its turret answers: the reply still comes.
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    @Override
+    public Optional<TruePose> truePose() {
+        clock.enter();
+        TruePose p = new TruePose(robot.x(), robot.y(), robot.headingDeg(), robot.arenaWidth(), robot.arenaHeight());
+        clock.leave();
+        return Optional.of(p);
+    }
+
+    @Override
+    public String option(String key) {
+        return Settings.catalogue().containsKey(key) ? robot.settings().raw(key) : null;
     }
 
     @Override

@@ -11,6 +11,7 @@ import java.util.function.Consumer;
 import org.kheperasim.link.protocol.Command;
 import org.kheperasim.link.protocol.KheperaProtocol;
 import org.kheperasim.link.protocol.ProtocolException;
+import org.kheperasim.link.protocol.TurretCommand;
 import org.kheperasim.link.timing.LinkTiming;
 
 /**
@@ -92,7 +93,9 @@ final class Conversation {
         long actAt = start + (long) ((timing.wireNanos(commandChars) + timing.turnaroundNanos()) / speed);
         sleepUntil(actAt);
         String text;
-        if (answer instanceof Command c) {
+        if (answer instanceof Command.Turret t && t.id() == Command.Turret.VISION) {
+            text = vision(t);
+        } else if (answer instanceof Command c) {
             text = robot.execute(c);
         } else if (answer instanceof String s) {
             text = s;
@@ -107,6 +110,31 @@ final class Conversation {
         commands.incrementAndGet();
         return sendAt;
     }
+
+    /**
+     * The K213 vision turret's answer ({@code docs/protocol-server.md}): {@code B} its version,
+     * {@code N} the 64 pixels, {@code O} and {@code P} the brightest and darkest pixel's index; any
+     * other command is not the turret's.
+     */
+    private String vision(Command.Turret c) {
+        TurretCommand body = c.body();
+        return robot.inspect(r -> {
+            long now = robot.timeNanos();
+            if (body instanceof TurretCommand.Image) {
+                return c.reply(r.vision().image(now)).encode();
+            } else if (body instanceof TurretCommand.BrightestPixel) {
+                return c.reply(r.vision().brightest(now)).encode();
+            } else if (body instanceof TurretCommand.DarkestPixel) {
+                return c.reply(r.vision().darkest(now)).encode();
+            } else if (body instanceof TurretCommand.Version) {
+                return c.reply(VISION_VERSION).encode();
+            }
+            return KheperaProtocol.COMMAND_NOT_FOUND;
+        });
+    }
+
+    /** The vision turret's version and revision, {@code T,2,B}. */
+    static final int[] VISION_VERSION = {1, 0};
 
     private static void sleepUntil(long deadline) {
         long left;

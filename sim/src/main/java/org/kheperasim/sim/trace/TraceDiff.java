@@ -40,8 +40,8 @@ public final class TraceDiff {
         List<String> a = recorded.lines().toList();
         List<String> b = now.lines().toList();
         List<String> header = new ArrayList<>();
-        List<String> ha = a.stream().filter(l -> l.startsWith("#")).toList();
-        List<String> hb = b.stream().filter(l -> l.startsWith("#")).toList();
+        List<String> ha = a.stream().filter(TraceDiff::isHeader).toList();
+        List<String> hb = b.stream().filter(TraceDiff::isHeader).toList();
         for (String line : ha) {
             String key = key(line);
             String other = hb.stream().filter(l -> key(l).equals(key)).findFirst().orElse(null);
@@ -49,8 +49,8 @@ public final class TraceDiff {
                 header.add(key + ": recorded '" + value(line) + "', now " + (other == null ? "missing" : "'" + value(other) + "'"));
             }
         }
-        List<String> sa = a.stream().filter(l -> !l.startsWith("#")).toList();
-        List<String> sb = b.stream().filter(l -> !l.startsWith("#")).toList();
+        List<String> sa = a.stream().filter(l -> !isHeader(l)).toList();
+        List<String> sb = b.stream().filter(l -> !isHeader(l)).toList();
         String first = null;
         for (int i = 0; i < sa.size() && first == null; i++) {
             if (i >= sb.size()) {
@@ -65,6 +65,11 @@ public final class TraceDiff {
         return new Result(header, first, sa.size());
     }
 
+    /** A header line starts with {@code #}; a vision line does too, but it is a sample. */
+    private static boolean isHeader(String line) {
+        return line.startsWith("#") && !line.startsWith(TraceWriter.VISION_PREFIX);
+    }
+
     private static String key(String headerLine) {
         String[] t = headerLine.split(" ", 3);
         return t.length > 1 ? t[1] : "";
@@ -76,6 +81,12 @@ public final class TraceDiff {
     }
 
     private static String describe(int sample, String recorded, String now) {
+        if (recorded.startsWith(TraceWriter.VISION_PREFIX) || now.startsWith(TraceWriter.VISION_PREFIX)) {
+            String[] v = recorded.split(" ");
+            return String.format(Locale.ROOT, "sample line %d: the vision turret's image%s differs (recorded '%s',"
+                    + " now '%s')", sample, v.length > 4 ? " of robot " + v[3] + " at " + v[2] + " s" : "",
+                    shorten(recorded), shorten(now));
+        }
         String[] a = recorded.split(" ");
         String[] b = now.split(" ");
         boolean cap = a.length > 1 && a[1].equals("cap");
@@ -92,5 +103,9 @@ public final class TraceDiff {
         String shown = String.join("; ", changes.subList(0, Math.min(3, changes.size())));
         return String.format(Locale.ROOT, "sample line %d (t = %s s, %s): %s%s", sample, a[0], who, shown,
                 changes.size() > 3 ? "; and " + (changes.size() - 3) + " more columns" : "");
+    }
+
+    private static String shorten(String s) {
+        return s.length() <= 60 ? s : s.substring(0, 57) + "...";
     }
 }

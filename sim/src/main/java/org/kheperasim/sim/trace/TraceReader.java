@@ -28,6 +28,7 @@ public final class TraceReader {
     private static final Pattern TIME = Pattern.compile("\\d{1,12}\\.\\d{3}");
     private static final Pattern FIXED = Pattern.compile("-?\\d{1,12}\\.\\d{3}");
     private static final Pattern INT = Pattern.compile("-?\\d{1,10}");
+    private static final Pattern GREY = Pattern.compile("\\d{1,3}");
     private static final Set<String> CONTACTS = names(Contact.values());
     private static final Set<String> FINGERS = names(GripperState.values());
 
@@ -38,8 +39,10 @@ public final class TraceReader {
      * @param robotLines  how many robot sample lines
      * @param capLines    how many cap lines
      * @param lastSeconds the time of the last sample line, s (0 without samples)
+     * @param visionLines how many vision lines (images a robot's vision turret gave its controller)
      */
-    public record Summary(Map<String, String> header, int robotLines, int capLines, double lastSeconds) {
+    public record Summary(Map<String, String> header, int robotLines, int capLines, double lastSeconds,
+            int visionLines) {
     }
 
     private TraceReader() {
@@ -94,8 +97,14 @@ public final class TraceReader {
         }
         int robots = 0;
         int caps = 0;
+        int visions = 0;
         double last = 0;
         for (; i < n; i++) {
+            if (lines[i].startsWith(TraceWriter.VISION_PREFIX)) {
+                last = visionLine(source, i + 1, lines[i], last);
+                visions++;
+                continue;
+            }
             String[] t = lines[i].split(" ", -1);
             double time = time(source, i + 1, t[0], last);
             if (t.length == CAP_COLUMNS && t[1].equals("cap")) {
@@ -113,8 +122,30 @@ public final class TraceReader {
             }
             last = time;
         }
-        return new Summary(header, robots, caps, last);
+        return new Summary(header, robots, caps, last, visions);
     }
+
+    /** A vision line: the sample's time, the robot, when the image was taken, 64 grey levels 0..255. */
+    private static double visionLine(String source, int line, String text, double previous) {
+        String[] t = text.substring(TraceWriter.VISION_PREFIX.length()).split(" ", -1);
+        if (t.length != 3 + VISION_PIXELS) {
+            throw new TraceFormatException(source, line, "a vision line has " + t.length + " columns after '"
+                    + TraceWriter.VISION_PREFIX.strip() + "'; it has t_s, robot, taken_s and " + VISION_PIXELS + " pixels");
+        }
+        double time = time(source, line, t[0], previous);
+        check(source, line, t[1], INT, "robot");
+        check(source, line, t[2], FIXED, "taken_s");
+        for (int c = 3; c < t.length; c++) {
+            check(source, line, t[c], GREY, "pixel " + (c - 3));
+            int grey = Integer.parseInt(t[c]);
+            if (grey > 255) {
+                throw new TraceFormatException(source, line, "pixel " + (c - 3) + " is " + grey + "; a grey level is 0..255");
+            }
+        }
+        return time;
+    }
+
+    private static final int VISION_PIXELS = 64;
 
     private static void robotLine(String source, int line, String[] t) {
         check(source, line, t[1], INT, "robot");
@@ -152,7 +183,7 @@ public final class TraceReader {
     private static void check(String source, int line, String token, Pattern form, String column) {
         if (!form.matcher(token).matches()) {
             throw new TraceFormatException(source, line, column + " is '" + shorten(token) + "'; expected "
-                    + (form == INT ? "a whole number" : "a number with 3 decimals"));
+                    + (form == INT ? "a whole number" : form == GREY ? "a grey level, 0..255" : "a number with 3 decimals"));
         }
     }
 

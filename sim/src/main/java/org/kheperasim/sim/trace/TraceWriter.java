@@ -34,6 +34,12 @@ import org.kheperasim.sim.engine.SnapshotListener;
  *
  * <p>A cap line is written at the first sample and then only when the cap has moved, been
  * picked up or put down since the last sample.
+ *
+ * <p>A robot whose controller reads its K213 vision turret gets a vision line when the image it
+ * read has changed since the last sample: {@code # vision t_s robot taken_s p0 ... p63} (the time of
+ * the sample, the robot, when the turret took the image, its 64 grey levels). It starts with
+ * {@code #} so that readers of the robot and cap lines pass over it; a run that never reads the
+ * turret writes none.
  */
 public final class TraceWriter implements SnapshotListener, AutoCloseable {
     /** The trace format's version. */
@@ -47,6 +53,8 @@ public final class TraceWriter implements SnapshotListener, AutoCloseable {
     private double[] capY = new double[0];
     private int[] capHeld = new int[0];
     private boolean first = true;
+    /** When each robot's last written image was taken, ns (-1: none yet). */
+    private long[] visionTaken = new long[0];
 
     /**
      * @param out where the text goes (the writer is closed with this one)
@@ -111,7 +119,30 @@ public final class TraceWriter implements SnapshotListener, AutoCloseable {
             }
         }
         first = false;
+        for (org.kheperasim.sim.engine.VisionView v : snapshot.vision()) {
+            if (v.robot() >= visionTaken.length) {
+                int old = visionTaken.length;
+                visionTaken = java.util.Arrays.copyOf(visionTaken, v.robot() + 1);
+                java.util.Arrays.fill(visionTaken, old, visionTaken.length, -1);
+            }
+            if (visionTaken[v.robot()] == v.takenNanos()) {
+                continue;
+            }
+            visionTaken[v.robot()] = v.takenNanos();
+            line.setLength(0);
+            line.append(VISION_PREFIX);
+            Fixed.append(line, snapshot.timeNanos() / 1e9, 3).append(' ').append(v.robot()).append(' ');
+            Fixed.append(line, v.takenNanos() / 1e9, 3);
+            for (int i = 0; i < v.pixels().length; i++) {
+                line.append(' ').append(v.pixel(i));
+            }
+            line.append('\n');
+            write(line.toString());
+        }
     }
+
+    /** How a vision line starts. */
+    public static final String VISION_PREFIX = "# vision ";
 
     private void write(String text) {
         try {
