@@ -31,8 +31,8 @@ import picocli.CommandLine.Parameters;
  */
 @Command(name = "verify", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Run a recorded run again and compare: 'identical', or the first sample that differs.",
-            "RECORDING is a trace file (run --trace) or a run recording folder (with its run.trace).",
-            "Exit status: 0 identical; 1 it differs; 2 bad input"})
+            "RECORDING is a trace file (run --trace) or a run recording folder (with its run.trace)."},
+        footer = "Exit status: 0 identical; 1 it differs; 2 bad input (an option, a file, a name the tool cannot use).")
 final class VerifyCommand implements Callable<Integer> {
     private static final long MAX_TRACE_BYTES = 256L << 20;
 
