@@ -76,6 +76,7 @@ public final class MainWindow {
         arenaView.setEditable(() -> !player.open());
         sensorPanel = new SensorPanel(feed::selected, feed::state);
         controllers = new ControllerChooser(frame, console, status, choices, robotControllers, robotSelection, runs::discard);
+        runs.checks(controllers::readyForNewRun, controllers::staleNote);
         files = new ArenaFileActions(frame, model, console, status, choices, prefs, () -> {
             runs.discard();
             arenaView.fit();
@@ -97,7 +98,7 @@ public final class MainWindow {
         wireModel();
         frame.setJMenuBar(menus.menuBar(files.recentMenu(), model, menus.viewMenu(arenaView), menus.trustToggle(choices, console)));
         frame.setContentPane(WindowLayout.content(frame, menus.toolbar(controllers.box()), arenaView, replayBar.component(),
-                sensorPanel, plot, console, status.component()));
+                sensorPanel, plot, console, status.component(), () -> model.arena().width() / model.arena().height()));
         frame.setDefaultCloseOperation(JFrame.DO_NOTHING_ON_CLOSE);
         frame.addWindowListener(new WindowAdapter() {
             @Override
@@ -113,6 +114,10 @@ public final class MainWindow {
                 + ". Press Start (F5). Draw with the palette; File > Open recording replays a run; Help > Quick start"
                 + " gets your own controller running in 15 minutes.");
         painter = new FramePainter(feed, player, replayBar, plot, sensorPanel, arenaView, console, status, runs, choices);
+        if (options.javaSource() != null) {
+            controllers.compileAndUse(options.javaSource());
+            actions.refresh();
+        }
     }
 
     /** Another arena was opened: its robots are not the last arena's, so none keeps a controller of its own. */
@@ -138,6 +143,8 @@ public final class MainWindow {
         model.onChange(arenaView::repaint);
         model.onChange(actions::refresh);
         model.onRefusal(m -> {
+            // The whole reason in the console too: the status bar may be too narrow for it.
+            console.error("refused: " + m);
             status.show("Refused: " + m, true);
             arenaView.repaint();
             Toolkit.getDefaultToolkit().beep();
@@ -148,6 +155,8 @@ public final class MainWindow {
         });
         model.setRun(() -> runs.active() ? runs.runner().session().arena() : null, runs::liveRobots);
         status.onExpire(gestures::clearRefusal);
+        console.onControllerError(line -> status.alert(line.source() + ": " + line.text().lines().findFirst().orElse("")
+                + " (see the console)"));
     }
 
     private String title() {
@@ -182,6 +191,10 @@ public final class MainWindow {
     }
 
     private void close(ArenaFileActions files) {
+        if (recordings.hidesUnsavedEdits()) {
+            // The arena under the replay is what would be lost: show it, then ask.
+            recordings.closeReplay();
+        }
         if (!files.mayLeaveEdits("closing")) {
             return;
         }
@@ -269,6 +282,16 @@ public final class MainWindow {
         boolean ok = recordings.openRecording(path);
         actions.refresh();
         return ok;
+    }
+
+    /** @return the status bar (tests) */
+    StatusBar status() {
+        return status;
+    }
+
+    /** @return the live run's score now, or null without a run or without tasks (tests) */
+    org.kheperasim.sim.task.Score score() {
+        return runs.scoreNow();
     }
 
     /** @return the plot (tests) */
