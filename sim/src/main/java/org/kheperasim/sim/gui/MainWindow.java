@@ -63,7 +63,9 @@ public final class MainWindow {
         if (choices.arenaFile != null && Files.isRegularFile(SettingsFile.besideArena(choices.arenaFile))) {
             choices.settings = SettingsFile.load(SettingsFile.besideArena(choices.arenaFile));
         }
-        choices.controllerName = options.controller();
+        // A .java to compile is named by its class from the start (the compile below confirms it).
+        choices.controllerName = options.javaSource() != null
+                ? options.javaSource().getFileName().toString().replaceFirst("\\.java$", "") : options.controller();
         choices.classpath.addAll(options.classpath());
         choices.seed = options.seed();
         model = new EditorModel(arena);

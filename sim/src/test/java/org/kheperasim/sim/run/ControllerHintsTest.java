@@ -92,4 +92,16 @@ class ControllerHintsTest {
         assertTrue(text.startsWith("khepera-sim: error: classpath entry " + java + " is a Java source file"), text);
         assertTrue(!text.contains("zip"), text);
     }
+
+    /** The window's command says it before opening, not at the first Start. */
+    @Test
+    void theGuiCommandRefusesAWrongNameWithTheHint() {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        var cl = Main.commandLine();
+        cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
+        assertEquals(ExitCodes.BAD_INPUT, cl.execute("gui", "--arena", "lab", "--controller", "wallfollower"));
+        String text = err.toString(StandardCharsets.UTF_8);
+        assertEquals("khepera-sim: error: no controller named 'wallfollower': did you mean WallFollower? Names are"
+                + " case-sensitive: type --controller WallFollower", text.strip());
+    }
 }
