@@ -157,8 +157,7 @@ public final class MainWindow {
         });
         model.setRun(() -> runs.active() ? runs.runner().session().arena() : null, runs::liveRobots);
         status.onExpire(gestures::clearRefusal);
-        console.onControllerError(line -> status.alert(line.source() + ": " + line.text().lines().findFirst().orElse("")
-                + " (see the console)"));
+        console.onControllerError(runs::controllerError);
     }
 
     private String title() {

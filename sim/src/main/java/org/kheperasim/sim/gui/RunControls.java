@@ -333,6 +333,19 @@ final class RunControls implements SnapshotSource {
         changed.run();
     }
 
+    /**
+     * A controller's error line reached the console (a robot may fail while the others run on): the
+     * status bar names every controller that failed, and where, as at the run's end.
+     *
+     * @param line the error line, said as it is when the run knows of no failure (yet)
+     */
+    void controllerError(org.kheperasim.sim.host.ConsoleLine line) {
+        PacedRunner r = runner;
+        String failed = r == null ? null : RunMessages.failures(r.session().hosts(), r.latest().timeSeconds());
+        status.alert(failed != null ? failed : line.source() + ": " + line.text().lines().findFirst().orElse("")
+                + " (see the console)");
+    }
+
     /** Every run keeps its trace (100 ms samples) in a temporary file, so a recording holds what it did. */
     private void keepTrace(RunSession session) {
         try {

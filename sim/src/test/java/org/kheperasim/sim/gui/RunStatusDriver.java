@@ -104,6 +104,7 @@ public final class RunStatusDriver {
         });
         waitFor("the status bar says Thrower runs", () -> onEdtQuiet(() -> w.status().message()).startsWith("Running Thrower in lab"));
         waitFor("the status bar turns red when Thrower throws", () -> onEdtQuiet(() -> w.status().messageRed()));
+        waitFor("the red status names the student's line", () -> onEdtQuiet(() -> w.status().message()).contains("Thrower.java:9"));
         Thread.sleep(500);
         String red = onEdt(() -> w.status().message());
         check(red.contains("Thrower threw java.lang.ArrayIndexOutOfBoundsException") && red.contains("Thrower.java:9"),
