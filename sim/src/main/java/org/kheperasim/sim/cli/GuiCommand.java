@@ -1,5 +1,6 @@
 package org.kheperasim.sim.cli;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -10,6 +11,7 @@ import org.kheperasim.link.tool.ExitCodes;
 import org.kheperasim.link.tool.ToolErrors;
 import org.kheperasim.sim.gui.GuiLauncher;
 import org.kheperasim.sim.gui.GuiOptions;
+import org.kheperasim.sim.run.ControllerCatalog;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -26,7 +28,8 @@ final class GuiCommand implements Callable<Integer> {
 
     @Option(names = "--controller", paramLabel = "NAME", defaultValue = "WallFollower",
             completionCandidates = BundledControllers.class,
-            description = "a bundled controller (${COMPLETION-CANDIDATES}) or a class name on --classpath (default: ${DEFAULT-VALUE})")
+            description = "a bundled controller (${COMPLETION-CANDIDATES}), a class name on --classpath, or a controller's"
+                    + " .java file, which the window compiles (default: ${DEFAULT-VALUE})")
     String controller;
 
     @Option(names = "--classpath", paramLabel = "DIR_OR_JAR", split = "${sys:path.separator}",
@@ -38,6 +41,14 @@ final class GuiCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        Path source = Path.of(controller.strip());
+        if (controller.strip().endsWith(".java") && Files.isRegularFile(source)) {
+            // The window compiles it as it opens, as Controller > Open .java does.
+            return open(new GuiOptions(arena, controller, classpath, seed, source));
+        }
+        // A wrong name is said now, with what to type, not at the first Start (loaded as trusted code only to find
+        // it: the window checks its calls when it runs it, and its Trust menu may still allow them).
+        new ControllerCatalog(classpath, true).load(controller);
         return open(new GuiOptions(arena, controller, classpath, seed));
     }
 

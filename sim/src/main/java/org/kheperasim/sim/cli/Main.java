@@ -31,7 +31,7 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
 
     /** @return a command line ready to execute, with the project's error handling */
     public static CommandLine commandLine() {
-        return ToolErrors.install(new CommandLine(new Main()), "khepera-sim");
+        return HelpFormat.install(ToolErrors.install(new CommandLine(new Main()), "khepera-sim"));
     }
 
     /**
@@ -49,7 +49,7 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
         }
         CommandLine top = new CommandLine(new Lean());
         top.addSubcommand(args[0], type);
-        return ToolErrors.install(top, "khepera-sim");
+        return HelpFormat.install(ToolErrors.install(top, "khepera-sim"));
     }
 
     /**

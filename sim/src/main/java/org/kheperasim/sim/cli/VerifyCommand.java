@@ -15,6 +15,7 @@ import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.files.TextFiles;
 import org.kheperasim.sim.replay.ReplayFiles;
 import org.kheperasim.sim.run.EditLog;
+import org.kheperasim.sim.run.RunRecording;
 import org.kheperasim.sim.run.SettingsFile;
 import org.kheperasim.sim.run.Simulation;
 import org.kheperasim.sim.trace.TraceDiff;
@@ -30,8 +31,8 @@ import picocli.CommandLine.Parameters;
  */
 @Command(name = "verify", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Run a recorded run again and compare: 'identical', or the first sample that differs.",
-            "RECORDING is a trace file (run --trace) or a run recording folder (with its run.trace).",
-            "Exit status: 0 identical; 1 it differs; 2 bad input"})
+            "RECORDING is a trace file (run --trace) or a run recording folder (with its run.trace)."},
+        footer = "Exit status: 0 identical; 1 it differs; 2 bad input (an option, a file, a name the tool cannot use).")
 final class VerifyCommand implements Callable<Integer> {
     private static final long MAX_TRACE_BYTES = 256L << 20;
 
@@ -43,7 +44,8 @@ final class VerifyCommand implements Callable<Integer> {
     Path arenaFile;
 
     @Option(names = "--classpath", paramLabel = "PATHS", split = "[:;]",
-            description = "where the recorded controller's classes are (not needed for a bundled one)")
+            description = "where the recorded controller's classes are (default: a recording's own, as its replay.txt"
+                    + " names them; not needed for a bundled controller)")
     List<Path> classpath = new ArrayList<>();
 
     @Override
@@ -65,7 +67,7 @@ final class VerifyCommand implements Callable<Integer> {
                 ? SettingsFile.load(recording.resolve("run.settings")) : settings(h.get("settings"));
         Simulation.Builder run = Simulation.builder().arena(arena).controller(h.get("controller"))
                 .seed(Long.parseLong(h.get("seed"))).settings(settings)
-                .sampleMillis(Long.parseLong(h.get("sample-ms"))).seconds(summary.lastSeconds()).classpath(classpath);
+                .sampleMillis(Long.parseLong(h.get("sample-ms"))).seconds(summary.lastSeconds()).classpath(classpath(folder));
         for (int i = 0; h.containsKey("robot-" + i); i++) {
             String[] own = h.get("robot-" + i).split(" settings ", 2);
             run.robot(i, own[0], settings(own.length > 1 ? own[1] : "defaults"));
@@ -88,6 +90,24 @@ final class VerifyCommand implements Callable<Integer> {
             System.out.println("  every sample agrees");
         }
         return ExitCodes.FAILED;
+    }
+
+    /**
+     * @return the classpath given, else a recording's own (its copy of the controller's classes, or
+     *     what its replay.txt names): a recording of a controller compiled in the window verifies as it is
+     */
+    private List<Path> classpath(boolean folder) {
+        if (!classpath.isEmpty() || !folder) {
+            return classpath;
+        }
+        List<Path> own = RunRecording.classpath(recording);
+        for (Path p : own) {
+            if (!Files.exists(p)) {
+                throw new IllegalArgumentException("the recording's replay.txt names the classpath entry " + p + ", which"
+                        + " does not exist; give the controller's classes with --classpath DIR_OR_JAR");
+            }
+        }
+        return own;
     }
 
     /** The recorded arena: given, the recording's start.arena, the arena file beside the trace, or the bundled one the trace names; its sha256 must match. */

@@ -242,6 +242,41 @@ public final class EditorModel {
         fire();
     }
 
+    /**
+     * The arena as it is being edited, kept aside while something else is shown (a replay) and
+     * {@link #restore restored} afterwards.
+     *
+     * @param arena the arena
+     * @param undo its undo steps, newest first
+     * @param redo its redo steps, newest first
+     * @param dirty whether it has unsaved changes
+     */
+    public record Kept(Arena arena, List<Arena> undo, List<Arena> redo, boolean dirty) {
+        /** Copies the lists. */
+        public Kept {
+            undo = List.copyOf(undo);
+            redo = List.copyOf(redo);
+        }
+    }
+
+    /** @return the arena with its undo and redo steps and its unsaved mark, to {@link #restore} later */
+    public Kept keep() {
+        return new Kept(arena, new ArrayList<>(undo), new ArrayList<>(redo), dirty);
+    }
+
+    /** @param k what {@link #keep} returned: the arena comes back with its steps and, if it had them, its unsaved changes */
+    public void restore(Kept k) {
+        arena = k.arena();
+        preview = null;
+        undo.clear();
+        undo.addAll(k.undo());
+        redo.clear();
+        redo.addAll(k.redo());
+        selection.clear();
+        dirty = k.dirty();
+        fire();
+    }
+
     /** @param l told after every change (edit, selection, preview) */
     public void onChange(Runnable l) {
         changeListeners.add(l);

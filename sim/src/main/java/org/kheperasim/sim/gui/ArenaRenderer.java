@@ -131,9 +131,13 @@ public final class ArenaRenderer {
         for (Region r : arena.regions()) {
             drawRegion(g, view, r);
         }
+        // The glow lights the floor only: the light does not leave the enclosure.
+        java.awt.Shape clip = g.getClip();
+        g.clip(floor);
         for (Light l : arena.lights()) {
             drawLightGlow(g, view, l);
         }
+        g.setClip(clip);
         for (int i = 0; i < arena.lights().size(); i++) {
             Light l = arena.lights().get(i);
             g.setColor(LAMP);

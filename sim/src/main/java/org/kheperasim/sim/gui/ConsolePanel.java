@@ -22,6 +22,8 @@ import org.kheperasim.sim.host.ConsoleSink;
  */
 final class ConsolePanel extends JPanel implements ConsoleSink {
     private static final int MAX_CHARS = 200_000;
+    /** The source of the window's own lines. */
+    private static final String SIMULATOR = "simulator";
     private final ConcurrentLinkedQueue<ConsoleLine> pending = new ConcurrentLinkedQueue<>();
     private final JTextPane text = new JTextPane();
     private final SimpleAttributeSet normal = new SimpleAttributeSet();
@@ -66,13 +68,20 @@ final class ConsolePanel extends JPanel implements ConsoleSink {
 
     /** @param text a note from the window itself, stamped with the run's simulated time */
     void note(String note) {
-        pending.add(new ConsoleLine(now.getAsLong(), "simulator", ConsoleLine.Kind.INFO, note));
+        pending.add(new ConsoleLine(now.getAsLong(), SIMULATOR, ConsoleLine.Kind.INFO, note));
     }
 
     /** @param text an error from the window itself (a compile error, say) */
     void error(String message) {
         errors++;
-        pending.add(new ConsoleLine(now.getAsLong(), "simulator", ConsoleLine.Kind.ERROR, message));
+        pending.add(new ConsoleLine(now.getAsLong(), SIMULATOR, ConsoleLine.Kind.ERROR, message));
+    }
+
+    private java.util.function.Consumer<ConsoleLine> controllerErrors = l -> { };
+
+    /** @param l told on the event thread of every error line a controller's run sends (not the window's own) */
+    void onControllerError(java.util.function.Consumer<ConsoleLine> l) {
+        controllerErrors = l;
     }
 
     /** @return errors shown so far */
@@ -94,6 +103,9 @@ final class ConsolePanel extends JPanel implements ConsoleSink {
                 };
                 doc.insertString(doc.getLength(), line.format() + "\n", style);
                 any = true;
+                if (line.kind() == ConsoleLine.Kind.ERROR && !SIMULATOR.equals(line.source())) {
+                    controllerErrors.accept(line);
+                }
             }
             if (doc.getLength() > MAX_CHARS) {
                 doc.remove(0, doc.getLength() - MAX_CHARS / 2);

@@ -1,6 +1,5 @@
 package org.kheperasim.sim.gui;
 
-import java.awt.Dimension;
 import java.io.File;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -48,9 +47,24 @@ final class ControllerChooser {
         offer(choices.controllerName);
         box.setSelectedItem(choices.controllerName);
         box.setName("controller");
-        box.setMaximumSize(new Dimension(160, box.getPreferredSize().height));
+        // As wide as the bundled names need and no wider: a long class name is cut short in the box
+        // (its tool tip has it whole), where it pushed the box off the toolbar.
+        box.setPrototypeDisplayValue("StepBraitenberg   ");
+        // A class in a package shows by its simple name (its full name is in the list's tool tip and the title).
+        box.setRenderer(new javax.swing.DefaultListCellRenderer() {
+            @Override
+            public java.awt.Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
+                    boolean selected, boolean focus) {
+                String full = String.valueOf(value);
+                super.getListCellRendererComponent(list, full.substring(full.lastIndexOf('.') + 1), index, selected, focus);
+                setToolTipText(full);
+                return this;
+            }
+        });
+        box.setToolTipText("the controller the next run uses: " + choices.controllerName);
         box.addActionListener(e -> {
             Object sel = box.getSelectedItem();
+            box.setToolTipText(sel == null ? null : "the controller the next run uses: " + sel);
             if (sel != null && !sel.equals(choices.controllerName)) {
                 choices.controllerName = sel.toString();
                 discardRun.run();
@@ -76,6 +90,7 @@ final class ControllerChooser {
     }
 
     void loadClasses() {
+        chooser.resetChoosableFileFilters();
         chooser.setFileSelectionMode(JFileChooser.FILES_AND_DIRECTORIES);
         chooser.setDialogTitle("A folder with your .class files, or a jar");
         if (chooser.showOpenDialog(frame) != JFileChooser.APPROVE_OPTION) {
@@ -113,6 +128,11 @@ final class ControllerChooser {
         }
         choices.classpath = new ArrayList<>(cp);
         choices.javaSource = source;
+        if (source == null) {
+            choices.sourceClass = null;
+            choices.compiledText = null;
+            choices.failedText = null;
+        }
         choices.controllerName = name;
         discardRun.run();
         offer(name);
@@ -122,29 +142,52 @@ final class ControllerChooser {
     }
 
     void openJava() {
+        chooser.resetChoosableFileFilters();
         chooser.setFileSelectionMode(JFileChooser.FILES_ONLY);
         chooser.setDialogTitle("A controller's .java source");
+        javax.swing.filechooser.FileNameExtensionFilter java = new javax.swing.filechooser.FileNameExtensionFilter(
+                "Java sources (.java)", "java");
+        chooser.addChoosableFileFilter(java);
+        chooser.setFileFilter(java);
         if (chooser.showOpenDialog(frame) == JFileChooser.APPROVE_OPTION) {
             compileAndUse(chooser.getSelectedFile().toPath());
         }
     }
 
-    /** @param source compile it and make it the controller @return true if it compiled */
+    /**
+     * Compile a {@code .java} and make its class the controller. When it does not compile, its class
+     * is still the chosen controller, and Start refuses to run until it compiles: never the last
+     * version that compiled, which a student would take for the file they see.
+     *
+     * @param source compile it and make it the controller
+     * @return true if it compiled
+     */
     boolean compileAndUse(Path source) {
         ControllerCompiler.Result result;
+        String text;
         try {
+            text = Files.readString(source);
             Path out = Path.of(System.getProperty("user.home"), ".khepera-sim", "classes",
                     source.getFileName().toString().replaceFirst("\\.java$", "") + "-" + Long.toHexString(System.nanoTime()));
             result = ControllerCompiler.compile(source, out);
         } catch (IOException | RuntimeException e) {
             console.error("cannot compile " + source + ": " + e.getMessage());
-            status.show("Cannot compile: " + e.getMessage(), true);
+            status.alert("Cannot compile " + source.getFileName() + ": " + e.getMessage());
             return false;
         }
         if (!result.success()) {
-            console.error("compiling " + source.getFileName() + " failed:\n" + result.report(source.toString()));
-            status.show("Compile errors in " + source.getFileName() + ": see the console (line numbers given)", true);
+            String report = result.report(source.toString());
+            console.error("compiling " + source.getFileName() + " failed:\n" + report);
             choices.javaSource = source;
+            choices.sourceClass = result.className();
+            choices.failedText = text;
+            choices.failedError = report.lines().findFirst().orElse("").replace(source.toString(), source.getFileName().toString());
+            choices.controllerName = result.className();
+            discardRun.run();
+            offer(result.className());
+            box.setSelectedItem(result.className());
+            status.alert(source.getFileName() + " does not compile: " + choices.failedError + ". Fix it, then Start (F5) or"
+                    + " Reload (F10) compiles it again; until then nothing runs");
             return false;
         }
         if (!result.problems().isEmpty()) {
@@ -152,7 +195,62 @@ final class ControllerChooser {
         }
         console.note("Compiled " + source.getFileName() + " into " + result.classes());
         use(List.of(result.classes()), result.className(), source);
+        choices.sourceClass = result.className();
+        choices.compiledText = text;
+        choices.failedText = null;
+        choices.failedError = null;
         return true;
+    }
+
+    /**
+     * Before a new run of a controller opened as a {@code .java}: a file changed since it was
+     * compiled is compiled again (the run is the file as it is now), and a file that does not
+     * compile stops the run, saying where, rather than run the last version that did.
+     *
+     * @return true when the run may start
+     */
+    boolean readyForNewRun() {
+        Path source = choices.javaSource;
+        if (source == null || !choices.controllerName.equals(choices.sourceClass)) {
+            return true;
+        }
+        String now;
+        try {
+            now = Files.readString(source);
+        } catch (IOException e) {
+            if (choices.failedText == null && choices.compiledText != null) {
+                console.note("cannot read " + source + " (" + e.getMessage() + "); running the version compiled before");
+                return true;
+            }
+            status.alert("Cannot read " + source + ": " + e.getMessage());
+            return false;
+        }
+        if (now.equals(choices.compiledText) && choices.failedText == null) {
+            return true;
+        }
+        if (now.equals(choices.failedText)) {
+            console.error(source.getFileName() + " still does not compile (" + choices.failedError + "); nothing runs until it"
+                    + " does: the last version that compiled is not your file as it is now");
+            status.alert(source.getFileName() + " does not compile: " + choices.failedError + ". Fix it, then Start (F5);"
+                    + " until then nothing runs");
+            return false;
+        }
+        console.note(source.getFileName() + " changed since it was compiled: compiling it again for this run");
+        return compileAndUse(source);
+    }
+
+    /** @return a note when the running controller's {@code .java} changed since it was compiled, or null */
+    String staleNote() {
+        Path source = choices.javaSource;
+        if (source == null || choices.compiledText == null || !choices.controllerName.equals(choices.sourceClass)) {
+            return null;
+        }
+        try {
+            return Files.readString(source).equals(choices.compiledText) ? null : source.getFileName() + " changed since this run"
+                    + " started: the run goes on with the version it started with; Reset (F9) and Start (F5) run the change";
+        } catch (IOException e) {
+            return null;
+        }
     }
 
     /** Recompile the .java (if one was opened) or read the class afresh at the next Start. */

@@ -9,6 +9,12 @@ public final class GuiLauncher {
     private static final System.Logger LOG = System.getLogger(GuiLauncher.class.getName());
 
     private static volatile CompletableFuture<MainWindow> last = new CompletableFuture<>();
+    /**
+     * The JDK's preferences, where the window keeps its size and recent files, log an INFO line
+     * ("Created user preferences directory") on a first launch that means nothing to a student: only
+     * their warnings are shown. Held here, as a logger nobody holds may be collected with its level.
+     */
+    private static final java.util.logging.Logger PREFS_LOG = java.util.logging.Logger.getLogger("java.util.prefs");
 
     private GuiLauncher() {
     }
@@ -41,6 +47,7 @@ public final class GuiLauncher {
                     + ". Run headless with 'khepera-sim run --arena maze --controller WallFollower', or set DISPLAY to a running X server"
                     + " (for example start 'Xvfb :5 &' and use DISPLAY=:5)");
         }
+        PREFS_LOG.setLevel(java.util.logging.Level.WARNING);
         ControllerWindowCloser.install();
         CompletableFuture<MainWindow> shown = last.isDone() ? new CompletableFuture<>() : last;
         last = shown;

@@ -10,11 +10,23 @@ import java.util.List;
  * @param controller a bundled controller or a class on the classpath
  * @param classpath folders and jars with compiled controllers
  * @param seed the seed, or null for a new one
+ * @param javaSource a controller's {@code .java} the window compiles as it opens (as Controller > Open
+ *     .java does) and runs, or null
  */
-public record GuiOptions(String arena, String controller, List<Path> classpath, Long seed) {
+public record GuiOptions(String arena, String controller, List<Path> classpath, Long seed, Path javaSource) {
     /** Copies the list. */
     public GuiOptions {
         classpath = List.copyOf(classpath);
+    }
+
+    /**
+     * @param arena an arena file or a bundled arena's name
+     * @param controller a bundled controller or a class on the classpath
+     * @param classpath folders and jars with compiled controllers
+     * @param seed the seed, or null for a new one
+     */
+    public GuiOptions(String arena, String controller, List<Path> classpath, Long seed) {
+        this(arena, controller, classpath, seed, null);
     }
 
     /** @return maze with WallFollower, the README's first run */

@@ -1,7 +1,6 @@
 package org.kheperasim.sim.gui;
 
 import java.awt.BorderLayout;
-import java.awt.Dimension;
 import java.awt.Frame;
 import java.io.IOException;
 import java.io.InputStream;
@@ -37,16 +36,44 @@ final class HelpDialog {
         }
     }
 
-    static void show(Frame owner, String page) {
+    /**
+     * A page of the manual as the list shows it: by its title, not its file name.
+     *
+     * @param file its file name in docs/, e.g. {@code gui.md}
+     * @param title its first heading, without Markdown's code marks
+     */
+    record Page(String file, String title) {
+        @Override
+        public String toString() {
+            return title;
+        }
+    }
+
+    /** @param file a page's file name @return the page, titled by its first heading (its file name if it has none) */
+    static Page page(String file) {
+        String text = text(file);
+        String first = text == null ? "" : text.lines().filter(l -> l.startsWith("# ")).findFirst().orElse("");
+        String title = first.isEmpty() ? file : first.substring(2).replace("`", "").strip();
+        return new Page(file, title);
+    }
+
+    /** @return the dialog that shows the manual, open at {@code page} */
+    static JDialog show(Frame owner, String page) {
         JDialog d = new JDialog(owner, "Khepera simulator - help", false);
-        List<String> available = new ArrayList<>();
+        d.setName("help");
+        List<Page> available = new ArrayList<>();
         for (String p : PAGES) {
             if (text(p) != null) {
-                available.add(p);
+                available.add(page(p));
             }
         }
-        JList<String> list = new JList<>(available.toArray(new String[0]));
+        JList<Page> list = new JList<>(available.toArray(new Page[0]));
+        list.setName("help.pages");
         list.setSelectionMode(ListSelectionModel.SINGLE_SELECTION);
+        // Esc closes it, as it closes any dialog.
+        d.getRootPane().registerKeyboardAction(e -> d.dispose(), javax.swing.KeyStroke.getKeyStroke(
+                java.awt.event.KeyEvent.VK_ESCAPE, 0), javax.swing.JComponent.WHEN_IN_FOCUSED_WINDOW);
+        d.setDefaultCloseOperation(javax.swing.WindowConstants.DISPOSE_ON_CLOSE);
         JEditorPane view = new JEditorPane("text/html", "");
         view.setEditable(false);
         // A link to another page of the manual opens it here; any other goes to the browser.
@@ -56,8 +83,9 @@ final class HelpDialog {
             }
             String href = String.valueOf(e.getDescription());
             String target = href.contains("#") ? href.substring(0, href.indexOf('#')) : href;
-            if (available.contains(target)) {
-                list.setSelectedValue(target, true);
+            Page linked = available.stream().filter(p -> p.file().equals(target)).findFirst().orElse(null);
+            if (linked != null) {
+                list.setSelectedValue(linked, true);
             } else if (e.getURL() != null && java.awt.Desktop.isDesktopSupported()) {
                 try {
                     java.awt.Desktop.getDesktop().browse(e.getURL().toURI());
@@ -67,22 +95,22 @@ final class HelpDialog {
             }
         });
         list.addListSelectionListener(e -> {
-            String sel = list.getSelectedValue();
+            Page sel = list.getSelectedValue();
             if (sel != null) {
-                view.setText(Markdown.toHtml(text(sel)));
+                view.setText(Markdown.toHtml(text(sel.file())));
                 view.setCaretPosition(0);
             }
         });
         JSplitPane split = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, new JScrollPane(list), new JScrollPane(view));
-        split.setDividerLocation(170);
+        split.setDividerLocation(260);
         d.getContentPane().add(split, BorderLayout.CENTER);
-        d.setSize(new Dimension(900, 700));
-        d.setLocationRelativeTo(owner);
+        d.setBounds(WindowSize.fit(900, 700));
         if (available.isEmpty()) {
             view.setText("<html>The manual is not inside this build; read docs/ in the repository.</html>");
         } else {
-            list.setSelectedValue(available.contains(page) ? page : available.get(0), true);
+            list.setSelectedValue(available.stream().filter(p -> p.file().equals(page)).findFirst().orElse(available.get(0)), true);
         }
         d.setVisible(true);
+        return d;
     }
 }

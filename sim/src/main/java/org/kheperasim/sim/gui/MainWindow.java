@@ -63,7 +63,9 @@ public final class MainWindow {
         if (choices.arenaFile != null && Files.isRegularFile(SettingsFile.besideArena(choices.arenaFile))) {
             choices.settings = SettingsFile.load(SettingsFile.besideArena(choices.arenaFile));
         }
-        choices.controllerName = options.controller();
+        // A .java to compile is named by its class from the start (the compile below confirms it).
+        choices.controllerName = options.javaSource() != null
+                ? options.javaSource().getFileName().toString().replaceFirst("\\.java$", "") : options.controller();
         choices.classpath.addAll(options.classpath());
         choices.seed = options.seed();
         model = new EditorModel(arena);
@@ -76,6 +78,7 @@ public final class MainWindow {
         arenaView.setEditable(() -> !player.open());
         sensorPanel = new SensorPanel(feed::selected, feed::state);
         controllers = new ControllerChooser(frame, console, status, choices, robotControllers, robotSelection, runs::discard);
+        runs.checks(controllers::readyForNewRun, controllers::staleNote);
         files = new ArenaFileActions(frame, model, console, status, choices, prefs, () -> {
             runs.discard();
             arenaView.fit();
@@ -97,7 +100,7 @@ public final class MainWindow {
         wireModel();
         frame.setJMenuBar(menus.menuBar(files.recentMenu(), model, menus.viewMenu(arenaView), menus.trustToggle(choices, console)));
         frame.setContentPane(WindowLayout.content(frame, menus.toolbar(controllers.box()), arenaView, replayBar.component(),
-                sensorPanel, plot, console, status.component()));
+                sensorPanel, plot, console, status.component(), () -> model.arena().width() / model.arena().height()));
         frame.setDefaultCloseOperation(JFrame.DO_NOTHING_ON_CLOSE);
         frame.addWindowListener(new WindowAdapter() {
             @Override
@@ -113,6 +116,10 @@ public final class MainWindow {
                 + ". Press Start (F5). Draw with the palette; File > Open recording replays a run; Help > Quick start"
                 + " gets your own controller running in 15 minutes.");
         painter = new FramePainter(feed, player, replayBar, plot, sensorPanel, arenaView, console, status, runs, choices);
+        if (options.javaSource() != null) {
+            controllers.compileAndUse(options.javaSource());
+            actions.refresh();
+        }
     }
 
     /** Another arena was opened: its robots are not the last arena's, so none keeps a controller of its own. */
@@ -138,6 +145,8 @@ public final class MainWindow {
         model.onChange(arenaView::repaint);
         model.onChange(actions::refresh);
         model.onRefusal(m -> {
+            // The whole reason in the console too: the status bar may be too narrow for it.
+            console.error("refused: " + m);
             status.show("Refused: " + m, true);
             arenaView.repaint();
             Toolkit.getDefaultToolkit().beep();
@@ -148,6 +157,7 @@ public final class MainWindow {
         });
         model.setRun(() -> runs.active() ? runs.runner().session().arena() : null, runs::liveRobots);
         status.onExpire(gestures::clearRefusal);
+        console.onControllerError(runs::controllerError);
     }
 
     private String title() {
@@ -182,6 +192,10 @@ public final class MainWindow {
     }
 
     private void close(ArenaFileActions files) {
+        if (recordings.hidesUnsavedEdits()) {
+            // The arena under the replay is what would be lost: show it, then ask.
+            recordings.closeReplay();
+        }
         if (!files.mayLeaveEdits("closing")) {
             return;
         }
@@ -269,6 +283,16 @@ public final class MainWindow {
         boolean ok = recordings.openRecording(path);
         actions.refresh();
         return ok;
+    }
+
+    /** @return the status bar (tests) */
+    StatusBar status() {
+        return status;
+    }
+
+    /** @return the live run's score now, or null without a run or without tasks (tests) */
+    org.kheperasim.sim.task.Score score() {
+        return runs.scoreNow();
     }
 
     /** @return the plot (tests) */

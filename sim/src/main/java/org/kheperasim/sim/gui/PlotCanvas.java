@@ -71,7 +71,11 @@ final class PlotCanvas extends JComponent {
         Plot p = plot;
         if (p == null) {
             g.setColor(Color.GRAY);
-            g.drawString("no run yet: Start one, or open a recording", LEFT, h / 2);
+            String none = "no run yet: Start one, or open a recording";
+            if (g.getFontMetrics().stringWidth(none) > w - 8) {
+                none = "no run yet";
+            }
+            g.drawString(none, StrictMath.max(4, (w - g.getFontMetrics().stringWidth(none)) / 2), h / 2);
             return;
         }
         double lo = 0;
@@ -95,39 +99,56 @@ final class PlotCanvas extends JComponent {
         }
         double from = p.from();
         double to = StrictMath.max(p.to(), from + 1e-3);
-        int pw = w - LEFT - RIGHT;
         int ph = h - TOP - BOTTOM;
         FontMetrics fm = g.getFontMetrics();
         double ySpan = hi - lo;
         double yStep = niceStep(ySpan / StrictMath.max(2, ph / 28));
+        // The value axis' labels decide the left margin (encoder counts run to seven digits and a sign).
+        int left = LEFT;
+        for (double v = StrictMath.ceil(lo / yStep) * yStep; v <= hi + 1e-9; v += yStep) {
+            left = StrictMath.max(left, fm.stringWidth(label(v, yStep)) + 8);
+        }
+        int pw = w - left - RIGHT;
         for (double v = StrictMath.ceil(lo / yStep) * yStep; v <= hi + 1e-9; v += yStep) {
             double y = TOP + ph - (v - lo) / ySpan * ph;
             g.setColor(new Color(0xE4E4E4));
-            g.draw(new Line2D.Double(LEFT, y, LEFT + pw, y));
+            g.draw(new Line2D.Double(left, y, left + pw, y));
             g.setColor(Color.DARK_GRAY);
             String s = label(v, yStep);
-            g.drawString(s, LEFT - 4 - fm.stringWidth(s), (float) (y + fm.getAscent() / 2.0 - 1));
+            g.drawString(s, left - 4 - fm.stringWidth(s), (float) (y + fm.getAscent() / 2.0 - 1));
         }
+        // Time labels as wide as the span's digits need, spaced so that none overlaps the next.
         double xStep = niceStep((to - from) / StrictMath.max(2, pw / 70));
+        int widest = StrictMath.max(fm.stringWidth(label(from, xStep)), fm.stringWidth(label(to, xStep)));
+        if (widest + 12 > pw * xStep / (to - from)) {
+            xStep = niceStep((to - from) * (widest + 12) / StrictMath.max(1, pw));
+        }
         for (double t = StrictMath.ceil(from / xStep) * xStep; t <= to + 1e-9; t += xStep) {
-            double x = LEFT + (t - from) / (to - from) * pw;
+            double x = left + (t - from) / (to - from) * pw;
             g.setColor(new Color(0xE4E4E4));
             g.draw(new Line2D.Double(x, TOP, x, TOP + ph));
             g.setColor(Color.DARK_GRAY);
             String s = label(t, xStep);
-            g.drawString(s, (float) (x - fm.stringWidth(s) / 2.0), TOP + ph + fm.getAscent() + 2);
+            // Kept inside the canvas: the last tick often falls on its right edge (a run shorter than the span).
+            double lx = StrictMath.max(2, StrictMath.min(w - 4 - fm.stringWidth(s), x - fm.stringWidth(s) / 2.0));
+            g.drawString(s, (float) lx, TOP + ph + fm.getAscent() + 2);
         }
         g.setColor(Color.GRAY);
-        g.draw(new Rectangle2D.Double(LEFT, TOP, pw, ph));
-        g.drawString("t, s", LEFT + pw - fm.stringWidth("t, s"), h - 2);
-        g.drawString(p.unit(), LEFT + 2, h - 2);
+        g.draw(new Rectangle2D.Double(left, TOP, pw, ph));
+        g.drawString("t, s", left + pw - fm.stringWidth("t, s"), h - 2);
+        // The axis' title, shortened (its note in brackets dropped) where it would run into "t, s".
+        String unit = p.unit();
+        if (fm.stringWidth(unit) > pw - fm.stringWidth("t, s") - 10 && unit.contains(" (")) {
+            unit = unit.substring(0, unit.indexOf(" ("));
+        }
+        g.drawString(unit, left + 2, h - 2);
         double[] ts = p.data()[0];
         for (int c = 1; c < p.data().length; c++) {
             g.setColor(COLOURS[p.colours()[c - 1] % COLOURS.length]);
             g.setStroke(new BasicStroke(1.3f));
             Path2D.Double path = new Path2D.Double();
             for (int k = 0; k < ts.length; k++) {
-                double x = LEFT + (ts[k] - from) / (to - from) * pw;
+                double x = left + (ts[k] - from) / (to - from) * pw;
                 double y = TOP + ph - (StrictMath.max(lo, StrictMath.min(hi, p.data()[c][k])) - lo) / ySpan * ph;
                 if (k == 0) {
                     path.moveTo(x, y);
@@ -138,14 +159,14 @@ final class PlotCanvas extends JComponent {
             g.draw(path);
         }
         if (!Double.isNaN(p.cursor()) && p.cursor() >= from && p.cursor() <= to) {
-            double x = LEFT + (p.cursor() - from) / (to - from) * pw;
+            double x = left + (p.cursor() - from) / (to - from) * pw;
             g.setColor(new Color(0x555555));
             g.setStroke(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {3f, 3f}, 0f));
             g.draw(new Line2D.Double(x, TOP, x, TOP + ph));
         }
         if (ts.length == 0) {
             g.setColor(Color.GRAY);
-            g.drawString("no samples in this span yet", LEFT + 6, TOP + 14);
+            g.drawString("no samples in this span yet", left + 6, TOP + 14);
         }
     }
 

@@ -2,7 +2,6 @@ package org.kheperasim.sim.gui;
 
 import java.awt.BorderLayout;
 import java.awt.Dimension;
-import java.awt.FlowLayout;
 import java.awt.Graphics2D;
 import java.awt.GridLayout;
 import java.awt.Insets;
@@ -76,7 +75,8 @@ final class PlotPanel extends JPanel {
         quantity.addActionListener(e -> relabel());
         span.addActionListener(e -> refresh());
         JPanel top = new JPanel(new BorderLayout());
-        JPanel row = new JPanel(new FlowLayout(FlowLayout.LEFT, 2, 0));
+        // Wraps onto a second row when the plot is narrow (side by side with the sensor panel on a short window).
+        JPanel row = new JPanel(new WrapLayout());
         row.add(quantity);
         row.add(span);
         JButton csv = new JButton("CSV…");
@@ -106,6 +106,12 @@ final class PlotPanel extends JPanel {
         }
         top.add(buttons, BorderLayout.SOUTH);
         canvas.setPreferredSize(new Dimension(320, 170));
+        addComponentListener(new java.awt.event.ComponentAdapter() {
+            @Override
+            public void componentResized(java.awt.event.ComponentEvent e) {
+                row.revalidate();
+            }
+        });
         add(top, BorderLayout.NORTH);
         add(canvas, BorderLayout.CENTER);
         relabel();

@@ -9,7 +9,6 @@ import java.util.Locale;
 import javax.swing.JFileChooser;
 import javax.swing.JFrame;
 import javax.swing.JOptionPane;
-import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.edit.EditorModel;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.files.AtomicFiles;
@@ -35,7 +34,7 @@ final class RecordingActions {
     private final ReplayPlayer player;
     private final ViewFeed feed;
     private final Runnable fit;
-    private Arena arenaBefore;
+    private EditorModel.Kept arenaBefore;
     private Path fileBefore;
 
     RecordingActions(JFrame frame, EditorModel model, ConsolePanel console, StatusBar status, RunChoices choices,
@@ -89,11 +88,15 @@ final class RecordingActions {
         }
     }
 
-    /** @param path a recording folder, trace or robot-link recording @return true when it opened */
+    /**
+     * Opens a recording. Nothing of the arena being edited is lost, so nothing is asked: it is kept
+     * aside, unsaved changes, undo steps and all, and Close replay brings it back as it was (a
+     * Discard asked for here once brought the edits back unmarked, and the next Ctrl+Q lost them).
+     *
+     * @param path a recording folder, trace or robot-link recording
+     * @return true when it opened
+     */
     boolean openRecording(Path path) {
-        if (!files.mayLeaveEdits("replaying " + path.getFileName())) {
-            return false;
-        }
         long t0 = System.nanoTime();
         Replay replay;
         try {
@@ -107,7 +110,7 @@ final class RecordingActions {
         serve.stop();
         runs.discard();
         if (!player.open()) {
-            arenaBefore = model.arena();
+            arenaBefore = model.keep();
             fileBefore = choices.arenaFile;
         }
         player.load(replay);
@@ -120,6 +123,11 @@ final class RecordingActions {
         return true;
     }
 
+    /** @return true while a replay hides an arena with unsaved changes */
+    boolean hidesUnsavedEdits() {
+        return player.open() && arenaBefore != null && arenaBefore.dirty();
+    }
+
     /** Leave the replay: the arena shown before comes back. */
     void closeReplay() {
         if (!player.open()) {
@@ -128,10 +136,12 @@ final class RecordingActions {
         player.unload();
         feed.back(player);
         if (arenaBefore != null) {
-            model.load(arenaBefore);
+            model.restore(arenaBefore);
             choices.arenaFile = fileBefore;
+            arenaBefore = null;
         }
-        console.note("Replay closed.");
+        console.note("Replay closed." + (model.dirty() ? " The arena " + model.arena().name() + " is back as it was, with"
+                + " its unsaved changes." : ""));
         fit.run();
     }
 }

@@ -19,6 +19,14 @@ final class RunChoices {
     List<Path> classpath = new ArrayList<>();
     /** The .java the controller was compiled from, or null. */
     Path javaSource;
+    /** The class {@link #javaSource} defines (with its package), or null. */
+    String sourceClass;
+    /** The text of {@link #javaSource} the loaded classes were compiled from, or null when none compiled. */
+    String compiledText;
+    /** The text of {@link #javaSource} whose compilation failed last, or null when the last one compiled. */
+    String failedText;
+    /** The compiler's first error for {@link #failedText}, e.g. {@code MyFirst.java:16:28: error: ';' expected}. */
+    String failedError;
     /** Run the controller uncontained (Controller > Trust this controller); off by default. */
     boolean trusted;
     /** Simulated seconds per real second. */

@@ -20,8 +20,7 @@ final class SensorPanel extends JComponent {
         this.robot = robot;
         this.runState = runState;
         setName("sensorPanel");
-        setPreferredSize(new Dimension(330, SensorRenderer.preferredHeight()));
-        setMinimumSize(new Dimension(300, SensorRenderer.preferredHeight()));
+        setPreferredSize(new Dimension(SensorRenderer.BASE_WIDTH, SensorRenderer.BASE_HEIGHT));
     }
 
     @Override

@@ -30,13 +30,27 @@ public final class SensorRenderer {
     public static final Color LIGHT = new Color(0xE0A800);
     /** Height of the drawing for a given width, px. */
     static final int ROBOT_AREA = 260;
+    /** The drawing's size at scale 1, px: it is scaled as a whole to the panel, text included. */
+    static final int BASE_WIDTH = 330;
+    static final int BASE_HEIGHT = ROBOT_AREA + 150;
+    /** Largest scale: beyond it the drawing only gets emptier. */
+    static final double MAX_SCALE = 2.4;
 
     private SensorRenderer() {
     }
 
-    /** @return the height the panel wants for a width, px */
+    /** @return the height the panel wants at scale 1, px */
     public static int preferredHeight() {
-        return ROBOT_AREA + 150;
+        return BASE_HEIGHT;
+    }
+
+    /**
+     * @param w the panel's width, px
+     * @param h its height, px
+     * @return the scale the drawing takes there: as large as fits, up to {@link #MAX_SCALE}
+     */
+    static double scale(int w, int h) {
+        return StrictMath.max(0.1, StrictMath.min(MAX_SCALE, StrictMath.min(w / (double) BASE_WIDTH, h / (double) BASE_HEIGHT)));
     }
 
     /**
@@ -58,8 +72,17 @@ public final class SensorRenderer {
     public static void draw(Graphics2D g, int w, int h, RobotView r, String runState) {
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+        g.setRenderingHint(RenderingHints.KEY_FRACTIONALMETRICS, RenderingHints.VALUE_FRACTIONALMETRICS_ON);
         g.setColor(new Color(0xFAFAFA));
         g.fill(new Rectangle2D.Double(0, 0, w, h));
+        // The whole drawing, text included, scales with the panel: readable on a small window, larger on a large screen.
+        double scale = scale(w, h);
+        g.translate((w - BASE_WIDTH * scale) / 2, 0);
+        g.scale(scale, scale);
+        drawAtBase(g, BASE_WIDTH, r, runState);
+    }
+
+    private static void drawAtBase(Graphics2D g, int w, RobotView r, String runState) {
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
         double cx = w / 2.0;
         double cy = ROBOT_AREA / 2.0 + 12;

@@ -120,7 +120,7 @@ final class WindowCommands {
         actions.enable("start", !running && !serving && editing);
         actions.enable("pause", running);
         actions.enable("step", !running && !serving && editing && s != PacedRunner.State.FINISHED
-                && s != PacedRunner.State.STOPPED);
+                && s != PacedRunner.State.STOPPED && s != PacedRunner.State.TIME_UP);
         actions.enable("stop", live);
         actions.enable("reset", s != null);
         actions.enable("saveRecording", s != null);
@@ -153,14 +153,14 @@ final class WindowCommands {
             }
         };
         // F5..F10 and Space work wherever the focus is (split panes take F6/F8, the menu bar F10).
-        WindowKeys keys = WindowKeys.install(frame, Map.of(KeyEvent.VK_F5, actions.get("start"), KeyEvent.VK_F6,
-                actions.get("pause"), KeyEvent.VK_F7, actions.get("step"), KeyEvent.VK_F8, actions.get("stop"),
-                KeyEvent.VK_F9, actions.get("reset"), KeyEvent.VK_F10, actions.get("reload")), startPause);
+        // The palette's letters too: the console (a text pane) would take them otherwise.
+        Map<Integer, Action> letters = new java.util.HashMap<>();
         for (Tool t : Tool.values()) {
-            bind(root, KeyStroke.getKeyStroke(t.key().charAt(0)), "tool." + t.name());
-            bind(root, KeyStroke.getKeyStroke(Character.toLowerCase(t.key().charAt(0))), "tool." + t.name());
+            letters.put(KeyEvent.getExtendedKeyCodeForChar(t.key().charAt(0)), actions.get("tool." + t.name()));
         }
-        return keys;
+        return WindowKeys.install(frame, Map.of(KeyEvent.VK_F5, actions.get("start"), KeyEvent.VK_F6,
+                actions.get("pause"), KeyEvent.VK_F7, actions.get("step"), KeyEvent.VK_F8, actions.get("stop"),
+                KeyEvent.VK_F9, actions.get("reset"), KeyEvent.VK_F10, actions.get("reload")), startPause, letters);
     }
 
     private void bind(JComponent c, KeyStroke k, String key) {

@@ -14,29 +14,34 @@ import javax.swing.text.JTextComponent;
 
 /**
  * The run keys of the window (F5 Start, F6 Pause, F7 Step, F8 Stop, F9 Reset, F10 Reload, Space
- * Start/Pause), wherever the focus is in it. Swing's own components take some of these keys first
- * (a split pane F6 and F8, the menu bar F10, a focused component Space), so they are dispatched here,
- * before any component sees them. Space is left to a text field being typed in and to a combo box.
+ * Start/Pause) and the palette's letters (S, W, L, C, R), wherever the focus is in it. Swing's own
+ * components take some of these keys first (a split pane F6 and F8, the menu bar F10, a focused
+ * component Space, a text pane, even one that cannot be edited, every letter), so they are
+ * dispatched here, before any component sees them. Space and the letters are left to a text field
+ * being typed in and to a combo box.
  */
 final class WindowKeys implements KeyEventDispatcher {
     private final Window window;
     private final Map<Integer, Action> keys;
     private final Action startPause;
+    private final Map<Integer, Action> letters;
 
-    private WindowKeys(Window window, Map<Integer, Action> keys, Action startPause) {
+    private WindowKeys(Window window, Map<Integer, Action> keys, Action startPause, Map<Integer, Action> letters) {
         this.window = window;
         this.keys = keys;
         this.startPause = startPause;
+        this.letters = letters;
     }
 
     /**
      * @param window the window whose keys these are
      * @param keys function keys (a {@link KeyEvent} VK code, no modifier) and their actions
      * @param startPause what Space does
+     * @param letters letter keys (a VK code, pressed with or without Shift) and their actions
      * @return the dispatcher, to {@link #uninstall()} when the window closes
      */
-    static WindowKeys install(Window window, Map<Integer, Action> keys, Action startPause) {
-        WindowKeys k = new WindowKeys(window, keys, startPause);
+    static WindowKeys install(Window window, Map<Integer, Action> keys, Action startPause, Map<Integer, Action> letters) {
+        WindowKeys k = new WindowKeys(window, keys, startPause, letters);
         KeyboardFocusManager.getCurrentKeyboardFocusManager().addKeyEventDispatcher(k);
         return k;
     }
@@ -47,7 +52,13 @@ final class WindowKeys implements KeyEventDispatcher {
 
     @Override
     public boolean dispatchKeyEvent(KeyEvent e) {
-        if (e.getModifiersEx() != 0 || !inWindow(e.getComponent())) {
+        if (!inWindow(e.getComponent())) {
+            return false;
+        }
+        if (letter(e)) {
+            return true;
+        }
+        if (e.getModifiersEx() != 0) {
             return false;
         }
         Action a = keys.get(e.getKeyCode());
@@ -61,6 +72,24 @@ final class WindowKeys implements KeyEventDispatcher {
             a.actionPerformed(new ActionEvent(e.getComponent(), ActionEvent.ACTION_PERFORMED, null));
         }
         // The release (and for Space the typed character) of a key handled here goes no farther either.
+        e.consume();
+        return true;
+    }
+
+    /** A palette letter, with or without Shift, where nothing is typed: chooses its tool. @return true when handled */
+    private boolean letter(KeyEvent e) {
+        int mods = e.getModifiersEx() & ~KeyEvent.SHIFT_DOWN_MASK;
+        if (mods != 0 || typing(e.getComponent())) {
+            return false;
+        }
+        Action a = e.getID() == KeyEvent.KEY_TYPED ? letters.get(KeyEvent.getExtendedKeyCodeForChar(Character.toUpperCase(e.getKeyChar())))
+                : letters.get(e.getKeyCode());
+        if (a == null) {
+            return false;
+        }
+        if (e.getID() == KeyEvent.KEY_PRESSED && a.isEnabled()) {
+            a.actionPerformed(new ActionEvent(e.getComponent(), ActionEvent.ACTION_PERFORMED, null));
+        }
         e.consume();
         return true;
     }

@@ -1,6 +1,5 @@
 package org.kheperasim.sim.gui;
 
-import java.awt.Dimension;
 import java.awt.event.KeyEvent;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -24,6 +23,9 @@ final class WindowMenus {
     /** Speeds offered, simulated seconds per real second; the last is as fast as possible. */
     static final double[] SPEEDS = {0.25, 0.5, 1, 2, 4, PacedRunner.MAX_SPEED};
 
+    /** Room between the toolbar's groups, px: narrow, so that the toolbar fits one row on a 1180 px window. */
+    private static final java.awt.Dimension SEPARATOR = new java.awt.Dimension(9, 20);
+
     private final WindowActions actions;
     private final JComboBox<String> speedBox = new JComboBox<>();
     private final Map<Tool, JToggleButton> toolButtons = new LinkedHashMap<>();
@@ -32,11 +34,13 @@ final class WindowMenus {
     WindowMenus(WindowActions actions, DoubleConsumer setSpeed) {
         this.actions = actions;
         for (double s : SPEEDS) {
-            speedBox.addItem(speedLabel(s));
+            // The toolbar's box is kept narrow ("fastest"); the Run > Speed menu says it in full.
+            speedBox.addItem(s == PacedRunner.MAX_SPEED ? "fastest" : speedLabel(s));
         }
+        speedBox.setToolTipText("simulated seconds per real second; fastest = as fast as possible. The speed never changes"
+                + " what the run computes");
         speedBox.setSelectedIndex(2);
         speedBox.setName("speed");
-        speedBox.setMaximumSize(new Dimension(150, speedBox.getPreferredSize().height));
         speedBox.setFocusable(false);
         speedBox.addActionListener(e -> setSpeed.accept(SPEEDS[speedBox.getSelectedIndex()]));
     }
@@ -145,6 +149,8 @@ final class WindowMenus {
     JToolBar toolbar(JComboBox<String> controllers) {
         JToolBar bar = new JToolBar();
         bar.setFloatable(false);
+        // Wraps onto a second row on a narrow window: the controller box at its end stays on screen.
+        bar.setLayout(new WrapLayout());
         ButtonGroup group = new ButtonGroup();
         for (Tool t : Tool.values()) {
             JToggleButton b = new JToggleButton(actions.get("tool." + t.name()));
@@ -154,19 +160,19 @@ final class WindowMenus {
             toolButtons.put(t, b);
             bar.add(b);
         }
-        bar.addSeparator();
+        bar.addSeparator(SEPARATOR);
         for (String k : new String[] {"undo", "redo", "delete"}) {
             bar.add(button(k));
         }
-        bar.addSeparator();
+        bar.addSeparator(SEPARATOR);
         for (String k : new String[] {"start", "pause", "step", "stop", "reset"}) {
             bar.add(button(k));
         }
-        bar.addSeparator();
-        bar.add(new JLabel(" Speed "));
+        bar.addSeparator(SEPARATOR);
+        bar.add(new JLabel("Speed "));
         bar.add(speedBox);
-        bar.addSeparator();
-        bar.add(new JLabel(" Controller "));
+        bar.addSeparator(SEPARATOR);
+        bar.add(new JLabel("Controller "));
         bar.add(controllers);
         return bar;
     }

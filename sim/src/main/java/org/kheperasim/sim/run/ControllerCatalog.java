@@ -35,6 +35,12 @@ public final class ControllerCatalog {
      */
     public ControllerCatalog(List<Path> classpath, boolean trusted) {
         ControllerNames.checkClasspath(classpath);
+        for (Path p : classpath) {
+            String bad = ControllerHints.badEntry(p);
+            if (bad != null) {
+                throw new ControllerException(bad);
+            }
+        }
         this.classpath = List.copyOf(classpath);
         this.trusted = trusted;
     }
@@ -55,9 +61,29 @@ public final class ControllerCatalog {
     public Class<?> load(String name) {
         ControllerClassLoader loader = new ControllerClassLoader(classpath, ControllerCatalog.class.getClassLoader(), !trusted);
         try {
+            if (!anyLoads(name, loader)) {
+                // A wrong name: say what was most likely meant and what to type, or else where it was looked for.
+                String hint = ControllerHints.hint(name, bundledNames, classpath);
+                throw hint != null ? new ControllerException("no controller named '" + name + "': " + hint)
+                        : ControllerNames.notFound(name, bundledNames, classpath, "khepera-sim.jar");
+            }
             return ControllerNames.resolve(name, loader, bundledNames, classpath, "khepera-sim.jar");
         } catch (ControllerPolicyError e) {
             throw new ControllerException("controller " + name + " was refused: " + e.getMessage(), e);
         }
+    }
+
+    /** @return true when some class the name may mean can be found (loaded, not initialised) */
+    private static boolean anyLoads(String name, ClassLoader loader) {
+        for (String candidate : ControllerNames.candidates(name)) {
+            try {
+                Class.forName(candidate, false, loader);
+                return true;
+            } catch (ClassNotFoundException | NoClassDefFoundError | IllegalArgumentException e) {
+                // Not this one; ControllerNames.resolve tries the same candidates and names them all.
+                continue;
+            }
+        }
+        return false;
     }
 }

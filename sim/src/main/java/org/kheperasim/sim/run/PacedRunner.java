@@ -36,8 +36,27 @@ public final class PacedRunner implements AutoCloseable {
         PAUSED,
         /** Every controller has ended. */
         FINISHED,
+        /**
+         * The run reached the end set by {@link #endAt} (the arena's time limit): the controllers were
+         * stopped and the trace finished there, as at the end of a headless run of that length.
+         */
+        TIME_UP,
         /** Stopped by the user, or failed. */
         STOPPED
+    }
+
+    /**
+     * Told on the session's thread after a snapshot is published: after every chunk, and once more
+     * whenever the run stops running (paused, stepped, ended). Keep it short; it may read the
+     * session's engine, which stands still while it is called.
+     */
+    @FunctionalInterface
+    public interface PublishListener {
+        /**
+         * @param session the run
+         * @param settled true when the run will not go on by itself (paused, ended): what it shows now stays
+         */
+        void published(RunSession session, boolean settled);
     }
 
     /** The speed factor meaning "as fast as possible". */
@@ -66,11 +85,14 @@ public final class PacedRunner implements AutoCloseable {
     private final Thread thread;
     private final CountDownLatch done = new CountDownLatch(1);
     private final List<Consumer<State>> stateListeners = new ArrayList<>();
+    private final List<PublishListener> publishListeners = new java.util.concurrent.CopyOnWriteArrayList<>();
     private volatile State state = State.READY;
     private volatile double speed = 1;
     private volatile double realTimeFactor;
     private volatile Throwable failure;
     private volatile long endNanos = Long.MAX_VALUE;
+    /** Where the run ends for good ({@link #endAt}), simulated ns. */
+    private long limitNanos = Long.MAX_VALUE;
     private boolean stopRequested;
     private long anchorWall;
     private long anchorSim;
@@ -110,6 +132,22 @@ public final class PacedRunner implements AutoCloseable {
         commands.add(() -> this.endNanos = endNanos);
     }
 
+    /**
+     * End the run at this simulated time, as a headless run of that length ends: the controllers are
+     * stopped there, the trace finished, and the state becomes {@link State#TIME_UP}. The window
+     * sets the arena's time limit, so its run and {@code run}'s end and score at the same moment.
+     *
+     * @param endNanos simulated time, ns
+     */
+    public void endAt(long endNanos) {
+        commands.add(() -> limitNanos = endNanos);
+    }
+
+    /** @param l told after every published snapshot, on the session's thread */
+    public void addPublishListener(PublishListener l) {
+        publishListeners.add(l);
+    }
+
     /** Start, or resume after a pause. */
     public void start() {
         commands.add(() -> {
@@ -134,7 +172,7 @@ public final class PacedRunner implements AutoCloseable {
         commands.add(() -> {
             if (state == State.READY || state == State.PAUSED || state == State.RUNNING) {
                 setState(State.PAUSED);
-                chunk(session.timeNanos() + STEP_NANOS);
+                chunk(StrictMath.min(session.timeNanos() + STEP_NANOS, limitNanos));
             }
         });
     }
@@ -232,7 +270,7 @@ public final class PacedRunner implements AutoCloseable {
 
     private void loop() {
         try {
-            while (!stopRequested) {
+            while (!stopRequested && session.timeNanos() < limitNanos) {
                 Runnable c = state == State.RUNNING ? commands.poll() : commands.poll(50, TimeUnit.MILLISECONDS);
                 if (c != null) {
                     c.run();
@@ -243,12 +281,16 @@ public final class PacedRunner implements AutoCloseable {
                 }
                 long chunk = speed == MAX_SPEED ? fullSpeedChunk()
                         : StrictMath.max(Engine.TICK_NANOS, (long) (CHUNK_WALL_NANOS * speed) / Engine.TICK_NANOS * Engine.TICK_NANOS);
-                long target = StrictMath.min(session.timeNanos() + chunk, StrictMath.max(endNanos, session.timeNanos()));
+                long target = StrictMath.min(StrictMath.min(session.timeNanos() + chunk, limitNanos),
+                        StrictMath.max(endNanos, session.timeNanos()));
                 if (target <= session.timeNanos()) {
                     setState(State.PAUSED);
                     continue;
                 }
                 chunk(target);
+                if (session.timeNanos() >= limitNanos) {
+                    break;
+                }
                 pace();
             }
         } catch (InterruptedException e) {
@@ -264,8 +306,12 @@ public final class PacedRunner implements AutoCloseable {
                 }
             }
             latest.set(session.snapshot());
-            if (state != State.FINISHED) {
+            if (state != State.FINISHED && !stopRequested && failure == null && session.timeNanos() >= limitNanos) {
+                setState(State.TIME_UP);
+            } else if (state != State.FINISHED) {
                 setState(State.STOPPED);
+            } else {
+                published(true);
             }
             done.countDown();
         }
@@ -288,6 +334,14 @@ public final class PacedRunner implements AutoCloseable {
         if (!more && !stopAsked) {
             // Ended by itself; after a Stop (which may have ended a looping controller) it is stopped.
             setState(State.FINISHED);
+        } else {
+            published(state != State.RUNNING);
+        }
+    }
+
+    private void published(boolean settled) {
+        for (PublishListener l : publishListeners) {
+            l.published(session, settled);
         }
     }
 
@@ -332,6 +386,9 @@ public final class PacedRunner implements AutoCloseable {
 
     private void setState(State s) {
         state = s;
+        if (s != State.RUNNING) {
+            published(true);
+        }
         for (Consumer<State> l : stateListeners) {
             l.accept(s);
         }

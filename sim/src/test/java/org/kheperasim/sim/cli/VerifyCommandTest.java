@@ -97,6 +97,44 @@ class VerifyCommandTest {
         return rec;
     }
 
+    /**
+     * A window recording of a {@code .java} the window compiled: its classes lie in a folder of the
+     * window's own, which replay.txt names and which an instructor's machine has not. verify finds
+     * them in the recording without --classpath, and again once that folder is gone.
+     */
+    @Test
+    void aRecordingOfAControllerCompiledInTheWindowVerifiesWithoutAClasspath() throws Exception {
+        Path src = Files.createDirectories(dir.resolve("src")).resolve("Spinner.java");
+        Files.writeString(src, "import org.kheperasim.api.*;\n\npublic class Spinner extends Controller {\n"
+                + "    @Override\n    protected void doWork() {\n        setSpeeds(3, proximity(IrSensor.FRONT_LEFT) > 300 ? -3 : 5);\n"
+                + "        sleepMillis(100);\n    }\n}\n");
+        Path classes = dir.resolve("window-classes").resolve("Spinner-1f");
+        var compiled = org.kheperasim.sim.run.ControllerCompiler.compile(src, classes);
+        assertTrue(compiled.success(), compiled.report("Spinner.java"));
+        Path rec = Files.createDirectories(dir.resolve("spinner-recording"));
+        RunSession s = new RunSession(ArenaFormat.loadBundled("lab"), "Spinner", new ControllerCatalog(List.of(classes)), 3,
+                Settings.defaults(), line -> { }, HostOptions.defaults());
+        s.trace(LineFileWriter.open(rec.resolve("run.trace")), 100);
+        s.runTo(10_000_000_000L);
+        s.close();
+        RunRecording.save(s, 10, List.of(classes), Settings.defaults(), rec);
+        assertEquals(List.of(rec.resolve("classes")), RunRecording.classpath(rec), Files.readString(rec.resolve("replay.txt")));
+
+        assertEquals(ExitCodes.OK, main("verify", rec.toString()), out + err);
+        assertTrue(out.startsWith("identical: 101 sample lines up to 10.0 s"), out);
+        // The window's folder is cleaned away: the recording's own copy still replays.
+        try (var files = Files.walk(classes.getParent())) {
+            files.sorted(java.util.Comparator.reverseOrder()).forEach(f -> f.toFile().delete());
+        }
+        assertEquals(ExitCodes.OK, main("verify", rec.toString()), out + err);
+        assertTrue(out.startsWith("identical: "), out);
+        // A recording whose replay.txt names a classpath that is not there says so.
+        Files.writeString(rec.resolve("replay.txt"), Files.readString(rec.resolve("replay.txt"))
+                .replace("--classpath classes", "--classpath '/no such/folder'"));
+        assertEquals(ExitCodes.BAD_INPUT, main("verify", rec.toString()));
+        assertTrue(err.contains("replay.txt names the classpath entry /no such/folder, which does not exist"), err);
+    }
+
     @Test
     void anUntouchedRecordingIsIdenticalAndAChangedSettingIsCaughtAtItsFirstSample() throws Exception {
         Path rec = record(Settings.defaults());

@@ -140,6 +140,75 @@ class ArenaRendererTest {
         assertEquals(0, count(none, new Color(0xFF3030)), "no LED before a run");
     }
 
+    /** The drawing grows with the panel, its text too: on a large screen it is not 10 px text in a corner. */
+    @Test
+    void theSensorPanelScalesWithItsSpaceTextIncluded() {
+        int[] prox = new int[8];
+        prox[2] = 1023;
+        RobotView r = new RobotView(0, "r", 1, 1, 0, 3, -3, 10, 20, Contact.NONE, prox, new int[8], 0, 0, "running",
+                new GripperView(250, false, GripperState.CLOSED, true, 120, 0), 0);
+        int[] dark = new int[2];
+        int[] red = new int[2];
+        int[][] sizes = {{330, 410}, {660, 820}};
+        for (int i = 0; i < 2; i++) {
+            BufferedImage img = new BufferedImage(sizes[i][0], sizes[i][1], BufferedImage.TYPE_INT_RGB);
+            Graphics2D g = img.createGraphics();
+            SensorRenderer.draw(g, img.getWidth(), img.getHeight(), r);
+            g.dispose();
+            red[i] = count(img, SensorRenderer.PROX);
+            dark[i] = countDark(img, 0, img.getWidth());
+        }
+        assertTrue(red[1] > 3.5 * red[0], "twice the size, four times the bar: " + red[0] + " -> " + red[1] + " px");
+        assertTrue(dark[1] > 3 * dark[0], "twice the size, text and lines four times the ink: " + dark[0] + " -> " + dark[1]);
+        assertEquals(2.0, SensorRenderer.scale(660, 820), 1e-9);
+        assertEquals(0.8, SensorRenderer.scale(400, 328), 1e-9, "a short panel scales down to its height");
+    }
+
+    @Test
+    void aLampsGlowStaysOnTheFloor() {
+        Arena a = new Arena("lit", 1000, 1000, List.of(new Pose(500, 300, 90)), List.of(),
+                List.of(new org.kheperasim.sim.arena.Light(950, 500, 6, 600, 1, 0, 360)), List.of(), List.of());
+        BufferedImage img = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        ViewTransform v = new ViewTransform();
+        v.fit(a.width(), a.height(), SIZE, SIZE, 60);
+        ArenaRenderer.draw(g, v, SIZE, SIZE, a, null, ArenaRenderer.Overlay.NONE, new ArenaRenderer.Options(false, false, false, false));
+        g.dispose();
+        assertEquals(ArenaRenderer.OUTSIDE, at(img, v, 1020, 500), "just outside the wall by the lamp: no glow");
+        assertFalse(at(img, v, 900, 500).equals(ArenaRenderer.FLOOR), "inside, near the lamp, the floor glows");
+    }
+
+    /** The time axis' last label, at the right edge when the run is shorter than the span, is drawn whole, as are long values. */
+    @Test
+    void thePlotsLabelsStayInsideItAtShortSpans() {
+        PlotCanvas c = new PlotCanvas();
+        for (double to : new double[] {0.3, 1.2, 9.7, 612.35}) {
+            double[][] data = {{0, to / 2, to}, {-1234567, 0, 2345678}};
+            c.show(new PlotCanvas.Plot(data, new String[] {"encoder L"}, new int[] {0}, 0, to, Double.NaN,
+                    "encoder, pulses (0.08 mm)", Double.NaN));
+            BufferedImage img = new BufferedImage(300, 160, BufferedImage.TYPE_INT_RGB);
+            Graphics2D g = img.createGraphics();
+            c.paintPlot(g, img.getWidth(), img.getHeight());
+            g.dispose();
+            assertEquals(0, countDark(img, img.getWidth() - 2, img.getWidth()), "nothing runs off the right edge, span to " + to);
+            assertEquals(0, countDark(img, 0, 1), "nothing runs off the left edge, span to " + to);
+        }
+    }
+
+    /** @return pixels darker than mid-grey in columns [x0, x1) */
+    private static int countDark(BufferedImage img, int x0, int x1) {
+        int n = 0;
+        for (int y = 0; y < img.getHeight(); y++) {
+            for (int x = x0; x < x1; x++) {
+                Color c = new Color(img.getRGB(x, y));
+                if (c.getRed() + c.getGreen() + c.getBlue() < 3 * 110) {
+                    n++;
+                }
+            }
+        }
+        return n;
+    }
+
     private static int count(BufferedImage img, Color c) {
         int n = 0;
         for (int y = 0; y < img.getHeight(); y++) {

@@ -15,7 +15,9 @@ import org.kheperasim.sim.run.PacedRunner;
  * Runs in a child JVM under Xvfb (see {@link FirstControllerLoopTest}): a newcomer's first loop of
  * write, compile, run, repeat. It opens MyFirst.java in the window (what Controller > Open .java
  * does after the file dialog), runs it with F5, breaks the file and presses F10 (the console names
- * the line), then changes the behaviour, presses F10 and F5, and sees the new behaviour.
+ * the line) and F5 (nothing runs: the status bar says the file does not compile), then changes the
+ * behaviour, presses F10 and F5, and sees the new behaviour; last, changes it back and presses F9 and
+ * F5 without F10: Start compiles the changed file and runs it.
  */
 public final class FirstControllerLoopDriver {
     private static Robot robot;
@@ -59,6 +61,18 @@ public final class FirstControllerLoopDriver {
         check(console.contains("MyFirst.java:" + line + ":"), "the console names line " + line + ":\n" + console);
         System.out.println("ERROR OK: the console names MyFirst.java:" + line);
 
+        // F5 now runs nothing: not the last version that compiled, which the student would take for the file they see.
+        robot.keyPress(KeyEvent.VK_F5);
+        robot.keyRelease(KeyEvent.VK_F5);
+        robot.waitForIdle();
+        Thread.sleep(1000);
+        check(w.runner() == null || w.runner().state() != PacedRunner.State.RUNNING,
+                "F5 after a failed compile must not run the version that compiled before");
+        String refused = onEdt(() -> w.status().message());
+        check(onEdt(() -> w.status().messageRed()) && refused.contains("MyFirst.java does not compile: MyFirst.java:" + line + ":"),
+                "the status bar says, in red, that MyFirst.java does not compile and where: " + refused);
+        System.out.println("STALE REFUSED OK: " + refused);
+
         // Repeat, with a change: spin on the spot instead of driving ahead.
         Files.writeString(source, original.replace("setSpeeds(5, 5);", "setSpeeds(-3, 3);"));
         press(KeyEvent.VK_F10, "F10 recompiles the fix", () -> onEdtQuiet(w::consoleText).contains("Controller MyFirst loaded"));
@@ -72,18 +86,35 @@ public final class FirstControllerLoopDriver {
         check(left < -100 && right > 100, "and turns on the spot: encoders " + left + ", " + right);
         GuiE2EDriver.shot(robot, w, target.resolve("first-2-changed.png"));
         System.out.printf("REPEAT OK: the changed MyFirst stayed within %.0f mm%n", drift);
+
+        // Change it back, Reset and Start without F10: the run is the file as it is now, compiled again.
+        Files.writeString(source, original);
+        press(KeyEvent.VK_F9, "F9 resets", () -> w.runner() == null);
+        runFor(20);
+        check(onEdt(w::consoleText).contains("MyFirst.java changed since it was compiled: compiling it again for this run"),
+                "Start says it compiles the changed file:\n" + onEdt(w::consoleText));
+        double again = w.runner().latest().robots().get(0).distanceMm();
+        check(again > 200, "the original MyFirst drives off again: " + Math.round(again) + " mm");
+        System.out.printf("START COMPILES OK: %.0f mm%n", again);
         System.exit(0);
     }
 
-    /** Press F5, let the run go to at least {@code seconds} of simulated time, and pause it (F6). */
+    /**
+     * Press F5, let the run go to at least {@code seconds} of simulated time, and pause it (F6); at full
+     * speed a quick controller may reach the arena's time limit first, where the run ends by itself.
+     */
     private static void runFor(double seconds) throws Exception {
-        press(KeyEvent.VK_F5, "F5 starts", () -> w.runner() != null && w.runner().state() == PacedRunner.State.RUNNING);
+        press(KeyEvent.VK_F5, "F5 starts", () -> w.runner() != null && (w.runner().state() == PacedRunner.State.RUNNING
+                || w.runner().state() == PacedRunner.State.TIME_UP));
         long until = System.nanoTime() + 60_000_000_000L;
         while (w.runner().latest().timeSeconds() < seconds && System.nanoTime() < until) {
             Thread.sleep(20);
         }
         check(w.runner().latest().timeSeconds() >= seconds, "the run reached " + seconds + " s");
-        press(KeyEvent.VK_F6, "F6 pauses", () -> w.runner().state() == PacedRunner.State.PAUSED);
+        if (w.runner().state() != PacedRunner.State.TIME_UP) {
+            press(KeyEvent.VK_F6, "F6 pauses", () -> w.runner().state() == PacedRunner.State.PAUSED
+                    || w.runner().state() == PacedRunner.State.TIME_UP);
+        }
     }
 
     private static void focusArena() throws Exception {
@@ -121,6 +152,10 @@ public final class FirstControllerLoopDriver {
     private static void check(boolean ok, String why) {
         if (!ok) {
             System.out.println("FAIL: " + why);
+            if (w != null) {
+                System.out.println("status bar: " + onEdtQuiet(() -> w.status().message()) + "\nconsole:\n"
+                        + onEdtQuiet(w::consoleText));
+            }
             System.exit(1);
         }
     }

@@ -52,7 +52,12 @@ public final class KeyBindingsDriver {
         }
         System.out.println("KEYS OK");
 
-        // Stopped at full speed: the console's note and the clock tell the same time.
+        // Stopped at full speed: the console's note and the clock tell the same time. In lab without its
+        // assignment, whose 600 s time limit a full-speed Braitenberg reaches in about a second.
+        java.nio.file.Path openLab = java.nio.file.Files.createTempDirectory("keys").resolve("open-lab.arena");
+        org.kheperasim.sim.arena.Arena lab = org.kheperasim.sim.arena.ArenaFormat.loadBundled("lab");
+        org.kheperasim.sim.arena.ArenaFormat.save(lab.withAssignment(org.kheperasim.sim.arena.Assignment.NONE), openLab);
+        SwingUtilities.invokeAndWait(() -> w.openArena(openLab));
         SwingUtilities.invokeAndWait(() -> {
             w.chooseSpeed(org.kheperasim.sim.run.PacedRunner.MAX_SPEED);
             w.action("start").actionPerformed(null);
@@ -170,6 +175,11 @@ public final class KeyBindingsDriver {
 
     private static void fail(String why) {
         System.out.println("FAIL: " + why);
+        try {
+            System.out.println(onEdt(w::consoleText));
+        } catch (Exception e) {
+            System.out.println("(no console: " + e + ")");
+        }
         System.exit(1);
     }
 }

@@ -27,7 +27,8 @@ import org.kheperasim.sim.run.Simulation;
  * in the window, the timeline dragged with the mouse to the middle, Play pressed, the speed raised,
  * Rewind pressed; each time the robot drawn is checked against the trace, on screen and in the
  * view's snapshot. Prints the figures: trace size per simulated minute, time to open, frame rates.
- * Arguments: output folder.
+ * An edit made before the recording was opened comes back with Close replay, still unsaved, and
+ * Ctrl+Q then asks before it is lost. Arguments: output folder.
  */
 public final class ReplayWindowDriver {
     private static final double SECONDS = 3600;
@@ -51,11 +52,29 @@ public final class ReplayWindowDriver {
         Robot robot = new Robot();
         robot.setAutoDelay(15);
         robot.waitForIdle();
+        // An edit not saved yet: opening a recording keeps it (a Discard asked for here once lost it, see the end).
+        SwingUtilities.invokeAndWait(() -> w.model().apply(org.kheperasim.sim.edit.ArenaEdits.addCap(w.model().arena(), 300, 900)));
+        org.kheperasim.sim.arena.Arena edited = onEdt(() -> w.model().arena());
         long open0 = System.nanoTime();
-        boolean opened = onEdt(() -> w.openRecording(rec));
+        boolean[] opened = {false};
+        SwingUtilities.invokeLater(() -> opened[0] = w.openRecording(rec));
+        // Should the window still ask about the unsaved edit, answer as the student did: Discard.
+        long askUntil = System.nanoTime() + 3_000_000_000L;
+        while (!onEdt(() -> w.player().open()) && System.nanoTime() < askUntil) {
+            Thread.sleep(50);
+            java.awt.Component discard = onEdt(() -> unsavedPrompt("Discard"));
+            if (discard != null) {
+                System.out.println("the window asked about the unsaved edit; Discard");
+                SwingUtilities.invokeLater(() -> ((javax.swing.AbstractButton) discard).doClick());
+            }
+        }
+        long openUntil = System.nanoTime() + 30_000_000_000L;
+        while (!onEdt(() -> w.player().open()) && System.nanoTime() < openUntil) {
+            Thread.sleep(20);
+        }
         System.out.printf(Locale.ROOT, "FIGURE opening the one-hour recording took %.0f ms (read, parse, show)%n",
                 (System.nanoTime() - open0) / 1e6);
-        check(opened, "the recording did not open:\n" + w.consoleText());
+        check(onEdt(() -> w.player().open()), "the recording did not open:\n" + w.consoleText());
         Thread.sleep(500);
         robot.waitForIdle();
 
@@ -152,8 +171,57 @@ public final class ReplayWindowDriver {
         long rows = Files.lines(out.resolve("replay-plot.csv")).count();
         System.out.println("plot CSV rows (with the header): " + rows);
         System.out.println("REPLAY OK");
-        SwingUtilities.invokeAndWait(() -> w.action("close").actionPerformed(null));
+
+        // Close replay: the arena comes back with its edit, still marked unsaved, and Ctrl+Q asks before it is lost.
+        SwingUtilities.invokeAndWait(() -> w.action("closeReplay").actionPerformed(null));
+        check(onEdt(() -> w.model().arena()).equals(edited), "Close replay brings back the edited arena");
+        check(onEdt(() -> w.model().dirty()), "the edit is still marked unsaved after Close replay");
+        check(onEdt(() -> w.frame().getTitle()).contains(" *"), "the title marks it unsaved: " + onEdt(() -> w.frame().getTitle()));
+        KeyBindingsDriverSupport.clickCorner(robot, w.arenaComponent());
+        robot.keyPress(java.awt.event.KeyEvent.VK_CONTROL);
+        robot.keyPress(java.awt.event.KeyEvent.VK_Q);
+        robot.keyRelease(java.awt.event.KeyEvent.VK_Q);
+        robot.keyRelease(java.awt.event.KeyEvent.VK_CONTROL);
+        robot.waitForIdle();
+        java.awt.Component cancel = null;
+        long until = System.nanoTime() + 20_000_000_000L;
+        while (cancel == null && System.nanoTime() < until && onEdt(() -> w.frame().isDisplayable())) {
+            Thread.sleep(50);
+            cancel = onEdt(() -> unsavedPrompt("Cancel"));
+        }
+        check(cancel != null, "Ctrl+Q with the edit back must ask Save, Discard or Cancel; the window "
+                + (onEdt(() -> w.frame().isDisplayable()) ? "did not ask" : "closed and lost it"));
+        java.awt.Component c = cancel;
+        SwingUtilities.invokeLater(() -> ((javax.swing.AbstractButton) c).doClick());
+        Thread.sleep(300);
+        check(onEdt(() -> w.frame().isDisplayable()), "Cancel keeps the window");
+        System.out.println("UNSAVED EDITS KEPT OK");
         System.exit(0);
+    }
+
+    /** @return the button labelled {@code label} of the showing "Unsaved changes" dialog, or null */
+    private static java.awt.Component unsavedPrompt(String label) {
+        for (java.awt.Window win : java.awt.Window.getWindows()) {
+            if (win instanceof javax.swing.JDialog d && d.isShowing() && "Unsaved changes".equals(d.getTitle())) {
+                return button(d, label);
+            }
+        }
+        return null;
+    }
+
+    private static java.awt.Component button(java.awt.Container root, String label) {
+        for (java.awt.Component c : root.getComponents()) {
+            if (c instanceof javax.swing.AbstractButton b && label.equals(b.getText())) {
+                return c;
+            }
+            if (c instanceof java.awt.Container k) {
+                java.awt.Component f = button(k, label);
+                if (f != null) {
+                    return f;
+                }
+            }
+        }
+        return null;
     }
 
     /** The view draws the robot where the trace has it at the cursor: in the snapshot and on screen. */

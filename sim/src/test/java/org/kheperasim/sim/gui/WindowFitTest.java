@@ -12,6 +12,7 @@ class WindowFitTest {
     @Test
     @Timeout(value = 180, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void theWindowFitsALaptopScreenWithItsConsole() throws Exception {
-        WindowDriverRun.run("the window size test", WindowFitDriver.class, "1366x768x24", 150, new String[] {"FIT OK"});
+        WindowDriverRun.run("the window size test", WindowFitDriver.class, "1366x768x24", 150, new String[] {"FIT OK",
+            "SMALL WINDOW OK", "LARGE WINDOW OK"});
     }
 }

@@ -94,6 +94,41 @@ class RunSessionTest {
         assertNotEquals(headless(new EditLog()), out.toString(), "the wall changed the run");
     }
 
+    /**
+     * The window's run ends where {@code run} ends it: at the end set (the arena's time limit), the
+     * controllers stopped and the trace finished there, the very trace a headless run of that length
+     * writes; a publish listener is told of the settled end, and a step cannot pass it.
+     */
+    @Test
+    @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void aPacedRunEndsAtItsEndAsAHeadlessRunOfThatLength() throws Exception {
+        StringWriter out = new StringWriter();
+        RunSession s = session(out);
+        PacedRunner runner = new PacedRunner(s, null);
+        List<Long> settled = new java.util.concurrent.CopyOnWriteArrayList<>();
+        runner.addPublishListener((session, done) -> {
+            if (done) {
+                settled.add(session.timeNanos());
+            }
+        });
+        runner.endAt(END);
+        runner.pauseAt(END - 5_000_000L);
+        runner.setSpeed(PacedRunner.MAX_SPEED);
+        runner.start();
+        while (runner.state() != PacedRunner.State.PAUSED || runner.latest().timeNanos() != END - 5_000_000L) {
+            Thread.sleep(5);
+        }
+        runner.step();
+        while (runner.state() != PacedRunner.State.TIME_UP) {
+            Thread.sleep(5);
+        }
+        assertEquals(END, runner.latest().timeNanos(), "a 10 ms step from 5 ms before the end stops at the end");
+        assertTrue(runner.stopAndWait(10_000));
+        assertEquals(PacedRunner.State.TIME_UP, runner.state(), "stopping an ended run leaves it ended at its time");
+        assertEquals(headless(new EditLog()), out.toString(), "the trace is the headless run's of that length");
+        assertEquals(END, settled.get(settled.size() - 1), "the end was published as settled");
+    }
+
     @Test
     void editLogRoundTripsAsText() {
         EditLog log = new EditLog();
