@@ -39,17 +39,25 @@ final class GuiCommand implements Callable<Integer> {
     @Option(names = "--seed", paramLabel = "N", converter = CliNumbers.AnyLong.class, description = "the runs' seed (default: a new one each run, shown in the console)")
     Long seed;
 
+    @Option(names = "--trusted", description = "the controller is your own: run it unchecked (Controller > Trust this"
+            + " controller ticked), as a controller that opens a window of its own needs; never for someone else's code")
+    boolean trusted;
+
     @Override
     public Integer call() {
         Path source = Path.of(controller.strip());
         if (controller.strip().endsWith(".java") && Files.isRegularFile(source)) {
             // The window compiles it as it opens, as Controller > Open .java does.
-            return open(new GuiOptions(arena, controller, classpath, seed, source));
+            return open(trusting(new GuiOptions(arena, controller, classpath, seed, source)));
         }
         // A wrong name is said now, with what to type, not at the first Start (loaded as trusted code only to find
         // it: the window checks its calls when it runs it, and its Trust menu may still allow them).
         new ControllerCatalog(classpath, true).load(controller);
-        return open(new GuiOptions(arena, controller, classpath, seed));
+        return open(trusting(new GuiOptions(arena, controller, classpath, seed)));
+    }
+
+    private GuiOptions trusting(GuiOptions o) {
+        return trusted ? o.trusting() : o;
     }
 
     static int open(GuiOptions options) {

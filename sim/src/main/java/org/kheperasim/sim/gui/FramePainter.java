@@ -20,7 +20,7 @@ final class FramePainter {
     private final ReplayPlayer player;
     private final ReplayBar replayBar;
     private final PlotPanel plot;
-    private final SensorPanel sensorPanel;
+    private final javax.swing.JComponent sensorPanel;
     private final ArenaView arenaView;
     private final ConsolePanel console;
     private final StatusBar status;
@@ -32,7 +32,7 @@ final class FramePainter {
     private long fpsSince = System.nanoTime();
     private double fps;
 
-    FramePainter(ViewFeed feed, ReplayPlayer player, ReplayBar replayBar, PlotPanel plot, SensorPanel sensorPanel,
+    FramePainter(ViewFeed feed, ReplayPlayer player, ReplayBar replayBar, PlotPanel plot, javax.swing.JComponent sensorPanel,
             ArenaView arenaView, ConsolePanel console, StatusBar status, RunControls runs, RunChoices choices) {
         this.feed = feed;
         this.player = player;

@@ -12,8 +12,11 @@ import java.util.List;
  * @param seed the seed, or null for a new one
  * @param javaSource a controller's {@code .java} the window compiles as it opens (as Controller > Open
  *     .java does) and runs, or null
+ * @param trusted the controller is the user's own and runs unchecked (Controller > Trust this controller
+ *     ticked), as {@code run --trusted}: needed by one that opens a window of its own
  */
-public record GuiOptions(String arena, String controller, List<Path> classpath, Long seed, Path javaSource) {
+public record GuiOptions(String arena, String controller, List<Path> classpath, Long seed, Path javaSource,
+        boolean trusted) {
     /** Copies the list. */
     public GuiOptions {
         classpath = List.copyOf(classpath);
@@ -26,7 +29,17 @@ public record GuiOptions(String arena, String controller, List<Path> classpath, 
      * @param seed the seed, or null for a new one
      */
     public GuiOptions(String arena, String controller, List<Path> classpath, Long seed) {
-        this(arena, controller, classpath, seed, null);
+        this(arena, controller, classpath, seed, null, false);
+    }
+
+    /** @param source a controller's {@code .java} to compile and run, as above */
+    public GuiOptions(String arena, String controller, List<Path> classpath, Long seed, Path source) {
+        this(arena, controller, classpath, seed, source, false);
+    }
+
+    /** @return these options with the controller trusted */
+    public GuiOptions trusting() {
+        return new GuiOptions(arena, controller, classpath, seed, javaSource, true);
     }
 
     /** @return maze with WallFollower, the README's first run */

@@ -48,6 +48,7 @@ public final class MainWindow {
     private final ViewFeed feed;
     private final ArenaView arenaView;
     private final SensorPanel sensorPanel;
+    private final SensorColumn sensorColumn;
     private final ControllerChooser controllers;
     private final WindowCommands commands;
     private final WindowMenus menus;
@@ -68,6 +69,7 @@ public final class MainWindow {
                 ? options.javaSource().getFileName().toString().replaceFirst("\\.java$", "") : options.controller();
         choices.classpath.addAll(options.classpath());
         choices.seed = options.seed();
+        choices.trusted = options.trusted();
         model = new EditorModel(arena);
         gestures = new EditGestures(model);
         runs = new RunControls(model, console, status, choices, robotControllers, this::runChanged);
@@ -77,6 +79,7 @@ public final class MainWindow {
         arenaView = new ArenaView(model, gestures, feed::snapshot, feed::trails, robotSelection);
         arenaView.setEditable(() -> !player.open());
         sensorPanel = new SensorPanel(feed::selected, feed::state);
+        sensorColumn = new SensorColumn(sensorPanel, feed::selectedVision);
         controllers = new ControllerChooser(frame, console, status, choices, robotControllers, robotSelection, runs::discard);
         runs.checks(controllers::readyForNewRun, controllers::staleNote);
         files = new ArenaFileActions(frame, model, console, status, choices, prefs, () -> {
@@ -100,7 +103,7 @@ public final class MainWindow {
         wireModel();
         frame.setJMenuBar(menus.menuBar(files.recentMenu(), model, menus.viewMenu(arenaView), menus.trustToggle(choices, console)));
         frame.setContentPane(WindowLayout.content(frame, menus.toolbar(controllers.box()), arenaView, replayBar.component(),
-                sensorPanel, plot, console, status.component(), () -> model.arena().width() / model.arena().height()));
+                sensorColumn, plot, console, status.component(), () -> model.arena().width() / model.arena().height()));
         frame.setDefaultCloseOperation(JFrame.DO_NOTHING_ON_CLOSE);
         frame.addWindowListener(new WindowAdapter() {
             @Override
@@ -115,7 +118,7 @@ public final class MainWindow {
         console.note("Loaded arena " + arena.name() + "; controller " + choices.controllerName
                 + ". Press Start (F5). Draw with the palette; File > Open recording replays a run; Help > Quick start"
                 + " gets your own controller running in 15 minutes.");
-        painter = new FramePainter(feed, player, replayBar, plot, sensorPanel, arenaView, console, status, runs, choices);
+        painter = new FramePainter(feed, player, replayBar, plot, sensorColumn, arenaView, console, status, runs, choices);
         if (options.javaSource() != null) {
             controllers.compileAndUse(options.javaSource());
             actions.refresh();
@@ -139,7 +142,7 @@ public final class MainWindow {
         });
         robotSelection.onChange(() -> SwingUtilities.invokeLater(() -> {
             forgetPainted();
-            sensorPanel.repaint();
+            sensorColumn.repaint();
             arenaView.repaint();
         }));
         model.onChange(arenaView::repaint);
@@ -174,7 +177,7 @@ public final class MainWindow {
 
     private void runChanged() {
         forgetPainted();
-        sensorPanel.repaint();
+        sensorColumn.repaint();
         arenaView.repaint();
         actions.refresh();
     }

@@ -66,7 +66,9 @@ final class SidePanelLayout implements LayoutManager {
             sensors.setBounds(in.left, in.top, sw, h);
             plot.setBounds(in.left + sw, in.top, w - sw, h);
         } else {
-            int sh = (int) StrictMath.ceil(SensorRenderer.BASE_HEIGHT * s);
+            // The vision strip, when shown, goes under the sensor panel without shrinking it.
+            int strip = sensors instanceof SensorColumn c && c.strip().isVisible() ? VisionStrip.PREFERRED_HEIGHT : 0;
+            int sh = StrictMath.min(h, (int) StrictMath.ceil(SensorRenderer.BASE_HEIGHT * s) + strip);
             sensors.setBounds(in.left, in.top, w, sh);
             plot.setBounds(in.left, in.top + sh, w, h - sh);
         }

@@ -52,6 +52,12 @@ final class ViewFeed {
         return selection.in(shown.snapshot());
     }
 
+    /** @return the image the selected robot's vision turret last gave its controller, or null */
+    org.kheperasim.sim.engine.VisionView selectedVision() {
+        Snapshot s = shown.snapshot();
+        return s == null ? null : s.vision(selection.index()).orElse(null);
+    }
+
     /** @return the selected robot's samples, or null */
     RobotSeries selectedSeries() {
         return shown.series(selection.index());

@@ -136,7 +136,7 @@ final class WindowMenus {
 
     /** @return Controller > Trust this controller */
     JCheckBoxMenuItem trustToggle(RunChoices choices, ConsolePanel console) {
-        JCheckBoxMenuItem trust = new JCheckBoxMenuItem("Trust this controller (allow files, network, reflection)", choices.trusted);
+        JCheckBoxMenuItem trust = new JCheckBoxMenuItem("Trust this controller (your own code: run it unchecked, with files, network and its own windows)", choices.trusted);
         trust.setToolTipText("uncontained: only for code you trust; see docs/controller-rules.md. Takes effect at the next Start.");
         trust.addActionListener(e -> {
             choices.trusted = trust.isSelected();
