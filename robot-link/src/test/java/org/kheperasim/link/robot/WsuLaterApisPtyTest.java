@@ -66,15 +66,21 @@ class WsuLaterApisPtyTest {
             import edu.wsu.KheperaSimulator.RobotController;
 
             public class Looker extends RobotController {
+                private int rounds;
+
                 public Looker() { }
 
+                // Ten rounds of 100 ms (wall time on the robot): a busy test machine may hold the poll loop
+                // that sends the speeds back for a while; a single round was not always enough.
                 public void doWork() throws Exception {
                     float[] image = readLvtImage();
                     int max = (int) getPixelMaxIntensity();
                     int min = (int) getPixelMinIntensity();
                     setMotorSpeeds(image.length == 64 ? max / 32 : 0, min / 32 + 1);
                     sleep(100);
-                    setFinished(true);
+                    if (++rounds >= 10) {
+                        setFinished(true);
+                    }
                 }
 
                 public void close() throws Exception { }
@@ -86,12 +92,16 @@ class WsuLaterApisPtyTest {
             import org.kheperasim.api.*;
 
             public class Pointer extends Controller {
+                private int rounds;
+
                 protected void doWork() {
                     int brightest = vision().getBrightestPixel();
                     int darkest = vision().getDarkestPixel();
                     setSpeeds(brightest - 32, darkest - 10);
                     sleepMillis(100);
-                    killControl();
+                    if (++rounds >= 10) {
+                        killControl();
+                    }
                 }
             }
             """;
