@@ -62,6 +62,8 @@ public final class Simulation {
         private boolean trusted;
         private EditLog edits = new EditLog();
         private BooleanSupplier stop = () -> false;
+        private org.kheperasim.sim.engine.DriverRecorder recorder;
+        private java.util.function.Consumer<RunSession> started = session -> { };
         private final java.util.Map<Integer, String> robotOverrides = new java.util.TreeMap<>();
         private final java.util.Map<Integer, Settings> robotSettingOverrides = new java.util.TreeMap<>();
 
@@ -230,6 +232,46 @@ public final class Simulation {
             return this;
         }
 
+        /**
+         * @param recorder hears every command the controllers send and when they wake, from their
+         *     construction on: a command log that replays the run without them
+         *     ({@code org.kheperasim.sim.commandlog})
+         * @return this
+         */
+        public Builder record(org.kheperasim.sim.engine.DriverRecorder recorder) {
+            this.recorder = recorder;
+            return this;
+        }
+
+        /**
+         * @param started told the session once it is set up (its controllers made), before it runs
+         * @return this
+         */
+        public Builder onStart(java.util.function.Consumer<RunSession> started) {
+            this.started = Objects.requireNonNull(started);
+            return this;
+        }
+
+        /** @return the arena this run is set up in (null until given) */
+        public Arena arena() {
+            return arena;
+        }
+
+        /** @return each robot's settings, in the arena's order */
+        public List<Settings> robotSettings() {
+            return setups().stream().map(RobotSetup::settings).toList();
+        }
+
+        /** @return the run's length, simulated s */
+        public double seconds() {
+            return seconds;
+        }
+
+        /** @return the trace's sample period, ms */
+        public long sampleMillis() {
+            return sampleMillis;
+        }
+
         /** @return the seed this run will use (drawn now if none was given) */
         public long seed() {
             if (seed == null) {
@@ -258,7 +300,7 @@ public final class Simulation {
         long endNanos = (long) StrictMath.rint(b.seconds * 1e9);
         b.edits.checkWithin(endNanos);
         RunSession session = new RunSession(b.arena, b.setups(), new ControllerCatalog(b.classpath, b.trusted), seed,
-                b.console, b.hostOptions);
+                b.console, b.hostOptions, b.recorder);
         for (Subscription l : b.listeners) {
             session.addListener(l.listener(), l.periodNanos());
         }
@@ -279,6 +321,7 @@ public final class Simulation {
 
         long wallStart = System.nanoTime();
         try {
+            b.started.accept(session);
             replay(session, endNanos);
         } finally {
             session.close();
