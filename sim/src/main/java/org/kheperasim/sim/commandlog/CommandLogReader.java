@@ -63,6 +63,9 @@ public final class CommandLogReader implements AutoCloseable {
     public CommandLogReader(BufferedReader in) {
         this.in = in;
         String magic = line();
+        if (magic == null) {
+            throw new TornLogException(0, "the log is empty");
+        }
         if (!LogHeader.MAGIC.equals(magic)) {
             throw new LogFormatException(1, "not a command log: it should start with '" + LogHeader.MAGIC + "'");
         }
@@ -109,7 +112,7 @@ public final class CommandLogReader implements AutoCloseable {
         }
         String l = line();
         if (l == null) {
-            throw new LogFormatException(lineNumber, "the log stops before its end line (torn: the run did not finish it)");
+            throw new TornLogException(lineNumber, "the log stops before its end line (torn: the run did not finish it)");
         }
         try {
             if (l.startsWith("claim ")) {
@@ -171,7 +174,10 @@ public final class CommandLogReader implements AutoCloseable {
 
     private String field(String name) {
         String l = line();
-        if (l == null || !l.startsWith(name + " ")) {
+        if (l == null) {
+            throw new TornLogException(lineNumber, "the log stops in its header");
+        }
+        if (!l.startsWith(name + " ")) {
             throw new LogFormatException(lineNumber, "expected the header line '" + name + " ...'");
         }
         return l.substring(name.length() + 1);
@@ -187,6 +193,8 @@ public final class CommandLogReader implements AutoCloseable {
                 }
             }
             return l;
+        } catch (java.io.EOFException e) {
+            throw new TornLogException(lineNumber, "the log's compressed stream stops before its end (torn)");
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read the command log: " + e.getMessage(), e);
         }

@@ -1,7 +1,7 @@
 package org.kheperasim.sim.commandlog;
 
 /** A command log that is torn or not in the format: names the line. */
-public final class LogFormatException extends RuntimeException {
+public class LogFormatException extends RuntimeException {
     private static final long serialVersionUID = 1L;
 
     /**

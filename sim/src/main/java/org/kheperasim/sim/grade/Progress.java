@@ -22,13 +22,25 @@ final class Progress {
         this.terminal = terminal;
     }
 
+    /** @param runs runs a journal held from an earlier start: counted as done, not timed */
+    synchronized void skip(int runs) {
+        done += runs;
+        skipped = runs;
+        if (runs > 0) {
+            out.println(String.format(Locale.ROOT, "%d of %d runs were made before (the journal holds them); making the"
+                    + " other %d", runs, total, total - runs));
+        }
+    }
+
+    private int skipped;
+
     synchronized void finished(GradePlan.Job job, RunRecord r) {
         done++;
         if (r.status() != RunStatus.OK) {
             failed++;
         }
         double elapsed = (System.nanoTime() - start) / 1e9;
-        double left = done == 0 ? 0 : elapsed / done * (total - done);
+        double left = done == skipped ? 0 : elapsed / (done - skipped) * (total - done);
         if (terminal) {
             int width = 30;
             int filled = total == 0 ? width : done * width / total;

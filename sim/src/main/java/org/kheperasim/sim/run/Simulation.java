@@ -27,6 +27,9 @@ import org.kheperasim.sim.trace.LineFileWriter;
 public final class Simulation {
     private final Builder b;
 
+    /** The controller output a headless run prints at most, characters (1 MiB). */
+    public static final long DEFAULT_OUTPUT_LIMIT = 1L << 20;
+
     private Simulation(Builder b) {
         this.b = b;
     }
@@ -64,6 +67,7 @@ public final class Simulation {
         private BooleanSupplier stop = () -> false;
         private org.kheperasim.sim.engine.DriverRecorder recorder;
         private java.util.function.Consumer<RunSession> started = session -> { };
+        private long outputLimit = DEFAULT_OUTPUT_LIMIT;
         private final java.util.Map<Integer, String> robotOverrides = new java.util.TreeMap<>();
         private final java.util.Map<Integer, Settings> robotSettingOverrides = new java.util.TreeMap<>();
 
@@ -252,6 +256,19 @@ public final class Simulation {
             return this;
         }
 
+        /**
+         * @param chars the most characters of controller output (its lines' text) the console gets in
+         *     this run; the rest is dropped, and a note at the end says how much (see {@link BoundedConsole})
+         * @return this
+         */
+        public Builder outputLimit(long chars) {
+            if (chars < 0) {
+                throw new IllegalArgumentException("an output limit of " + chars + " characters: give 0 or more");
+            }
+            this.outputLimit = chars;
+            return this;
+        }
+
         /** @return the arena this run is set up in (null until given) */
         public Arena arena() {
             return arena;
@@ -299,8 +316,9 @@ public final class Simulation {
         long seed = b.seed();
         long endNanos = (long) StrictMath.rint(b.seconds * 1e9);
         b.edits.checkWithin(endNanos);
+        BoundedConsole console = new BoundedConsole(b.console, b.outputLimit);
         RunSession session = new RunSession(b.arena, b.setups(), new ControllerCatalog(b.classpath, b.trusted), seed,
-                b.console, b.hostOptions, b.recorder);
+                console, b.hostOptions, b.recorder);
         for (Subscription l : b.listeners) {
             session.addListener(l.listener(), l.periodNanos());
         }
@@ -325,6 +343,7 @@ public final class Simulation {
             replay(session, endNanos);
         } finally {
             session.close();
+            console.finish();
         }
         double wall = (System.nanoTime() - wallStart) / 1e9;
         return session.result(wall);
