@@ -132,7 +132,7 @@ final class ChildResults {
             int at = line.indexOf("khepera-sim: " + BoundedConsole.OUTPUT_DROPPED + " ");
             if (at >= 0) {
                 String note = line.substring(at + "khepera-sim: ".length());
-                int cut = note.indexOf("; the last error lines follow");
+                int cut = note.indexOf("; the last ");
                 return detail + (detail.isEmpty() ? "" : " | ") + (cut > 0 ? note.substring(0, cut) : note);
             }
         }

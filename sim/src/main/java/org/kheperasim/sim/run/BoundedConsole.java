@@ -59,17 +59,15 @@ public final class BoundedConsole implements ConsoleSink {
         droppedChars += line.text().length() + 1;
     }
 
-    /** At the run's end: the kept error lines, then what was dropped. */
+    /** At the run's end: the kept error lines, then what was dropped (last, so that a tail of the output holds it). */
     synchronized void finish() {
-        if (droppedLines == 0 && lastErrors.isEmpty()) {
-            return;
+        int kept = lastErrors.size();
+        while (!lastErrors.isEmpty()) {
+            out.accept(lastErrors.removeFirst());
         }
         if (droppedLines > 0) {
             out.accept(new ConsoleLine(lastTime, "khepera-sim", ConsoleLine.Kind.INFO, note(droppedLines, droppedChars, limit)
-                    + (lastErrors.isEmpty() ? "" : "; the last error lines follow")));
-        }
-        while (!lastErrors.isEmpty()) {
-            out.accept(lastErrors.removeFirst());
+                    + (kept == 0 ? "" : "; the last " + kept + " error lines past it are above")));
         }
     }
 
