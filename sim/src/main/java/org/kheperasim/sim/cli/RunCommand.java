@@ -159,8 +159,7 @@ final class RunCommand implements Callable<Integer> {
 
     /** The same command again, in a bubblewrap box (see sandbox.Reexec). */
     private int inTheBox() {
-        List<String> args = new ArrayList<>(spec.commandLine().getParseResult().originalArgs());
-        args.remove("--sandbox");
+        List<String> args = Sandboxed.argsAfter(spec, "run");
         List<Path> read = new ArrayList<>(controllerOptions.classpath());
         java.nio.file.Path arenaFile = Path.of(arena);
         if (java.nio.file.Files.isRegularFile(arenaFile)) {
