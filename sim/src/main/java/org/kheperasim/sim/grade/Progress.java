@@ -14,6 +14,8 @@ final class Progress {
     private final boolean terminal;
     private final long start = System.nanoTime();
     private int done;
+    /** Runs a journal held from an earlier start: done, but not timed here. */
+    private int skipped;
     private int failed;
 
     Progress(PrintStream out, int total, boolean terminal) {
@@ -31,8 +33,6 @@ final class Progress {
                     + " other %d", runs, total, total - runs));
         }
     }
-
-    private int skipped;
 
     synchronized void finished(GradePlan.Job job, RunRecord r) {
         done++;

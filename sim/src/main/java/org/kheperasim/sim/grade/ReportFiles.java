@@ -184,7 +184,7 @@ public final class ReportFiles {
             List<String> f = csvSplit(line);
             out.add(new RunRecord(f.get(0), f.get(1), Long.parseLong(f.get(2)), RunStatus.ofWord(f.get(3)),
                     Double.parseDouble(f.get(4)), Double.parseDouble(f.get(5)), Double.parseDouble(f.get(6)),
-                    Double.parseDouble(f.get(7)), f.get(8), f.get(10), f.get(9), f.get(11)));
+                    Double.parseDouble(f.get(7)), f.get(8), f.get(10), f.get(9), f.size() > 11 ? f.get(11) : ""));
         }
         return out;
     }

@@ -55,7 +55,8 @@ public final class Reexec {
         } catch (IOException e) {
             throw new UncheckedIOException("cannot make " + e.getMessage() + " for the sandboxed run to write", e);
         }
-        List<String> java = new ArrayList<>(List.of("--enable-native-access=ALL-UNNAMED", "-Djava.awt.headless=true"));
+        List<String> java = new ArrayList<>(List.of("--enable-native-access=ALL-UNNAMED", "-Djava.awt.headless=true",
+                "-Xmx" + (limits.memoryBytes() / (1L << 20) - 768) + "m"));
         System.getProperties().stringPropertyNames().stream().filter(k -> k.startsWith("kheperasim.")).sorted()
                 .forEach(k -> java.add("-D" + k + "=" + System.getProperty(k)));
         java.addAll(List.of("-cp", System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main", command));
