@@ -13,6 +13,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -102,6 +103,7 @@ class GradeResumeTest {
         Process grader = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("grade.log").toFile()).start();
         List<ProcessHandle> runs = List.of();
         long deadline = System.nanoTime() + 120_000_000_000L;
+        long started = System.nanoTime();
         while (runs.isEmpty()) {
             if (!grader.isAlive() || System.nanoTime() > deadline) {
                 grader.destroyForcibly();
@@ -110,10 +112,13 @@ class GradeResumeTest {
             runs = runs(grader, out);
             Thread.sleep(50);
         }
+        String seen = runs.stream().map(h -> h.pid() + " " + h.info()).toList().toString();
+        double seenAfter = (System.nanoTime() - started) / 1e9;
         Thread.sleep(3000); // the run is under way
         if (!runs.stream().allMatch(ProcessHandle::isAlive)) {
+            grader.waitFor(10, TimeUnit.SECONDS); // the grader says how the run ended
             grader.destroyForcibly();
-            fail("the run ended while its grader lived: " + runs.stream().map(h -> h.pid() + " " + h.info()).toList() + "\n"
+            fail("the run ended while its grader lived: " + seen + " (seen " + seenAfter + " s after grade started)\n"
                     + Files.readString(dir.resolve("grade.log")));
         }
         grader.destroyForcibly();
