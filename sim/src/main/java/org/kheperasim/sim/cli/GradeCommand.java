@@ -19,8 +19,10 @@ import picocli.CommandLine.Parameters;
         subcommands = GradeCommand.Merge.class,
         description = {"Grade a class: compile every submission (one sub-folder per student, .java or .class), run it in"
                 + " every arena with seeds 1..N, each run in a child JVM with a heap, simulated-time and wall-clock limit"
-                + " under the containment rules, and write a report (report.txt, results.csv, results.json, index.html"
-                + " with trajectory pictures) ranked per arena by the arenas' tasks. See docs/grading.md.",
+                + " under the containment rules, in an operating-system sandbox (bubblewrap), scored by the grader's own"
+                + " replay of the run's command log, and write a report (report.txt, results.csv, results.json, index.html"
+                + " with trajectory pictures) ranked per arena by the arenas' tasks. Started again on the same --out, it"
+                + " makes only the runs its journal lacks. See docs/grading.md.",
             "--shard K/N makes one deterministic slice; 'grade merge' joins the slices into the same report."})
 final class GradeCommand implements Callable<Integer> {
 
@@ -58,8 +60,13 @@ final class GradeCommand implements Callable<Integer> {
             description = "real seconds without an API call after which a controller counts as hung (default: ${DEFAULT-VALUE})")
     double hangTimeout;
 
-    @Option(names = "--keep-traces", description = "keep each run's trace in DIR/work/runs (they are deleted once drawn)")
+    @Option(names = "--keep-traces", description = "keep each run's trace and command log in DIR/work/runs (they are deleted once drawn)")
     boolean keepTraces;
+
+    @Option(names = "--no-sandbox", description = "make the runs without the operating-system sandbox (bubblewrap): only for"
+            + " code you trust; needed where there is none (macOS, Windows, no user namespaces). The report says which way"
+            + " each run was made")
+    boolean noSandbox;
 
     @Override
     public Integer call() {
@@ -73,7 +80,7 @@ final class GradeCommand implements Callable<Integer> {
         }
         GradePlan.Shard s = shard == null ? GradePlan.Shard.ALL : GradePlan.Shard.parse(shard);
         ReportFiles.Report report = Grader.grade(new Grader.Options(submissions, arenas, seeds, jobs, out, s, heapMb, wallLimit,
-                hangTimeout, seconds, keepTraces, System.err, System.console() != null));
+                hangTimeout, seconds, keepTraces, System.err, System.console() != null, !noSandbox, false));
         print(report, out);
         return ExitCodes.OK;
     }

@@ -14,6 +14,7 @@ import org.kheperasim.link.tool.ExitCodes;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.grade.ChildSide;
 import org.kheperasim.sim.host.ConsoleLine;
 
 import org.kheperasim.sim.host.HostOptions;
@@ -86,8 +87,29 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--quiet", description = "do not print the controller's messages")
     boolean quiet;
 
+    @Option(names = "--sandbox", description = "run in an operating-system sandbox, as grade does: only the Java runtime,"
+            + " the simulator, the controller's classpath and the arena visible, no network, limits on processes, files,"
+            + " memory (Linux, bubblewrap; see docs/grading.md)")
+    boolean sandbox;
+
+    /** The grader's channel: the run hands over its command log and result there, then ends its JVM (a graded child). */
+    @Option(names = "--command-log", paramLabel = "SOCKET", hidden = true)
+    Path commandLog;
+
+    /** A graded child's own wall-clock limit, s: it ends itself there. */
+    @Option(names = "--wall-limit", paramLabel = "SECONDS", hidden = true, defaultValue = "0")
+    double wallLimit;
+
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     @Override
-    public Integer call() {
+    public Integer call() throws java.io.IOException {
+        if (sandbox) {
+            return inTheBox();
+        }
+        // First of all, before any controller class is loaded: the channel a controller's code cannot name.
+        ChildSide child = commandLog == null ? null : ChildSide.start(commandLog, wallLimit);
         Settings settings = settingsOptions.settings();
         PrintStream info = json ? System.err : System.out;
         Arena resolved = ArenaFormat.resolve(arena);
@@ -118,7 +140,42 @@ final class RunCommand implements Callable<Integer> {
             run.edits(EditLog.load(edits));
         }
         info.println("seed " + run.seed());
-        return StopOnSignal.run(run, hangTimeout, result -> report(result, resolved));
+        if (child != null) {
+            long endNanos = (long) StrictMath.rint(run.seconds() * 1e9);
+            run.record(child.log()).onStart(session -> child.started(session, endNanos, sampleMillis));
+            if (trace == null) {
+                run.trace(java.io.Writer.nullWriter()); // for the trace's hash in the result, which the grader checks
+            }
+            return StopOnSignal.run(run, hangTimeout, result -> {
+                Score score = score(result, resolved);
+                String claim = toJson(result, score);
+                int exit = report(result, score);
+                child.finish(claim, exit);
+                return exit;
+            });
+        }
+        return StopOnSignal.run(run, hangTimeout, result -> report(result, score(result, resolved)));
+    }
+
+    /** The same command again, in a bubblewrap box (see sandbox.Reexec). */
+    private int inTheBox() {
+        List<String> args = Sandboxed.argsAfter(spec, "run");
+        List<Path> read = new ArrayList<>(controllerOptions.classpath());
+        java.nio.file.Path arenaFile = Path.of(arena);
+        if (java.nio.file.Files.isRegularFile(arenaFile)) {
+            read.add(arenaFile);
+        }
+        if (edits != null) {
+            read.add(edits);
+        }
+        List<Path> write = trace == null ? List.of() : List.of(trace);
+        int robots = ArenaFormat.resolve(arena).robots().size();
+        return org.kheperasim.sim.sandbox.Reexec.run("run", args, read, write, false,
+                org.kheperasim.sim.sandbox.BoxLimits.forCommand(robots), hangTimeout + 5);
+    }
+
+    private static Score score(RunResult result, Arena resolved) {
+        return resolved.assignment().hasTasks() ? Score.of(resolved, RunFacts.of(result)) : null;
     }
 
     /** Apply the {@code --robot N:KEY=VALUE} options: a robot's own controller and settings. */
@@ -165,8 +222,7 @@ final class RunCommand implements Callable<Integer> {
         }
     }
 
-    private int report(RunResult result, Arena resolved) {
-        Score score = resolved.assignment().hasTasks() ? Score.of(resolved, RunFacts.of(result)) : null;
+    private int report(RunResult result, Score score) {
         System.out.println(json ? toJson(result, score) : summary(result, score));
         System.out.flush();
         for (RunResult.RobotResult r : result.robots()) {

@@ -66,8 +66,26 @@ final class ServeCommand implements Callable<Integer> {
     @Option(names = "--seconds", paramLabel = "T", converter = CliNumbers.PositiveSeconds.class, description = "stop after T real seconds (default: run until Ctrl-C)")
     Double seconds;
 
+    @Option(names = "--sandbox", description = "serve from an operating-system sandbox, as grade runs its runs: only the Java"
+            + " runtime, the simulator and the arena visible, limits on processes, files and memory; the network stays (the"
+            + " clients must reach the robot). Linux, bubblewrap; not with --pty (see docs/grading.md)")
+    boolean sandbox;
+
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     @Override
     public Integer call() throws Exception {
+        if (sandbox) {
+            if (pty != null) {
+                throw new IllegalArgumentException("--pty " + pty + " cannot be used with --sandbox: the pseudo-terminal needs"
+                        + " socat, which the sandbox does not hold; leave one of them out");
+            }
+            Path arenaFile = Path.of(arena);
+            List<Path> read = java.nio.file.Files.isRegularFile(arenaFile) ? List.of(arenaFile) : List.of();
+            return org.kheperasim.sim.sandbox.Reexec.run("serve", Sandboxed.argsAfter(spec, "serve"), read, List.of(), true,
+                    org.kheperasim.sim.sandbox.BoxLimits.forCommand(ArenaFormat.resolve(arena).robots().size()), 10);
+        }
         Settings settings = settingsOptions.settings();
         long runSeed = seed != null ? seed : Simulation.randomSeed();
         Arena a = ArenaFormat.resolve(arena);

@@ -2,6 +2,7 @@ package org.kheperasim.sim.engine;
 
 import org.kheperasim.api.ArmPosition;
 import org.kheperasim.api.GripperState;
+import org.kheperasim.link.timing.PollStep;
 
 /**
  * What a controller does to its simulated robot and reads from it, through the simulated serial
@@ -11,20 +12,34 @@ import org.kheperasim.api.GripperState;
 public final class ControllerLink {
     private final SimRobot robot;
     private final RobotLink link;
+    /** Hears every command that reaches the link (a command log), or null. */
+    private DriverRecorder recorder;
 
     ControllerLink(SimRobot robot, RobotLink link) {
         this.robot = robot;
         this.link = link;
     }
 
+    void record(DriverRecorder recorder) {
+        this.recorder = recorder;
+    }
+
     /** A controller asks for wheel speeds at simulated time {@code now}, units; they act after the wire time. */
     public void commandSpeeds(long now, int left, int right) {
+        // A busy loop asks for the same speeds tens of thousands of times a second: only calls that change the
+        // link are told, which replays the same (the others leave every field of the link as it was).
+        if (recorder != null && link.speedsWouldChange(now, left, right)) {
+            recorder.speeds(robot.id(), now, left, right);
+        }
         link.commandSpeeds(now, left, right);
         robot.commandQueued();
     }
 
     /** A controller sets the position counters ({@code G}), pulses. */
     public void commandPositions(long now, int left, int right) {
+        if (recorder != null) {
+            recorder.positions(robot.id(), now, left, right);
+        }
         link.commandPositions(now, left, right);
         robot.commandQueued();
     }
@@ -36,12 +51,18 @@ public final class ControllerLink {
 
     /** A controller moves the arm to a position, 0..255, larger = lower. */
     public void commandArm(long now, int position) {
+        if (recorder != null) {
+            recorder.arm(robot.id(), now, position);
+        }
         link.commandArm(now, position);
         robot.commandQueued();
     }
 
     /** A controller opens or closes the fingers ({@code T,1,D,0|1}). */
     public void commandFingers(long now, GripperState state) {
+        if (recorder != null) {
+            recorder.fingers(robot.id(), now, state == GripperState.CLOSED);
+        }
         link.commandFingers(now, state == GripperState.CLOSED);
         robot.commandQueued();
     }
@@ -58,22 +79,33 @@ public final class ControllerLink {
 
     /** @param now the controller's simulated time, ns @param i sensor index @return the proximity value it sees */
     public int visibleProximity(long now, int i) {
+        read(PollStep.PROXIMITY, now);
         return link.visibleProximity(now, i);
     }
 
     /** @param now the controller's simulated time, ns @param i sensor index @return the light value it sees */
     public int visibleLight(long now, int i) {
+        read(PollStep.LIGHT, now);
         return link.visibleLight(now, i);
     }
 
     /** @param now the controller's simulated time, ns @return the left position counter it sees, pulses */
     public int visibleEncoderLeft(long now) {
+        read(PollStep.ENCODERS, now);
         return link.visibleCounterLeft(now);
     }
 
     /** @param now the controller's simulated time, ns @return the right position counter it sees, pulses */
     public int visibleEncoderRight(long now) {
+        read(PollStep.ENCODERS, now);
         return link.visibleCounterRight(now);
+    }
+
+    /** A read that brings a reply in early is told: it changes what the engine's tick shows from then on. */
+    private void read(PollStep step, long now) {
+        if (recorder != null && link.readDelivers(step, now)) {
+            recorder.delivered(robot.id(), now, step);
+        }
     }
 
     /** @return the left speed the controller last asked for, units */

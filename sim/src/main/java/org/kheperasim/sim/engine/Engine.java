@@ -37,6 +37,12 @@ public final class Engine {
     private boolean hasDrivers;
     /** A robot steps by ticks ({@code engine.stepping=tick}): the world stops at every tick, the reference. */
     private boolean ticking;
+    /** Hears what the drivers do (a command log), or null. */
+    private DriverRecorder recorder;
+    /** The robot whose driver had the last turn, until its wake has been told to the recorder; -1: none. */
+    private int granted = -1;
+    private long grantedTick;
+    private boolean wakesTold;
 
     private record Subscription(SnapshotListener listener, long periodTicks) {
     }
@@ -64,6 +70,9 @@ public final class Engine {
     public SimRobot addRobot(String name, Pose start, Settings settings) {
         SimRobot r = new SimRobot(robots.size(), name, world, start, settings, seeds.split());
         robots.add(r);
+        if (recorder != null) {
+            r.record(recorder);
+        }
         ticking |= r.steppingByTicks();
         drivers.add(null);
         driverStatus.add(x -> "none");
@@ -90,6 +99,19 @@ public final class Engine {
             throw new IllegalArgumentException("listener period " + periodNanos + " ns must be a whole number of 1 ms ticks");
         }
         listeners.add(new Subscription(listener, periodNanos / TICK_NANOS));
+    }
+
+    /**
+     * Tell a recorder everything the drivers do from now on (set it before the controllers are made:
+     * a constructor may already command its robot).
+     *
+     * @param recorder hears the commands, emergency stops and wake times, in the engine's order
+     */
+    public void record(DriverRecorder recorder) {
+        this.recorder = recorder;
+        for (SimRobot r : robots) {
+            r.record(recorder);
+        }
     }
 
     /** @param listener a listener to stop calling */
@@ -160,6 +182,9 @@ public final class Engine {
      * @return the driver that must run now, or null when the run is over
      */
     public RobotDriver advance() {
+        if (recorder != null) {
+            tellWakes();
+        }
         while (true) {
             if (!inTick) {
                 if (tick * TICK_NANOS >= endNanos || (hasDrivers && !anyDriverRunning())) {
@@ -177,6 +202,8 @@ public final class Engine {
                 RobotDriver d = drivers.get(driverCursor++);
                 if (d != null && d.wakeNanos() < end) {
                     d.grant(end);
+                    granted = driverCursor - 1;
+                    grantedTick = tick;
                     return d;
                 }
             }
@@ -186,6 +213,21 @@ public final class Engine {
             tick += n;
             inTick = false;
         }
+    }
+
+    /** The recorder hears each driver's wake at the start, then the wake of the driver whose turn has just ended. */
+    private void tellWakes() {
+        if (!wakesTold) {
+            wakesTold = true;
+            for (int i = 0; i < drivers.size(); i++) {
+                if (drivers.get(i) != null) {
+                    recorder.wake(i, -1, drivers.get(i).wakeNanos());
+                }
+            }
+        } else if (granted >= 0) {
+            recorder.wake(granted, grantedTick, drivers.get(granted).wakeNanos());
+        }
+        granted = -1;
     }
 
     /**

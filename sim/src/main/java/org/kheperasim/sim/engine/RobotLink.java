@@ -153,6 +153,15 @@ final class RobotLink {
         }
     }
 
+    /**
+     * @return false when {@link #commandSpeeds} with these arguments would leave the link exactly as it
+     *     is: the speeds are those asked last, and no pending command would go out now (a pending
+     *     command always means the asked speeds differ from those sent)
+     */
+    boolean speedsWouldChange(long now, int left, int right) {
+        return left != askedLeft || right != askedRight || (speedPending && now >= lineFreeAt);
+    }
+
     private void sendSpeeds(long start) {
         long delay = timing.speedCommandDelayNanos(askedLeft, askedRight);
         commands.add(start + delay, CommandQueue.SPEED, askedLeft, askedRight);
@@ -316,6 +325,18 @@ final class RobotLink {
             visible[k] = delivered;
         }
         pending[k] = false;
+    }
+
+    /**
+     * @param step a poll step
+     * @param now  a controller's simulated time, ns
+     * @return true when a read at {@code now} delivers the step's pending sample: a controller whose
+     *     calls reach past the tick the engine is at sees a reply before the engine's own tick does, and
+     *     from then on so does everything else (a snapshot at the engine's tick)
+     */
+    boolean readDelivers(PollStep step, long now) {
+        int k = step == PollStep.PROXIMITY ? PROXIMITY : step == PollStep.LIGHT ? LIGHT : ENCODERS;
+        return pending[k] && deliverAt[k] <= now - Math.floorMod(now, Engine.TICK_NANOS);
     }
 
     /** The values of step k as the controller sees them at {@code now}: delivered once the reply is in by the tick's start. */

@@ -47,6 +47,8 @@ public final class SimRobot {
     private final ControllerLink controls;
     private final World world;
     private final LinearCamera camera;
+    /** Hears the commands and emergency stops (a command log), or null. */
+    private DriverRecorder recorder;
 
     /**
      * @param id the robot's index in the engine
@@ -281,8 +283,17 @@ public final class SimRobot {
         return movedTo;
     }
 
+    /** @param recorder hears this robot's commands and emergency stops from now on (see {@link Engine#record}) */
+    void record(DriverRecorder recorder) {
+        this.recorder = recorder;
+        controls.record(recorder);
+    }
+
     /** Stop the wheels at once: the controller has ended, failed or been stopped (robot-link sends D,0,0). */
     public void emergencyStop() {
+        if (recorder != null) {
+            recorder.emergencyStop(id);
+        }
         onBoard.speedMode();
         link.reset();
         body.wheels().setSpeeds(0, 0);

@@ -3,10 +3,15 @@ package org.kheperasim.sim.grade;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.kheperasim.sim.run.BoundedConsole;
+import org.kheperasim.sim.task.Score;
 
 /**
- * Turns what a child run left (its exit status, the {@code run --json} line, the tail of its
- * standard error, whether it was killed at the wall-clock limit) into a {@link RunRecord}.
+ * Turns what a child run left into a {@link RunRecord}: its own result (the claim at the end of its
+ * command log, for how each controller ended and why) with the score the grader computed by
+ * replaying the log; or, when there is no whole log, its exit status and the tail of its standard
+ * error (killed at the wall-clock limit, out of heap, refused at load). Standard output is never
+ * read for a result: a controller prints there.
  */
 final class ChildResults {
     private static final int MAX_DETAIL = 300;
@@ -14,15 +19,23 @@ final class ChildResults {
     private ChildResults() {
     }
 
-    static RunRecord record(GradePlan.Job job, String controller, boolean killed, double wallLimit, int exit,
-            String out, String err) {
-        Map<String, Object> json = lastJsonLine(out);
-        if (json == null) {
-            return noResult(job, controller, killed, wallLimit, exit, err);
-        }
+    /**
+     * A run whose log was whole and replayed to the same result.
+     *
+     * @param job        the run
+     * @param controller the controller class
+     * @param claim      the run's own result, parsed
+     * @param score      the score of the replay, or null when the arena has no tasks
+     * @param seconds    simulated seconds the replay reached
+     * @param err        the tail of the run's standard error
+     * @param madeIn     how the run was made
+     * @return the record
+     */
+    static RunRecord fromClaim(GradePlan.Job job, String controller, Map<String, Object> claim, Score score, double seconds,
+            String err, String madeIn) {
         RunStatus status = RunStatus.OK;
         String failure = null;
-        Object robots = json.get("robots");
+        Object robots = claim.get("robots");
         if (robots instanceof List<?> list) {
             for (Object o : list) {
                 if (o instanceof Map<?, ?> robot) {
@@ -37,22 +50,11 @@ final class ChildResults {
                 }
             }
         }
-        double points = 0;
-        double max = 0;
-        double percent = 0;
         StringBuilder detail = new StringBuilder();
-        if (json.get("score") instanceof Map<?, ?> score) {
-            points = number(score.get("points"));
-            max = number(score.get("max"));
-            percent = number(score.get("percent"));
-            if (score.get("tasks") instanceof List<?> tasks) {
-                for (Object t : tasks) {
-                    if (t instanceof Map<?, ?> task) {
-                        detail.append(detail.length() > 0 ? "; " : "")
-                                .append(String.valueOf(task.get("task")).replaceFirst("^task ", "")).append(": ")
-                                .append(task.get("detail"));
-                    }
-                }
+        if (score != null) {
+            for (Score.Part p : score.parts()) {
+                detail.append(detail.length() > 0 ? "; " : "").append(p.task().replaceFirst("^task ", "")).append(": ")
+                        .append(p.detail());
             }
         }
         if (status == RunStatus.EXCEEDED_MEMORY) {
@@ -64,15 +66,28 @@ final class ChildResults {
         if (failure != null) {
             detail.insert(0, shorten(failure) + (detail.length() > 0 ? " | " : ""));
         }
-        return new RunRecord(job.student(), job.arena(), job.seed(), status, points, max, percent,
-                number(json.get("simulatedSeconds")), controller, detail.toString(), "");
+        return new RunRecord(job.student(), job.arena(), job.seed(), status, score == null ? 0 : score.points(),
+                score == null ? 0 : score.max(), score == null ? 0 : score.percent(), seconds, controller,
+                withDropped(detail.toString(), err), "", madeIn);
     }
 
-    private static RunRecord noResult(GradePlan.Job job, String controller, boolean killed, double wallLimit, int exit,
-            String err) {
+    /**
+     * A run without a whole log: what its exit status and standard error tell.
+     *
+     * @param job        the run
+     * @param controller the controller class
+     * @param killed     true when the grader killed it at the wall-clock limit
+     * @param wallLimit  that limit, s
+     * @param exit       its exit status
+     * @param err        the tail of its standard error
+     * @param madeIn     how the run was made
+     * @return the record: never ok
+     */
+    static RunRecord noResult(GradePlan.Job job, String controller, boolean killed, double wallLimit, int exit, String err,
+            String madeIn) {
         RunStatus status;
         String detail;
-        if (killed) {
+        if (killed || exit == ChildSide.WALL_LIMIT_EXIT) {
             status = RunStatus.HUNG;
             detail = String.format(Locale.ROOT, "no result within the wall-clock limit of %.0f s; the run was killed",
                     wallLimit);
@@ -82,11 +97,46 @@ final class ChildResults {
         } else if (err.contains(" was refused: ")) {
             status = RunStatus.BROKE_RULE;
             detail = lastLine(err, " was refused: ");
+        } else if (exit == 0) {
+            // The simulator hands its result over before it ends the JVM: something else ended it.
+            status = RunStatus.TAMPERED;
+            detail = "the run's JVM ended with success (exit status 0) without handing over its command log and result:"
+                    + " something other than the simulator ended it; what it printed is not a result";
         } else {
             status = RunStatus.ERROR;
-            detail = "exit status " + exit + ": " + lastLine(err, "");
+            detail = (exit > 128 ? "killed by signal " + (exit - 128) + " (exit status " + exit + ")" : "exit status " + exit)
+                    + ": " + lastLine(err, "");
         }
-        return new RunRecord(job.student(), job.arena(), job.seed(), status, 0, 0, 0, 0, controller, shorten(detail), "");
+        return new RunRecord(job.student(), job.arena(), job.seed(), status, 0, 0, 0, 0, controller,
+                withDropped(shorten(detail), err), "", madeIn);
+    }
+
+    /**
+     * @param job        the run
+     * @param controller the controller class
+     * @param why        what was found
+     * @param score      the score of the replay of its command log, or null (none, or the log does not replay)
+     * @param seconds    simulated seconds the replay reached (0 without one)
+     * @param madeIn     how the run was made
+     * @return a run found tampering, with what the replay says its robot did (never what it says itself)
+     */
+    static RunRecord tampered(GradePlan.Job job, String controller, String why, Score score, double seconds, String madeIn) {
+        return new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.TAMPERED, score == null ? 0 : score.points(),
+                score == null ? 0 : score.max(), score == null ? 0 : score.percent(), seconds, controller, shorten(why), "",
+                madeIn);
+    }
+
+    /** The run's note on controller output over its limit, added to the detail. */
+    private static String withDropped(String detail, String err) {
+        for (String line : err.split("\\R")) {
+            int at = line.indexOf("khepera-sim: " + BoundedConsole.OUTPUT_DROPPED + " ");
+            if (at >= 0) {
+                String note = line.substring(at + "khepera-sim: ".length());
+                int cut = note.indexOf("; the last ");
+                return detail + (detail.isEmpty() ? "" : " | ") + (cut > 0 ? note.substring(0, cut) : note);
+            }
+        }
+        return detail;
     }
 
     /**
@@ -118,22 +168,6 @@ final class ChildResults {
         };
     }
 
-    @SuppressWarnings("unchecked")
-    private static Map<String, Object> lastJsonLine(String out) {
-        String[] lines = out.split("\\R");
-        for (int i = lines.length - 1; i >= 0; i--) {
-            String l = lines[i].strip();
-            if (l.startsWith("{")) {
-                try {
-                    return JsonValues.parse(l) instanceof Map<?, ?> m ? (Map<String, Object>) m : null;
-                } catch (IllegalArgumentException e) {
-                    return null;
-                }
-            }
-        }
-        return null;
-    }
-
     private static String lastLine(String text, String containing) {
         String[] lines = text.split("\\R");
         for (int i = lines.length - 1; i >= 0; i--) {
@@ -143,10 +177,6 @@ final class ChildResults {
             }
         }
         return "(no message)";
-    }
-
-    private static double number(Object o) {
-        return o instanceof Number n ? n.doubleValue() : 0;
     }
 
     private static String shorten(String s) {

@@ -7,17 +7,36 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.commandlog.LogChannel;
+import org.kheperasim.sim.sandbox.Box;
+import org.kheperasim.sim.sandbox.BoxLimits;
 
 /**
- * Makes one graded run in a child JVM: {@code java -Xmx… org.kheperasim.sim.cli.Main run … --json},
- * with the heap limit, the simulated-time limit and a wall-clock limit after which the child is
- * killed. The child runs the controller contained (docs/controller-rules.md); what it prints, its
- * exit status and whether it was killed become a {@link RunRecord} ({@link ChildResults}).
+ * Makes one graded run in a child JVM: {@code java -Xmx… org.kheperasim.sim.cli.Main run …
+ * --command-log SOCKET}, in the operating-system sandbox ({@link Box}) unless the grading said
+ * {@code --no-sandbox}, with the heap limit, the simulated-time limit and a wall-clock limit after
+ * which the child is killed (and at which it also ends itself). The child hands its command log
+ * over the socket ({@link LogChannel}); standard input is a pipe the grader never writes to, whose end
+ * tells the child its grader is gone. {@link Verdict} judges what came back.
  */
 final class ChildRun {
-    /** What every run of a grading shares. */
-    record Limits(int heapMb, double wallSeconds, double hangSeconds, Double seconds, long sampleMillis, int processors) {
+    /**
+     * What every run of a grading shares.
+     *
+     * @param heapMb       each run's heap, MiB
+     * @param wallSeconds  each run's wall-clock limit, s
+     * @param hangSeconds  the hang timeout, s
+     * @param seconds      simulated seconds per run, or null for each arena's own
+     * @param sampleMillis the trace's sample period, ms
+     * @param processors   cores each run's JVM sees
+     * @param sandbox      true to make each run in the sandbox
+     * @param trusted      true to run the submissions trusted (tests only: a hole opened on purpose)
+     */
+    record Limits(int heapMb, double wallSeconds, double hangSeconds, Double seconds, long sampleMillis, int processors,
+            boolean sandbox, boolean trusted) {
     }
 
     /**
@@ -25,86 +44,132 @@ final class ChildRun {
      *
      * @param record      the run as the report holds it
      * @param wallSeconds real time it took, s
-     * @param trace       its trace, or null when there is none
+     * @param trace       the replay's trace, or null when there is none
+     * @param log         the run's command log as received, or null
      */
-    record Outcome(RunRecord record, double wallSeconds, Path trace) {
+    record Outcome(RunRecord record, double wallSeconds, Path trace, Path log) {
     }
 
     private ChildRun() {
     }
 
     /**
-     * @param job  the run
-     * @param sub  the student's submission (runnable)
-     * @param lim  the limits
-     * @param runs where the run's trace goes
+     * @param job     the run
+     * @param sub     the student's submission (runnable)
+     * @param arena   the arena
+     * @param lim     the limits
+     * @param runs    where the run's trace and log go
+     * @param sockets a folder of the grader's own for the channel's socket
+     * @param slot    which of the concurrent runs this is, from 0
+     * @param running the children going now (a signal to the grader kills them)
      * @return what came back
      * @throws IOException if the child cannot be started
      */
-    static Outcome run(GradePlan.Job job, Submission sub, Limits lim, Path runs) throws IOException {
+    static Outcome run(GradePlan.Job job, Submission sub, Arena arena, Limits lim, Path runs, Path sockets, int slot,
+            Set<Process> running) throws IOException {
         Path trace = runs.resolve(ReportFiles.runId(job) + ".trace");
+        Path logFile = runs.resolve(ReportFiles.runId(job) + ".log.gz");
         Files.deleteIfExists(trace);
+        Files.deleteIfExists(logFile);
+        Path socket = sockets.resolve(job.index() + ".sock");
+        List<Path> classpath = new ArrayList<>();
+        for (String e : System.getProperty("java.class.path").split(File.pathSeparator)) {
+            if (!e.isEmpty() && Files.exists(Path.of(e))) {
+                classpath.add(Path.of(e).toAbsolutePath());
+            }
+        }
+        Path arenaFile = Files.isRegularFile(Path.of(job.arena())) ? Path.of(job.arena()).toAbsolutePath() : null;
         // Native access for JNA (the controller threads' core, see host.CpuAffinity): Java 22+ warns without it.
-        List<String> cmd = new ArrayList<>(List.of(java(), "--enable-native-access=ALL-UNNAMED", "-Xmx" + lim.heapMb() + "m", "-XX:+UseSerialGC",
-                "-XX:ActiveProcessorCount=" + lim.processors(), "-Djava.awt.headless=true",
+        List<String> java = new ArrayList<>(List.of("--enable-native-access=ALL-UNNAMED", "-Xmx" + lim.heapMb() + "m",
+                "-XX:+UseSerialGC", "-XX:ActiveProcessorCount=" + lim.processors(), "-Djava.awt.headless=true",
                 "-cp", System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main", "run",
-                "--arena", arenaArg(job.arena()), "--classpath", sub.classpath().toString(),
+                "--arena", arenaFile != null ? arenaFile.toString() : job.arena(), "--classpath", sub.classpath().toString(),
                 "--controller", sub.controller(), "--seed", Long.toString(job.seed()), "--json", "--quiet",
-                "--hang-timeout", format(lim.hangSeconds()), "--trace", trace.toString(),
-                "--sample-ms", Long.toString(lim.sampleMillis())));
+                "--hang-timeout", format(lim.hangSeconds()), "--sample-ms", Long.toString(lim.sampleMillis()),
+                "--command-log", (lim.sandbox() ? Box.CHANNEL : socket).toString(), "--wall-limit", format(lim.wallSeconds())));
         if (lim.seconds() != null) {
-            cmd.add("--seconds");
-            cmd.add(format(lim.seconds()));
+            java.addAll(List.of("--seconds", format(lim.seconds())));
+        }
+        if (lim.trusted()) {
+            java.add("--trusted");
         }
         long start = System.nanoTime();
-        Process p = new ProcessBuilder(cmd).redirectInput(ProcessBuilder.Redirect.from(nullFile())).start();
-        Tail out = new Tail(p.getInputStream(), 1 << 20, "grade-out-" + job.index());
-        Tail err = new Tail(p.getErrorStream(), 64 << 10, "grade-err-" + job.index());
         boolean killed = false;
-        try {
-            if (!p.waitFor((long) (lim.wallSeconds() * 1000), TimeUnit.MILLISECONDS)) {
-                killed = true;
-                p.descendants().forEach(ProcessHandle::destroyForcibly);
-                p.destroyForcibly();
-                p.waitFor(30, TimeUnit.SECONDS);
+        int exit;
+        String err;
+        boolean cut;
+        try (LogChannel.Receiver receiver = new LogChannel.Receiver(socket, logFile, Verdict.MAX_LOG_BYTES)) {
+            List<String> cmd;
+            if (lim.sandbox()) {
+                List<Path> read = new ArrayList<>(classpath);
+                read.add(sub.classpath().toAbsolutePath());
+                if (arenaFile != null) {
+                    read.add(arenaFile);
+                }
+                cmd = Box.command(new Box.Spec(read, List.of(), socket, false,
+                        BoxLimits.forRun(lim.heapMb(), arena.robots().size(), lim.wallSeconds()), slot), java);
+            } else {
+                cmd = new ArrayList<>();
+                cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+                cmd.addAll(java);
             }
-        } catch (InterruptedException e) {
-            p.destroyForcibly();
-            Thread.currentThread().interrupt();
-            throw new IOException("grading was interrupted", e);
+            // Standard input stays a pipe the grader never writes to: the child ends when it ends (the grader is gone).
+            Process p = new ProcessBuilder(cmd).start();
+            running.add(p);
+            try {
+                Tail out = new Tail(p.getInputStream(), 64 << 10, "grade-out-" + job.index());
+                Tail errTail = new Tail(p.getErrorStream(), 64 << 10, "grade-err-" + job.index());
+                try {
+                    if (!p.waitFor((long) (lim.wallSeconds() * 1000), TimeUnit.MILLISECONDS)) {
+                        killed = true;
+                        kill(p);
+                    }
+                } catch (InterruptedException e) {
+                    kill(p);
+                    Thread.currentThread().interrupt();
+                    throw new IOException("grading was interrupted", e);
+                }
+                exit = p.exitValue();
+                p.getOutputStream().close();
+                receiver.awaitEnd(10_000);
+                cut = receiver.overLimit();
+                out.text(2000); // drained: standard output is no result of anything
+                err = strip(errTail.text(5000), sub);
+            } finally {
+                running.remove(p);
+            }
         }
         double wall = (System.nanoTime() - start) / 1e9;
-        // The submission's class folder lies under --out: its files are named from there on, so that
-        // the report does not depend on where it was written (shards merge byte for byte into it).
-        String classes = sub.classpath().toAbsolutePath().normalize() + File.separator;
-        String absolute = sub.classpath().toAbsolutePath() + File.separator;
-        String given = sub.classpath() + File.separator;
-        RunRecord r = ChildResults.record(job, sub.controller(), killed, lim.wallSeconds(), p.exitValue(),
-                strip(out.text(5000), classes, absolute, given), strip(err.text(5000), classes, absolute, given));
-        return new Outcome(r, wall, Files.isRegularFile(trace) ? trace : null);
+        String madeIn = lim.sandbox() ? RunRecord.SANDBOX : RunRecord.NO_SANDBOX;
+        Verdict.Child child = new Verdict.Child(killed, exit, err, Files.isRegularFile(logFile) ? logFile : null, cut, madeIn);
+        RunRecord r = Verdict.judge(job, sub, arena, lim, child, trace);
+        return new Outcome(r, wall, Files.isRegularFile(trace) ? trace : null, child.log());
     }
 
-    /** A file path stays a path the child can find whatever its working folder; a bundled name stays a name. */
-    private static String arenaArg(String arena) {
-        Path p = Path.of(arena);
-        return Files.isRegularFile(p) ? p.toAbsolutePath().toString() : arena;
-    }
-
-    private static String java() {
-        return Path.of(System.getProperty("java.home"), "bin", "java").toString();
-    }
-
-    private static File nullFile() {
-        return new File(File.separatorChar == '\\' ? "NUL" : "/dev/null");
+    /** Kill a child and everything it started (bubblewrap's own child dies with it too). */
+    static void kill(Process p) {
+        p.descendants().forEach(ProcessHandle::destroyForcibly);
+        p.destroyForcibly();
+        try {
+            p.waitFor(30, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     private static String format(double d) {
         return String.format(Locale.ROOT, "%s", d == StrictMath.rint(d) ? Long.toString((long) d) : Double.toString(d));
     }
 
-    /** @return {@code text} with each of the folder prefixes taken out (the longest first, as given) */
-    private static String strip(String text, String... prefixes) {
-        for (String p : prefixes) {
+    /**
+     * The submission's class folder lies under --out: its files are named from there on, so that the
+     * report does not depend on where it was written (shards merge byte for byte into it).
+     */
+    private static String strip(String text, Submission sub) {
+        String classes = sub.classpath().toAbsolutePath().normalize() + File.separator;
+        String absolute = sub.classpath().toAbsolutePath() + File.separator;
+        String given = sub.classpath() + File.separator;
+        for (String p : new String[] {classes, absolute, given}) {
             text = text.replace(p, "");
         }
         return text;

@@ -5,23 +5,35 @@ import java.io.PrintStream;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.stream.Stream;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.files.AtomicFiles;
+import org.kheperasim.sim.sandbox.BoxProbe;
 
 /**
  * Grades a folder of submissions (or one shard of the grading): compiles them, makes each run in a
- * child JVM, {@code jobs} at a time, draws each run's trajectory and writes the report.
+ * child JVM, {@code jobs} at a time, in the operating-system sandbox unless told otherwise, judges
+ * each by the replay of its command log ({@link Verdict}), draws its trajectory and writes the report.
+ * Each finished run goes to the journal at once ({@link Journal}): a grading started again on the same
+ * folder makes only the runs it lacks and writes the same report. A signal to the grader (SIGTERM,
+ * Ctrl-C) kills the runs going; after {@code kill -9} they end by themselves (see {@link ChildSide}).
  */
 public final class Grader {
 
@@ -38,13 +50,17 @@ public final class Grader {
      * @param wallSeconds  each run's wall-clock limit, s
      * @param hangSeconds  real seconds without an API call after which a controller counts as hung
      * @param seconds      simulated seconds per run, or null for each arena's time-limit (600 s without one)
-     * @param keepTraces   keep each run's trace under {@code runs/} (else deleted once drawn)
+     * @param keepTraces   keep each run's trace and command log under {@code work/runs/} (else deleted once drawn)
      * @param progress     where the progress goes
      * @param terminal     true to redraw a bar in place, false for a line per run
+     * @param sandbox      true to make each run in the operating-system sandbox (refused where there is none)
+     * @param trustedForTests true to run the submissions trusted, uncontained in their JVM: only for tests of
+     *                     the sandbox and of the score's checks, which need a controller that escapes; no
+     *                     command-line option sets it
      */
     public record Options(Path submissions, List<String> arenas, int seeds, int jobs, Path out, GradePlan.Shard shard,
             int heapMb, double wallSeconds, double hangSeconds, Double seconds, boolean keepTraces, PrintStream progress,
-            boolean terminal) {
+            boolean terminal, boolean sandbox, boolean trustedForTests) {
     }
 
     private Grader() {
@@ -53,7 +69,7 @@ public final class Grader {
     /**
      * @param o the options
      * @return the report written to {@code o.out()}
-     * @throws IllegalArgumentException for a missing folder or a bad arena, naming the fix
+     * @throws IllegalArgumentException for a missing folder, a bad arena, or no sandbox where one is asked for, naming the fix
      */
     public static ReportFiles.Report grade(Options o) {
         if (o.jobs() < 1) {
@@ -65,41 +81,90 @@ public final class Grader {
         for (String a : o.arenas()) {
             arenas.put(a, ArenaFormat.resolve(a));
         }
+        if (o.sandbox()) {
+            BoxProbe.unavailable().ifPresent(reason -> {
+                throw new IllegalArgumentException(BoxProbe.refusal("grade", reason));
+            });
+        }
         List<GradePlan.Job> jobs = plan.shard(o.shard());
         Path work = o.out().resolve("work");
-        Map<String, Submission> subs = new LinkedHashMap<>();
-        for (Path f : folders) {
-            String student = f.getFileName().toString();
-            if (jobs.stream().anyMatch(j -> j.student().equals(student))) {
-                subs.put(student, Submissions.prepare(f, work.resolve(student)));
+        try (Journal journal = Journal.open(o.out(), Journal.identity(plan, o.shard(), String.format(Locale.ROOT,
+                "seconds=%s; hang=%s; heap=%d", o.seconds(), o.hangSeconds(), o.heapMb())))) {
+            List<GradePlan.Job> todo = jobs.stream().filter(j -> !done(journal, j, o.out())).toList();
+            Map<String, Submission> subs = new LinkedHashMap<>();
+            for (Path f : folders) {
+                String student = f.getFileName().toString();
+                if (todo.stream().anyMatch(j -> j.student().equals(student))) {
+                    subs.put(student, Submissions.prepare(f, work.resolve(student)));
+                }
             }
+            if (!todo.isEmpty()) {
+                makeRuns(o, todo, jobs.size() - todo.size(), jobs.size(), subs, arenas, work, journal);
+            }
+            List<RunRecord> records = new ArrayList<>();
+            StringBuilder timings = new StringBuilder("run,status,wall_s\n");
+            for (int i = 0; i < jobs.size(); i++) {
+                Journal.Entry e = journal.done().get(jobs.get(i).index());
+                records.add(e.record());
+                timings.append(ReportFiles.runId(jobs.get(i))).append(',').append(e.record().status().word()).append(',')
+                        .append(String.format(Locale.ROOT, "%.3f", e.wallSeconds())).append('\n');
+            }
+            ReportFiles.Report report = new ReportFiles.Report(plan, o.shard(), records);
+            ReportFiles.write(report, o.out());
+            AtomicFiles.write(o.out().resolve("timings.csv"), timings.toString());
+            return report;
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot write timings.csv: " + e.getMessage(), e);
         }
+    }
+
+    /** A run the journal holds counts as made, unless its picture has gone since. */
+    private static boolean done(Journal journal, GradePlan.Job job, Path out) {
+        Journal.Entry e = journal.done().get(job.index());
+        return e != null && (e.record().picture().isEmpty() || Files.isRegularFile(out.resolve(e.record().picture())));
+    }
+
+    private static void makeRuns(Options o, List<GradePlan.Job> todo, int alreadyDone, int total, Map<String, Submission> subs,
+            Map<String, Arena> arenas, Path work, Journal journal) {
         int processors = StrictMath.max(1, Runtime.getRuntime().availableProcessors() / o.jobs());
         ChildRun.Limits limits = new ChildRun.Limits(o.heapMb(), o.wallSeconds(), o.hangSeconds(), o.seconds(), 250,
-                processors);
+                processors, o.sandbox(), o.trustedForTests());
+        Path sockets;
         try {
             Files.createDirectories(work.resolve("runs"));
+            sockets = privateFolder();
         } catch (IOException e) {
             throw new UncheckedIOException("cannot make " + work + ": " + e.getMessage(), e);
         }
-        Progress progress = new Progress(o.progress(), jobs.size(), o.terminal());
+        Set<Process> running = ConcurrentHashMap.newKeySet();
+        // A signal to the grader (SIGTERM, Ctrl-C): no run outlives it. What finished is in the journal.
+        Thread killRuns = new Thread(() -> running.forEach(ChildRun::kill), "grade-stop-runs");
+        Runtime.getRuntime().addShutdownHook(killRuns);
+        BlockingQueue<Integer> slots = new ArrayBlockingQueue<>(o.jobs());
+        for (int i = 0; i < o.jobs(); i++) {
+            slots.add(i);
+        }
+        Progress progress = new Progress(o.progress(), total, o.terminal());
+        progress.skip(alreadyDone);
         ExecutorService pool = Executors.newFixedThreadPool(o.jobs());
-        List<Future<ChildRun.Outcome>> futures = new ArrayList<>();
-        for (GradePlan.Job job : jobs) {
+        List<Future<?>> futures = new ArrayList<>();
+        for (GradePlan.Job job : todo) {
             futures.add(pool.submit(() -> {
-                ChildRun.Outcome outcome = one(job, subs.get(job.student()), limits, arenas.get(job.arena()), o, work);
-                progress.finished(job, outcome.record());
-                return outcome;
+                int slot = slots.take();
+                try {
+                    ChildRun.Outcome outcome = one(job, subs.get(job.student()), limits, arenas.get(job.arena()), o, work,
+                            sockets, slot, running);
+                    journal.add(job, new Journal.Entry(outcome.record(), outcome.wallSeconds()));
+                    progress.finished(job, outcome.record());
+                } finally {
+                    slots.add(slot);
+                }
+                return null;
             }));
         }
-        List<RunRecord> records = new ArrayList<>();
-        StringBuilder timings = new StringBuilder("run,status,wall_s\n");
         try {
-            for (int i = 0; i < jobs.size(); i++) {
-                ChildRun.Outcome outcome = futures.get(i).get();
-                records.add(outcome.record());
-                timings.append(ReportFiles.runId(jobs.get(i))).append(',').append(outcome.record().status().word())
-                        .append(',').append(String.format(Locale.ROOT, "%.3f", outcome.wallSeconds())).append('\n');
+            for (Future<?> f : futures) {
+                f.get();
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -108,42 +173,65 @@ public final class Grader {
             throw new IllegalStateException("a run could not be made: " + e.getCause(), e.getCause());
         } finally {
             pool.shutdownNow();
+            running.forEach(ChildRun::kill);
+            try {
+                Runtime.getRuntime().removeShutdownHook(killRuns);
+            } catch (IllegalStateException shuttingDown) {
+                // the hook is killing the runs
+            }
+            deleteTree(sockets);
         }
-        ReportFiles.Report report = new ReportFiles.Report(plan, o.shard(), records);
-        ReportFiles.write(report, o.out());
-        try {
-            AtomicFiles.write(o.out().resolve("timings.csv"), timings.toString());
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot write timings.csv: " + e.getMessage(), e);
-        }
-        return report;
     }
 
     private static ChildRun.Outcome one(GradePlan.Job job, Submission sub, ChildRun.Limits limits, Arena arena, Options o,
-            Path work) throws IOException {
+            Path work, Path sockets, int slot, Set<Process> running) throws IOException {
         if (!sub.runnable()) {
             RunRecord r = new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.COMPILE_FAILED, 0,
-                    arena.assignment().maxPoints(), 0, 0, sub.controller(), sub.problem(), "");
-            return new ChildRun.Outcome(r, 0, null);
+                    arena.assignment().maxPoints(), 0, 0, sub.controller(), sub.problem(), "", "");
+            return new ChildRun.Outcome(r, 0, null, null);
         }
-        ChildRun.Outcome outcome = ChildRun.run(job, sub, limits, work.resolve("runs"));
+        ChildRun.Outcome outcome = ChildRun.run(job, sub, arena, limits, work.resolve("runs"), sockets, slot, running);
         RunRecord r = outcome.record();
         if (r.max() == 0 && arena.assignment().hasTasks()) {
             r = new RunRecord(r.student(), r.arena(), r.seed(), r.status(), 0, arena.assignment().maxPoints(), 0,
-                    r.simulatedSeconds(), r.controller(), r.detail(), "");
+                    r.simulatedSeconds(), r.controller(), r.detail(), "", r.madeIn());
         }
-        if (outcome.trace() != null) {
-            String picture = "img/" + ReportFiles.runId(job) + ".png";
-            try {
+        try {
+            if (outcome.trace() != null) {
+                // The picture is drawn from the grader's own replay, never from anything the run wrote.
+                String picture = "img/" + ReportFiles.runId(job) + ".png";
                 TrajectoryPicture.draw(arena, outcome.trace(), o.out().resolve(picture), 320);
-                r = new RunRecord(r.student(), r.arena(), r.seed(), r.status(), r.points(), r.max(), r.percent(),
-                        r.simulatedSeconds(), r.controller(), r.detail(), picture);
-            } finally {
-                if (!o.keepTraces()) {
-                    Files.deleteIfExists(outcome.trace());
+                r = r.withPicture(picture);
+            }
+        } finally {
+            if (!o.keepTraces()) {
+                for (Path p : new Path[] {outcome.trace(), outcome.log()}) {
+                    if (p != null) {
+                        Files.deleteIfExists(p);
+                    }
                 }
             }
         }
-        return new ChildRun.Outcome(r, outcome.wallSeconds(), outcome.trace());
+        return new ChildRun.Outcome(r, outcome.wallSeconds(), outcome.trace(), outcome.log());
+    }
+
+    /** A folder only the grader's user may enter: the runs' sockets live there (a box sees only its own). */
+    private static Path privateFolder() throws IOException {
+        try {
+            return Files.createTempDirectory("khepera-grade-", PosixFilePermissions.asFileAttribute(
+                    PosixFilePermissions.fromString("rwx------")));
+        } catch (UnsupportedOperationException e) {
+            return Files.createTempDirectory("khepera-grade-");
+        }
+    }
+
+    private static void deleteTree(Path folder) {
+        try (Stream<Path> s = Files.walk(folder)) {
+            for (Path p : s.sorted(Comparator.reverseOrder()).toList()) {
+                Files.deleteIfExists(p);
+            }
+        } catch (IOException e) {
+            // a temporary folder left behind
+        }
     }
 }

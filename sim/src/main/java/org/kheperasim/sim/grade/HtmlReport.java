@@ -21,12 +21,13 @@ final class HtmlReport {
                 .append(report.plan().arenas().size()).append(" arenas &times; ").append(report.plan().seeds())
                 .append(" seeds = ").append(report.runs().size()).append(" runs")
                 .append(report.shard().n() > 1 ? " (shard " + report.shard() + ")" : "")
+                .append("; ").append(esc(TextTable.madeIn(report.runs())))
                 .append(". Also as <a href=\"results.csv\">CSV</a> and <a href=\"results.json\">JSON</a>.</p>\n");
         for (Map.Entry<String, List<Ranking.Entry>> e : Ranking.of(report.runs()).entrySet()) {
             sb.append("<h2>Arena ").append(esc(e.getKey())).append("</h2>\n<table><tr><th>rank</th><th>student</th>"
                     + "<th>mean score %</th><th>mean points</th><th>runs by seed</th></tr>\n");
             for (Ranking.Entry x : e.getValue()) {
-                sb.append("<tr><td>").append(x.rank()).append("</td><td>").append(esc(x.student())).append("</td><td>")
+                sb.append("<tr><td>").append(x.ranked() ? Integer.toString(x.rank()) : "&ndash;").append("</td><td>").append(esc(x.student())).append("</td><td>")
                         .append(ReportFiles.num(x.meanPercent())).append("</td><td>").append(ReportFiles.num(x.meanPoints()))
                         .append("</td><td>");
                 for (RunRecord r : x.runs()) {
@@ -44,7 +45,9 @@ final class HtmlReport {
                     }
                     sb.append("<b>").append(esc(r.student())).append("</b> seed ").append(r.seed()).append("<br>")
                             .append(status(r)).append(" &middot; ").append(ReportFiles.num(r.points())).append('/')
-                            .append(ReportFiles.num(r.max())).append(" points<br><span class=\"detail\">")
+                            .append(ReportFiles.num(r.max())).append(" points")
+                            .append(r.madeIn().equals(RunRecord.NO_SANDBOX) ? " &middot; <b>no sandbox</b>" : "")
+                            .append("<br><span class=\"detail\">")
                             .append(esc(r.detail())).append("</span></div>\n");
                 }
             }

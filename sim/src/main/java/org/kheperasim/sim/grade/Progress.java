@@ -14,6 +14,8 @@ final class Progress {
     private final boolean terminal;
     private final long start = System.nanoTime();
     private int done;
+    /** Runs a journal held from an earlier start: done, but not timed here. */
+    private int skipped;
     private int failed;
 
     Progress(PrintStream out, int total, boolean terminal) {
@@ -22,13 +24,23 @@ final class Progress {
         this.terminal = terminal;
     }
 
+    /** @param runs runs a journal held from an earlier start: counted as done, not timed */
+    synchronized void skip(int runs) {
+        done += runs;
+        skipped = runs;
+        if (runs > 0) {
+            out.println(String.format(Locale.ROOT, "%d of %d runs were made before (the journal holds them); making the"
+                    + " other %d", runs, total, total - runs));
+        }
+    }
+
     synchronized void finished(GradePlan.Job job, RunRecord r) {
         done++;
         if (r.status() != RunStatus.OK) {
             failed++;
         }
         double elapsed = (System.nanoTime() - start) / 1e9;
-        double left = done == 0 ? 0 : elapsed / done * (total - done);
+        double left = done == skipped ? 0 : elapsed / (done - skipped) * (total - done);
         if (terminal) {
             int width = 30;
             int filled = total == 0 ? width : done * width / total;

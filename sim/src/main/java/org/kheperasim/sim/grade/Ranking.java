@@ -9,20 +9,25 @@ import java.util.Map;
 /**
  * The students of one assignment (arena) ranked by their mean score over the seeds; a run that
  * failed counts with the points it earned before it failed (none, when it did not run). Equal means
- * share a rank.
+ * share a rank. A student with a run found {@link RunStatus#TAMPERED tampered} in an arena is not
+ * ranked there: listed after the ranked ones, with rank 0.
  */
 final class Ranking {
 
     /**
      * One student's line.
      *
-     * @param rank        1 for the best; equal means share a rank
+     * @param rank        1 for the best; equal means share a rank; 0 for a student not ranked (tampered)
      * @param student     the student
      * @param meanPercent the mean of the runs' percentages
      * @param meanPoints  the mean of the runs' points
      * @param runs        the runs, by seed
      */
     record Entry(int rank, String student, double meanPercent, double meanPoints, List<RunRecord> runs) {
+        /** @return false for a student left out of the ranking */
+        boolean ranked() {
+            return rank > 0;
+        }
     }
 
     private Ranking() {
@@ -47,15 +52,21 @@ final class Ranking {
                 double pts = sorted.stream().mapToDouble(RunRecord::points).average().orElse(0);
                 entries.add(new Entry(0, student, ReportFiles.round2(pct), ReportFiles.round2(pts), sorted));
             });
-            entries.sort(Comparator.comparingDouble(Entry::meanPercent).reversed().thenComparing(Entry::student));
+            entries.sort(Comparator.comparing(Ranking::tampered).thenComparing(Comparator.comparingDouble(Entry::meanPercent)
+                    .reversed()).thenComparing(Entry::student));
             List<Entry> ranked = new ArrayList<>();
             for (int i = 0; i < entries.size(); i++) {
                 Entry e = entries.get(i);
-                int rank = i > 0 && entries.get(i - 1).meanPercent() == e.meanPercent() ? ranked.get(i - 1).rank() : i + 1;
+                int rank = tampered(e) ? 0
+                        : i > 0 && entries.get(i - 1).meanPercent() == e.meanPercent() ? ranked.get(i - 1).rank() : i + 1;
                 ranked.add(new Entry(rank, e.student(), e.meanPercent(), e.meanPoints(), e.runs()));
             }
             out.put(arena, ranked);
         });
         return out;
+    }
+
+    private static boolean tampered(Entry e) {
+        return e.runs().stream().anyMatch(r -> r.status() == RunStatus.TAMPERED);
     }
 }

@@ -22,7 +22,8 @@ public final class ReportFiles {
     /** The first field of {@code results.json}. */
     public static final String FORMAT = "khepera-grade 1";
     /** The columns of {@code results.csv}. */
-    public static final String CSV_HEADER = "student,arena,seed,status,points,max,percent,simulated_s,controller,picture,detail";
+    public static final String CSV_HEADER = "student,arena,seed,status,points,max,percent,simulated_s,controller,picture,detail,"
+            + "made_in";
 
     /**
      * A report: the plan it covers, the slice made, and the runs.
@@ -81,7 +82,7 @@ public final class ReportFiles {
                     .append(r.status().word()).append(',').append(num(r.points())).append(',').append(num(r.max())).append(',')
                     .append(num(r.percent())).append(',').append(String.format(Locale.ROOT, "%.3f", r.simulatedSeconds()))
                     .append(',').append(csvField(r.controller())).append(',').append(csvField(r.picture())).append(',')
-                    .append(csvField(r.detail())).append('\n');
+                    .append(csvField(r.detail())).append(',').append(r.madeIn()).append('\n');
         }
         return sb.toString();
     }
@@ -94,24 +95,16 @@ public final class ReportFiles {
         sb.append(",\n  \"shard\": ").append(JsonValues.quote(report.shard().toString()));
         sb.append(",\n  \"runs\": [");
         for (int i = 0; i < report.runs().size(); i++) {
-            RunRecord r = report.runs().get(i);
-            sb.append(i > 0 ? "," : "").append("\n    {\"student\": ").append(JsonValues.quote(r.student()))
-                    .append(", \"arena\": ").append(JsonValues.quote(r.arena())).append(", \"seed\": ").append(r.seed())
-                    .append(", \"status\": ").append(JsonValues.quote(r.status().word()))
-                    .append(", \"points\": ").append(num(r.points())).append(", \"max\": ").append(num(r.max()))
-                    .append(", \"percent\": ").append(num(r.percent()))
-                    .append(", \"simulatedSeconds\": ").append(String.format(Locale.ROOT, "%.3f", r.simulatedSeconds()))
-                    .append(", \"controller\": ").append(JsonValues.quote(r.controller()))
-                    .append(", \"picture\": ").append(JsonValues.quote(r.picture()))
-                    .append(", \"detail\": ").append(JsonValues.quote(r.detail())).append('}');
+            sb.append(i > 0 ? "," : "").append("\n    ").append(json(report.runs().get(i)));
         }
         sb.append("\n  ],\n  \"ranking\": {");
         boolean firstArena = true;
         for (Map.Entry<String, List<Ranking.Entry>> e : Ranking.of(report.runs()).entrySet()) {
             sb.append(firstArena ? "" : ",").append("\n    ").append(JsonValues.quote(e.getKey())).append(": [");
             firstArena = false;
-            for (int i = 0; i < e.getValue().size(); i++) {
-                Ranking.Entry r = e.getValue().get(i);
+            List<Ranking.Entry> ranked = e.getValue().stream().filter(Ranking.Entry::ranked).toList();
+            for (int i = 0; i < ranked.size(); i++) {
+                Ranking.Entry r = ranked.get(i);
                 sb.append(i > 0 ? ", " : "").append("{\"rank\": ").append(r.rank()).append(", \"student\": ")
                         .append(JsonValues.quote(r.student())).append(", \"meanPercent\": ").append(num(r.meanPercent()))
                         .append(", \"meanPoints\": ").append(num(r.meanPoints())).append('}');
@@ -119,6 +112,28 @@ public final class ReportFiles {
             sb.append(']');
         }
         return sb.append("\n  }\n}\n").toString();
+    }
+
+    /** @param r a run @return it as one JSON object on one line (in {@code results.json} and the journal) */
+    static String json(RunRecord r) {
+        return new StringBuilder("{\"student\": ").append(JsonValues.quote(r.student()))
+                .append(", \"arena\": ").append(JsonValues.quote(r.arena())).append(", \"seed\": ").append(r.seed())
+                .append(", \"status\": ").append(JsonValues.quote(r.status().word()))
+                .append(", \"points\": ").append(num(r.points())).append(", \"max\": ").append(num(r.max()))
+                .append(", \"percent\": ").append(num(r.percent()))
+                .append(", \"simulatedSeconds\": ").append(String.format(Locale.ROOT, "%.3f", r.simulatedSeconds()))
+                .append(", \"controller\": ").append(JsonValues.quote(r.controller()))
+                .append(", \"picture\": ").append(JsonValues.quote(r.picture()))
+                .append(", \"detail\": ").append(JsonValues.quote(r.detail()))
+                .append(", \"madeIn\": ").append(JsonValues.quote(r.madeIn())).append('}').toString();
+    }
+
+    /** @param r a run's JSON object, parsed @return the run */
+    static RunRecord record(Map<String, Object> r) {
+        return new RunRecord((String) r.get("student"), (String) r.get("arena"), ((Number) r.get("seed")).longValue(),
+                RunStatus.ofWord((String) r.get("status")), dbl(r.get("points")), dbl(r.get("max")),
+                dbl(r.get("percent")), dbl(r.get("simulatedSeconds")), (String) r.get("controller"),
+                (String) r.get("detail"), (String) r.get("picture"), (String) r.get("madeIn"));
     }
 
     /**
@@ -143,11 +158,7 @@ public final class ReportFiles {
                 ((Number) m.get("seeds")).intValue());
         List<RunRecord> runs = new ArrayList<>();
         for (Object o : (List<Object>) m.get("runs")) {
-            Map<String, Object> r = (Map<String, Object>) o;
-            runs.add(new RunRecord((String) r.get("student"), (String) r.get("arena"), ((Number) r.get("seed")).longValue(),
-                    RunStatus.ofWord((String) r.get("status")), dbl(r.get("points")), dbl(r.get("max")),
-                    dbl(r.get("percent")), dbl(r.get("simulatedSeconds")), (String) r.get("controller"),
-                    (String) r.get("detail"), (String) r.get("picture")));
+            runs.add(record((Map<String, Object>) o));
         }
         return new Report(plan, GradePlan.Shard.parse((String) m.get("shard")), runs);
     }
@@ -173,7 +184,7 @@ public final class ReportFiles {
             List<String> f = csvSplit(line);
             out.add(new RunRecord(f.get(0), f.get(1), Long.parseLong(f.get(2)), RunStatus.ofWord(f.get(3)),
                     Double.parseDouble(f.get(4)), Double.parseDouble(f.get(5)), Double.parseDouble(f.get(6)),
-                    Double.parseDouble(f.get(7)), f.get(8), f.get(10), f.get(9)));
+                    Double.parseDouble(f.get(7)), f.get(8), f.get(10), f.get(9), f.size() > 11 ? f.get(11) : ""));
         }
         return out;
     }

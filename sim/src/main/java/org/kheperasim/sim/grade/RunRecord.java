@@ -16,9 +16,15 @@ package org.kheperasim.sim.grade;
  * @param controller       the controller class that ran (empty when none)
  * @param detail           the failure or the score's details, one line
  * @param picture          the trajectory picture, relative to the report folder (empty when none)
+ * @param madeIn           how the run was made: {@link #SANDBOX}, {@link #NO_SANDBOX}, or empty when it was not
+ *                         (it did not compile)
  */
 public record RunRecord(String student, String arena, long seed, RunStatus status, double points, double max,
-        double percent, double simulatedSeconds, String controller, String detail, String picture) {
+        double percent, double simulatedSeconds, String controller, String detail, String picture, String madeIn) {
+    /** Made in the operating-system sandbox (docs/grading.md, "The sandbox"). */
+    public static final String SANDBOX = "sandbox";
+    /** Made without it ({@code grade --no-sandbox}). */
+    public static final String NO_SANDBOX = "no_sandbox";
 
     /** Keeps the detail to one line; rounds the numbers as the report writes them (2 decimals; 3 for seconds). */
     public RunRecord {
@@ -29,5 +35,12 @@ public record RunRecord(String student, String arena, long seed, RunStatus statu
         detail = detail == null ? "" : detail.replaceAll("[\\r\\n]+", " ").strip();
         controller = controller == null ? "" : controller;
         picture = picture == null ? "" : picture;
+        madeIn = madeIn == null ? "" : madeIn;
+    }
+
+    /** @param picture the trajectory picture @return this run with it */
+    RunRecord withPicture(String picture) {
+        return new RunRecord(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture,
+                madeIn);
     }
 }

@@ -16,6 +16,12 @@ public enum RunStatus {
     EXCEEDED_MEMORY("exceeded memory"),
     /** The controller broke a containment rule (System.exit, a forbidden call; docs/controller-rules.md). */
     BROKE_RULE("broke a rule"),
+    /**
+     * The run's own result differs from the replay of its command log, its log does not fit the run,
+     * or its JVM ended with success without handing its result over: something wrote the result
+     * that was not the simulator. Not ranked.
+     */
+    TAMPERED("tampered"),
     /** The run could not be made for another reason (the message says which). */
     ERROR("error");
 

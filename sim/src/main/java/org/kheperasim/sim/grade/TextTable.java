@@ -27,13 +27,25 @@ final class TextTable {
             for (Ranking.Entry x : entries) {
                 String statuses = x.runs().stream().map(r -> r.status() == RunStatus.OK ? ReportFiles.num(r.percent())
                         : r.status().label()).collect(Collectors.joining(" | "));
-                sb.append(String.format(Locale.ROOT, "%4d  %-" + nameWidth + "s  %7s  %7s  %s%n", x.rank(), x.student(),
+                sb.append(String.format(Locale.ROOT, "%4s  %-" + nameWidth + "s  %7s  %7s  %s%n", x.ranked() ? x.rank() : "-", x.student(),
                         ReportFiles.num(x.meanPercent()), ReportFiles.num(x.meanPoints()), statuses));
             }
             sb.append('\n');
         }
         sb.append(runs.size()).append(" runs: ").append(counts.entrySet().stream()
-                .map(c -> c.getValue() + " " + c.getKey().label()).collect(Collectors.joining(", "))).append('\n');
+                .map(c -> c.getValue() + " " + c.getKey().label()).collect(Collectors.joining(", ")))
+                .append("; ").append(madeIn(runs)).append('\n');
         return sb.toString();
+    }
+
+    /** @return how the runs were made: all in the sandbox, none, or how many each way */
+    static String madeIn(List<RunRecord> runs) {
+        long boxed = runs.stream().filter(r -> r.madeIn().equals(RunRecord.SANDBOX)).count();
+        long bare = runs.stream().filter(r -> r.madeIn().equals(RunRecord.NO_SANDBOX)).count();
+        if (bare == 0) {
+            return boxed == 0 ? "none was run" : "every run made in the sandbox";
+        }
+        return boxed == 0 ? "made WITHOUT the sandbox (--no-sandbox)"
+                : boxed + " made in the sandbox, " + bare + " WITHOUT it (--no-sandbox)";
     }
 }

@@ -1,9 +1,12 @@
 /**
  * Grading a class: every submission (one folder per student, {@code .java} or {@code .class}) is
  * compiled, then run in every arena with every seed, each run in a child JVM with a heap limit, a
- * simulated-time limit and a wall-clock limit, under the containment rules; the runs are scored by
- * their arena's assignment ({@link org.kheperasim.sim.task.Score}) and reported as a table, CSV, JSON
- * and an HTML page with a picture of each run's trajectory. A grading can be cut into deterministic
+ * simulated-time limit and a wall-clock limit, under the containment rules and inside the
+ * operating-system sandbox ({@code sim.sandbox}); each run hands over its command log, which the
+ * grader replays and scores by the arena's assignment ({@link org.kheperasim.sim.task.Score}), the
+ * run's own result only compared with it ({@link org.kheperasim.sim.grade.Verdict}); each finished run
+ * goes to a journal ({@link org.kheperasim.sim.grade.Journal}), so a grading goes on where it stopped.
+ * The runs are reported as a table, CSV, JSON and an HTML page with a picture of each run's trajectory. A grading can be cut into deterministic
  * shards ({@link org.kheperasim.sim.grade.GradePlan#shard}) that {@link org.kheperasim.sim.grade.ReportFiles}
  * merges into the same report. Documented in {@code docs/grading.md}.
  */

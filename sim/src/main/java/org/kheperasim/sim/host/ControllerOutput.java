@@ -10,10 +10,16 @@ import java.nio.charset.StandardCharsets;
  * thread prints goes to the run's console, stamped with its simulated time (the window shows it;
  * headless runs print it), as {@code MessagePasser} messages do; {@code System.err} lines as errors.
  * Printing costs no simulated time. Lines printed outside a run go to the real streams.
+ *
+ * <p>A line is at most {@link #MAX_LINE} characters: a longer one is cut into lines of that length,
+ * so a controller that prints without a newline cannot fill the heap. How much a run prints in all is
+ * bounded by its console (a headless run's, see {@code run.BoundedConsole}).
  */
 public final class ControllerOutput {
     private static final PrintStream OUT = new PrintStream(new LineRouter(false), true, StandardCharsets.UTF_8);
     private static final PrintStream ERR = new PrintStream(new LineRouter(true), true, StandardCharsets.UTF_8);
+    /** The longest line handed on, bytes; a longer one is cut. */
+    static final int MAX_LINE = 8192;
 
     private ControllerOutput() {
     }
@@ -42,7 +48,11 @@ public final class ControllerOutput {
             if (b == '\n') {
                 endLine();
             } else {
-                pending.get().write(b);
+                ByteArrayOutputStream buffer = pending.get();
+                buffer.write(b);
+                if (buffer.size() >= MAX_LINE) {
+                    endLine();
+                }
             }
         }
 
@@ -60,8 +70,12 @@ public final class ControllerOutput {
             if (line.endsWith("\r")) {
                 line = line.substring(0, line.length() - 1);
             }
-            if (SimClock.current() instanceof ControllerClock c) {
+            SimClock.Clock clock = SimClock.current();
+            if (clock instanceof ControllerClock c) {
                 c.say(error ? ConsoleLine.Kind.ERROR : ConsoleLine.Kind.MESSAGE, line);
+            } else if (clock instanceof StepClock s) {
+                // A step controller's print goes to the run's console too, stamped with the step's time.
+                s.say(error ? ConsoleLine.Kind.ERROR : ConsoleLine.Kind.MESSAGE, line);
             } else {
                 (error ? System.err : System.out).println(line);
             }

@@ -12,6 +12,11 @@ final class StepClock implements SimClock.Clock {
         this.host = host;
     }
 
+    /** A line the step's code printed, for the run's console. */
+    void say(ConsoleLine.Kind kind, String text) {
+        host.say(kind, text);
+    }
+
     @Override
     public void sleepNanos(long nanos) {
         host.sleepNanos(nanos);

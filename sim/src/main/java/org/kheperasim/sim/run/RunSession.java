@@ -89,6 +89,15 @@ public final class RunSession implements AutoCloseable {
      */
     public RunSession(Arena arena, List<RobotSetup> setups, ControllerCatalog catalog, long seed, ConsoleSink console,
             HostOptions hostOptions) {
+        this(arena, setups, catalog, seed, console, hostOptions, null);
+    }
+
+    /**
+     * As {@link #RunSession(Arena, List, ControllerCatalog, long, ConsoleSink, HostOptions)}, with a
+     * recorder that hears every command from the controllers' construction on (a command log).
+     */
+    RunSession(Arena arena, List<RobotSetup> setups, ControllerCatalog catalog, long seed, ConsoleSink console,
+            HostOptions hostOptions, org.kheperasim.sim.engine.DriverRecorder recorder) {
         Lockstep.prepare();
         this.arena = Objects.requireNonNull(arena, "no arena given");
         if (setups.size() != arena.robots().size()) {
@@ -116,6 +125,9 @@ public final class RunSession implements AutoCloseable {
         }
         List<Class<?>> types = loaded(loading);
         this.engine = new Engine(world, seed);
+        if (recorder != null) {
+            engine.record(recorder);
+        }
         this.windowsMark = windows.mark();
         String cls = null;
         for (int i = 0; i < arena.robots().size(); i++) {

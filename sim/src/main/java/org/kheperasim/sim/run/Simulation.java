@@ -27,6 +27,9 @@ import org.kheperasim.sim.trace.LineFileWriter;
 public final class Simulation {
     private final Builder b;
 
+    /** The controller output a headless run prints at most, characters (1 MiB). */
+    public static final long DEFAULT_OUTPUT_LIMIT = 1L << 20;
+
     private Simulation(Builder b) {
         this.b = b;
     }
@@ -62,6 +65,9 @@ public final class Simulation {
         private boolean trusted;
         private EditLog edits = new EditLog();
         private BooleanSupplier stop = () -> false;
+        private org.kheperasim.sim.engine.DriverRecorder recorder;
+        private java.util.function.Consumer<RunSession> started = session -> { };
+        private long outputLimit = DEFAULT_OUTPUT_LIMIT;
         private final java.util.Map<Integer, String> robotOverrides = new java.util.TreeMap<>();
         private final java.util.Map<Integer, Settings> robotSettingOverrides = new java.util.TreeMap<>();
 
@@ -230,6 +236,59 @@ public final class Simulation {
             return this;
         }
 
+        /**
+         * @param recorder hears every command the controllers send and when they wake, from their
+         *     construction on: a command log that replays the run without them
+         *     ({@code org.kheperasim.sim.commandlog})
+         * @return this
+         */
+        public Builder record(org.kheperasim.sim.engine.DriverRecorder recorder) {
+            this.recorder = recorder;
+            return this;
+        }
+
+        /**
+         * @param started told the session once it is set up (its controllers made), before it runs
+         * @return this
+         */
+        public Builder onStart(java.util.function.Consumer<RunSession> started) {
+            this.started = Objects.requireNonNull(started);
+            return this;
+        }
+
+        /**
+         * @param chars the most characters of controller output (its lines' text) the console gets in
+         *     this run; the rest is dropped, and a note at the end says how much (see {@link BoundedConsole})
+         * @return this
+         */
+        public Builder outputLimit(long chars) {
+            if (chars < 0) {
+                throw new IllegalArgumentException("an output limit of " + chars + " characters: give 0 or more");
+            }
+            this.outputLimit = chars;
+            return this;
+        }
+
+        /** @return the arena this run is set up in (null until given) */
+        public Arena arena() {
+            return arena;
+        }
+
+        /** @return each robot's settings, in the arena's order */
+        public List<Settings> robotSettings() {
+            return setups().stream().map(RobotSetup::settings).toList();
+        }
+
+        /** @return the run's length, simulated s */
+        public double seconds() {
+            return seconds;
+        }
+
+        /** @return the trace's sample period, ms */
+        public long sampleMillis() {
+            return sampleMillis;
+        }
+
         /** @return the seed this run will use (drawn now if none was given) */
         public long seed() {
             if (seed == null) {
@@ -257,8 +316,9 @@ public final class Simulation {
         long seed = b.seed();
         long endNanos = (long) StrictMath.rint(b.seconds * 1e9);
         b.edits.checkWithin(endNanos);
+        BoundedConsole console = new BoundedConsole(b.console, b.outputLimit);
         RunSession session = new RunSession(b.arena, b.setups(), new ControllerCatalog(b.classpath, b.trusted), seed,
-                b.console, b.hostOptions);
+                console, b.hostOptions, b.recorder);
         for (Subscription l : b.listeners) {
             session.addListener(l.listener(), l.periodNanos());
         }
@@ -279,9 +339,11 @@ public final class Simulation {
 
         long wallStart = System.nanoTime();
         try {
+            b.started.accept(session);
             replay(session, endNanos);
         } finally {
             session.close();
+            console.finish();
         }
         double wall = (System.nanoTime() - wallStart) / 1e9;
         return session.result(wall);

@@ -7,7 +7,9 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
+import org.kheperasim.sim.task.Score;
 
 /** The plan's order and its shards: every run once, in a fixed order, whatever N. */
 class GradePlanTest {
@@ -43,20 +45,32 @@ class GradePlanTest {
     @Test
     void childResultsMapStatusesAndDropMachineNumbers() {
         GradePlan.Job job = plan.jobs().get(0);
-        RunRecord killed = ChildResults.record(job, "Robot", true, 60, 137, "", "seed 1\n");
+        RunRecord killed = ChildResults.noResult(job, "Robot", true, 60, 137, "seed 1\n", RunRecord.SANDBOX);
         assertEquals(RunStatus.HUNG, killed.status());
         assertTrue(killed.detail().contains("wall-clock limit of 60 s"), killed.detail());
-        RunRecord oom = ChildResults.record(job, "Robot", false, 60, 1, "", "Exception: java.lang.OutOfMemoryError: Java heap space\n");
+        RunRecord ended = ChildResults.noResult(job, "Robot", false, 60, ChildSide.WALL_LIMIT_EXIT, "", RunRecord.SANDBOX);
+        assertEquals(RunStatus.HUNG, ended.status(), "a run that ended itself at its wall-clock limit");
+        RunRecord oom = ChildResults.noResult(job, "Robot", false, 60, 1, "Exception: java.lang.OutOfMemoryError: Java heap space\n",
+                RunRecord.SANDBOX);
         assertEquals(RunStatus.EXCEEDED_MEMORY, oom.status());
-        RunRecord refused = ChildResults.record(job, "Robot", false, 60, 1, "",
-                "khepera-sim: error: controller Robot was refused: Robot.java:3: uses java.io.File.delete\n");
+        RunRecord refused = ChildResults.noResult(job, "Robot", false, 60, 2,
+                "khepera-sim: error: controller Robot was refused: Robot.java:3: uses java.io.File.delete\n", RunRecord.SANDBOX);
         assertEquals(RunStatus.BROKE_RULE, refused.status());
+        RunRecord exitZero = ChildResults.noResult(job, "Robot", false, 60, 0, "", RunRecord.SANDBOX);
+        assertEquals(RunStatus.TAMPERED, exitZero.status(), "success without a whole log: the simulator did not end the JVM");
+        RunRecord crashed = ChildResults.noResult(job, "Robot", false, 60, 134, "# A fatal error has been detected\n",
+                RunRecord.NO_SANDBOX);
+        assertEquals(RunStatus.ERROR, crashed.status());
+        assertTrue(crashed.detail().startsWith("killed by signal 6 (exit status 134)"), crashed.detail());
         assertEquals("controller Hog (Hog) allocated without bound", ChildResults.fault(
                 "[    0.002 s] ERROR Hog: controller Hog (Hog) allocated without bound (102 of 123 MB of the heap still in use"
                         + " after a garbage collection); the controller was stopped and the robot's motors set to 0."));
-        RunRecord ok = ChildResults.record(job, "Robot", false, 60, 0, "seed 1\n{\"simulatedSeconds\":60,\"robots\":[{\"controllerStatus\":"
-                + "\"stopped\",\"failure\":null}],\"score\":{\"points\":12.345,\"max\":100,\"percent\":12.345,\"tasks\":[{\"task\":"
-                + "\"task visit c*\",\"detail\":\"3/25 regions\"}]}}\n", "");
-        assertEquals(new RunRecord("alice", "maze", 1, RunStatus.OK, 12.35, 100, 12.35, 60, "Robot", "visit c*: 3/25 regions", ""), ok);
+        Map<String, Object> claim = Map.of("robots", List.of(Map.of("controllerStatus", "stopped")));
+        Score score = new Score(List.of(new Score.Part("task visit c*", 0.1235, 12.345, 100, "3/25 regions")), 12.345, 100);
+        RunRecord ok = ChildResults.fromClaim(job, "Robot", claim, score, 60, "[  60.000 s] khepera-sim: dropped 12 lines"
+                + " (40 KB) of controller output over the run's limit of 1049 KB; the last 8 error lines past it are above\n", RunRecord.SANDBOX);
+        assertEquals(new RunRecord("alice", "maze", 1, RunStatus.OK, 12.35, 100, 12.35, 60, "Robot",
+                "visit c*: 3/25 regions | dropped 12 lines (40 KB) of controller output over the run's limit of 1049 KB", "",
+                RunRecord.SANDBOX), ok);
     }
 }

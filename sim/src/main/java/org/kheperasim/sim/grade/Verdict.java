@@ -1,0 +1,165 @@
+package org.kheperasim.sim.grade;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.io.Writer;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Collections;
+import java.util.Locale;
+import java.util.Map;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.commandlog.CommandLogReader;
+import org.kheperasim.sim.commandlog.LogFormatException;
+import org.kheperasim.sim.commandlog.OpenLoopReplay;
+import org.kheperasim.sim.commandlog.ReplayMismatchException;
+import org.kheperasim.sim.commandlog.TornLogException;
+import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.task.RunFacts;
+import org.kheperasim.sim.task.Score;
+
+/**
+ * The grader's judgement of one child run: it replays the run's command log in its own engine, with
+ * no student code, scores the replay, and compares the run's own result with it. A result that
+ * differs, a log that does not fit the run, or a JVM that ended with success without a whole log is
+ * {@link RunStatus#TAMPERED}; an exit status other than the one the run's result calls for is an
+ * error; only then does the run's own word on how each controller ended count (it is the status, never
+ * the score).
+ */
+final class Verdict {
+    /** The most of a command log kept, compressed (a long run of a busy controller: a few hundred KB). */
+    static final long MAX_LOG_BYTES = 256L << 20;
+    /** The most text read from it, uncompressed. */
+    static final long MAX_LOG_TEXT = 2L << 30;
+
+    /**
+     * What a child left.
+     *
+     * @param killed  true when the grader killed it at the wall-clock limit
+     * @param exit    its exit status
+     * @param err     the tail of its standard error (folders of the submission taken out)
+     * @param log     its command log as received (null when none came)
+     * @param logCut  true when it sent more than {@link #MAX_LOG_BYTES}
+     * @param madeIn  how it was made
+     */
+    record Child(boolean killed, int exit, String err, Path log, boolean logCut, String madeIn) {
+    }
+
+    private Verdict() {
+    }
+
+    /**
+     * @param job   the run
+     * @param sub   the submission
+     * @param arena the arena
+     * @param lim   the grading's limits
+     * @param child what the child left
+     * @param trace where the replay's trace goes
+     * @return the run's record
+     */
+    static RunRecord judge(GradePlan.Job job, Submission sub, Arena arena, ChildRun.Limits lim, Child child, Path trace) {
+        String controller = sub.controller();
+        if (child.killed() || child.exit() == ChildSide.WALL_LIMIT_EXIT) {
+            return ChildResults.noResult(job, controller, true, lim.wallSeconds(), child.exit(), child.err(), child.madeIn());
+        }
+        if (child.logCut()) {
+            return new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.ERROR, 0, 0, 0, 0, controller,
+                    "its command log passed the limit of " + (MAX_LOG_BYTES >> 20) + " MiB (compressed) and was cut off", "",
+                    child.madeIn());
+        }
+        double seconds = lim.seconds() != null ? lim.seconds() : arena.assignment().secondsOr(600);
+        OpenLoopReplay.Run run = new OpenLoopReplay.Run(arena, job.seed(), (long) StrictMath.rint(seconds * 1e9),
+                lim.sampleMillis(), Collections.nCopies(arena.robots().size(), Settings.defaults()));
+        OpenLoopReplay.Outcome replay;
+        try (BufferedReader in = open(child.log()); Writer out = Files.newBufferedWriter(trace, StandardCharsets.UTF_8)) {
+            if (in == null) {
+                throw new TornLogException(0, "no command log came");
+            }
+            replay = OpenLoopReplay.replay(run, new CommandLogReader(in), out);
+        } catch (UncheckedIOException e) {
+            deleteQuietly(trace);
+            return new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.ERROR, 0, 0, 0, 0, controller,
+                    "its command log could not be read: " + e.getMessage(), "", child.madeIn());
+        } catch (TornLogException e) {
+            deleteQuietly(trace);
+            // No whole log: the run did not end as the simulator ends it.
+            return ChildResults.noResult(job, controller, false, lim.wallSeconds(), child.exit(), child.err(), child.madeIn());
+        } catch (ReplayMismatchException | LogFormatException e) {
+            deleteQuietly(trace);
+            return ChildResults.tampered(job, controller, "its command log does not fit the run (" + e.getMessage() + ")", null,
+                    0, child.madeIn());
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot replay " + child.log() + ": " + e.getMessage(), e);
+        }
+        Score score = arena.assignment().hasTasks() ? Score.of(arena, RunFacts.of(replay.result())) : null;
+        double reached = replay.result().simulatedSeconds();
+        Map<String, Object> claim;
+        try {
+            @SuppressWarnings("unchecked")
+            Map<String, Object> parsed = (Map<String, Object>) JsonValues.parse(replay.claim());
+            claim = parsed;
+        } catch (RuntimeException e) {
+            return ChildResults.tampered(job, controller, "its own result is not the simulator's JSON", score, reached,
+                    child.madeIn());
+        }
+        String differs = differs(claim, replay, score);
+        if (differs != null) {
+            return ChildResults.tampered(job, controller, "its own result differs from the replay of its command log (" + differs
+                    + "): something other than the simulator wrote it; the score is the replay's", score, reached, child.madeIn());
+        }
+        RunRecord r = ChildResults.fromClaim(job, controller, claim, score, reached, child.err(), child.madeIn());
+        int expected = r.status() == RunStatus.OK ? 0 : 1;
+        if (child.exit() != expected) {
+            return new RunRecord(r.student(), r.arena(), r.seed(), RunStatus.ERROR, r.points(), r.max(), r.percent(),
+                    r.simulatedSeconds(), controller, "exit status " + child.exit() + " after a whole run that ended "
+                    + r.status().label() + " (" + expected + " expected)", "", child.madeIn());
+        }
+        return r;
+    }
+
+    /** @return what differs between the run's claim and the replay, or null when nothing does */
+    private static String differs(Map<String, Object> claim, OpenLoopReplay.Outcome replay, Score score) {
+        String sha = replay.result().traceSha256();
+        if (!sha.equals(claim.get("traceSha256"))) {
+            return "its trace's SHA-256 " + shortSha(claim.get("traceSha256")) + ", the replay's " + shortSha(sha);
+        }
+        if (!same(claim.get("simulatedSeconds"), replay.result().simulatedSeconds())) {
+            return "it says " + claim.get("simulatedSeconds") + " s simulated, the replay " + replay.result().simulatedSeconds();
+        }
+        Object points = claim.get("score") instanceof Map<?, ?> s ? s.get("points") : null;
+        if (score != null && !same(points, score.points())) {
+            return "it says " + points + " points, the replay " + String.format(Locale.ROOT, "%.2f", score.points());
+        }
+        if (score == null && points != null) {
+            return "it has a score, the arena no tasks";
+        }
+        return null;
+    }
+
+    /** The run's JSON writes 10 significant digits. */
+    private static boolean same(Object claimed, double computed) {
+        return claimed instanceof Number n && StrictMath.abs(n.doubleValue() - computed) <= 1e-7 * StrictMath.max(1, StrictMath.abs(computed));
+    }
+
+    private static String shortSha(Object sha) {
+        String s = String.valueOf(sha);
+        return s.length() > 12 ? s.substring(0, 12) + "..." : s;
+    }
+
+    private static BufferedReader open(Path log) throws IOException {
+        if (log == null || !Files.isRegularFile(log) || Files.size(log) == 0) {
+            return null;
+        }
+        return org.kheperasim.sim.commandlog.LogChannel.read(log, MAX_LOG_TEXT);
+    }
+
+    private static void deleteQuietly(Path p) {
+        try {
+            Files.deleteIfExists(p);
+        } catch (IOException e) {
+            // left behind: a trace without a picture
+        }
+    }
+}

@@ -1,0 +1,144 @@
+package org.kheperasim.sim.commandlog;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.StringReader;
+import java.io.StringWriter;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.run.ControllerCatalog;
+import org.kheperasim.sim.run.RunResult;
+import org.kheperasim.sim.run.Simulation;
+
+/**
+ * The open-loop replay of a run's command log gives the run's own trace, byte for byte: every bundled
+ * arena with every bundled controller, and arenas of several robots (thread and step controllers,
+ * different controllers side by side, caps pushed among robots). This is what lets a grader score
+ * the replay instead of trusting what the run says it scored.
+ */
+@Timeout(value = 900, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+class ReplayExactnessTest {
+    private static final double SECONDS = 300;
+    private static final long SAMPLE_MS = 20;
+
+    static Stream<Arguments> bundled() {
+        List<Arguments> out = new ArrayList<>();
+        for (String arena : ArenaFormat.bundledNames()) {
+            for (String controller : ControllerCatalog.bundled()) {
+                out.add(Arguments.of(arena, controller));
+            }
+        }
+        return out.stream();
+    }
+
+    @ParameterizedTest(name = "{0} with {1}")
+    @MethodSource("bundled")
+    void theReplayOfEveryBundledRunIsTheRun(String arena, String controller) throws IOException {
+        Simulation.Builder run = Simulation.builder().arena(arena).controller(controller).seed(42).seconds(SECONDS);
+        assertReplayIsTheRun(run);
+    }
+
+    static Stream<Arguments> crowds() {
+        return Stream.of(Arguments.of("Braitenberg", false), Arguments.of("StepBraitenberg", true),
+                Arguments.of("Aggregation", true), Arguments.of("WallFollower", true));
+    }
+
+    @ParameterizedTest(name = "sixteen robots with {0}, caps {1}")
+    @MethodSource("crowds")
+    void theReplayOfACrowdIsTheRun(String controller, boolean caps) throws IOException {
+        Simulation.Builder run = Simulation.builder().arena(crowd(caps)).controller(controller).seed(7).seconds(60);
+        assertReplayIsTheRun(run);
+    }
+
+    @Test
+    void theReplayOfRobotsWithControllersAndSettingsOfTheirOwnIsTheRun() throws IOException {
+        Simulation.Builder run = Simulation.builder().arena(org.kheperasim.testfixtures.Arenas.THREE).controller("Braitenberg")
+                .robot(1, "WallFollower", null).robot(2, "StepBraitenberg", Settings.defaults().with("motor.left.calibration", "0.9"))
+                .seed(21).seconds(120);
+        assertReplayIsTheRun(run);
+    }
+
+    @Test
+    void aLogOfAnotherRunIsRefused() throws IOException {
+        Simulation.Builder run = Simulation.builder().arena("lab").controller("Braitenberg").seed(3).seconds(5);
+        Recorded r = record(run);
+        OpenLoopReplay.Run other = new OpenLoopReplay.Run(run.arena(), 4, nanos(run.seconds()), SAMPLE_MS, run.robotSettings());
+        ReplayMismatchException e = assertThrows(ReplayMismatchException.class,
+                () -> OpenLoopReplay.replay(other, reader(r.log), new StringWriter()));
+        assertTrue(e.getMessage().contains("seed 3"), e.getMessage());
+        String torn = r.log.substring(0, r.log.length() / 2);
+        OpenLoopReplay.Run same = new OpenLoopReplay.Run(run.arena(), 3, nanos(run.seconds()), SAMPLE_MS, run.robotSettings());
+        RuntimeException t = assertThrows(RuntimeException.class, () -> OpenLoopReplay.replay(same, reader(torn), new StringWriter()));
+        assertTrue(t.getMessage().contains("ends") || t.getMessage().contains("torn"), t.getMessage());
+    }
+
+    private record Recorded(String log, String trace, RunResult result) {
+    }
+
+    static void assertReplayIsTheRun(Simulation.Builder run) throws IOException {
+        Recorded r = record(run);
+        StringWriter replayed = new StringWriter();
+        OpenLoopReplay.Outcome o = OpenLoopReplay.replay(new OpenLoopReplay.Run(run.arena(), run.seed(), nanos(run.seconds()),
+                SAMPLE_MS, run.robotSettings()), reader(r.log), replayed);
+        assertEquals(r.trace, replayed.toString(), "the replay's trace is the run's");
+        assertEquals(r.result.traceSha256(), o.result().traceSha256());
+        assertEquals(r.result.simulatedSeconds(), o.result().simulatedSeconds());
+        assertEquals(r.result.capsInRegions(), o.result().capsInRegions());
+        for (int i = 0; i < r.result.robots().size(); i++) {
+            RunResult.RobotResult a = r.result.robots().get(i);
+            RunResult.RobotResult b = o.result().robots().get(i);
+            assertEquals(String.format(Locale.ROOT, "%s %s %s %s %d %s %s", a.x(), a.y(), a.headingDeg(), a.distanceMm(),
+                    a.collisions(), a.visitedPercent(), a.regionsEntered()),
+                    String.format(Locale.ROOT, "%s %s %s %s %d %s %s", b.x(), b.y(), b.headingDeg(), b.distanceMm(),
+                    b.collisions(), b.visitedPercent(), b.regionsEntered()), "robot " + i + " ends the same");
+        }
+        assertEquals("{\"test\": 1}", o.claim());
+    }
+
+    private static Recorded record(Simulation.Builder run) throws IOException {
+        StringWriter log = new StringWriter();
+        StringWriter trace = new StringWriter();
+        CommandLogWriter writer = new CommandLogWriter(log);
+        RunResult result = run.sampleMillis(SAMPLE_MS).trace(trace).record(writer)
+                .onStart(s -> writer.start(LogHeader.of(s, nanos(run.seconds()), SAMPLE_MS))).run();
+        writer.finish("{\"test\": 1}");
+        return new Recorded(log.toString(), trace.toString(), result);
+    }
+
+    private static CommandLogReader reader(String log) {
+        return new CommandLogReader(new BufferedReader(new StringReader(log)));
+    }
+
+    private static long nanos(double seconds) {
+        return (long) StrictMath.rint(seconds * 1e9);
+    }
+
+    /** Sixteen robots on a 170 mm lattice (as SwarmEquivalenceTest's crowd); with caps, three among them. */
+    static Arena crowd(boolean caps) {
+        StringBuilder text = new StringBuilder("khepera-arena 1\nname crowd\nsize 800 800\n"
+                + "wall 0 4 800 4 8\nwall 0 796 800 796 8\nwall 4 0 4 800 8\nwall 796 0 796 800 8\n");
+        for (int i = 0; i < 16; i++) {
+            double x = 145 + (i % 4) * 170 + ((i * 7) % 5 - 2) * 6;
+            double y = 145 + (i / 4) * 170 + ((i * 3) % 5 - 2) * 6;
+            text.append(String.format(Locale.ROOT, "robot %.1f %.1f %d%n", x, y, (i * 137) % 360 - 180));
+        }
+        if (caps) {
+            text.append("cap 230 230\ncap 400 485\ncap 570 315\n");
+        }
+        return ArenaFormat.parse(text.toString(), "crowd");
+    }
+}
