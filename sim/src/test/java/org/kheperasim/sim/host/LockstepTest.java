@@ -125,7 +125,7 @@ class LockstepTest {
         ControllerException e = assertThrows(ControllerException.class,
                 () -> Simulation.builder().arena("lab").controller("WallFolower").seconds(1).run());
         assertTrue(e.getMessage().contains("no controller named 'WallFolower'"), e.getMessage());
-        assertTrue(e.getMessage().contains("WallFollower"), e.getMessage());
-        assertTrue(e.getMessage().contains("--classpath"), e.getMessage());
+        assertTrue(e.getMessage().contains("did you mean WallFollower?"), e.getMessage());
+        assertTrue(e.getMessage().contains("--controller WallFollower"), e.getMessage());
     }
 }
