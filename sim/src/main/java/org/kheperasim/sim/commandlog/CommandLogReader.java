@@ -87,7 +87,11 @@ public final class CommandLogReader implements AutoCloseable {
             if (!s.startsWith(i + " ")) {
                 throw new LogFormatException(lineNumber, "expected 'settings " + i + " ...'");
             }
-            robots.add(new LogHeader.Robot(r[1], r[2], s.substring(s.indexOf(' ') + 1)));
+            String m = field("mode");
+            if (!m.startsWith(i + " ")) {
+                throw new LogFormatException(lineNumber, "expected 'mode " + i + " tethered|onboard|onboard-steps'");
+            }
+            robots.add(new LogHeader.Robot(r[1], r[2], s.substring(s.indexOf(' ') + 1), m.substring(m.indexOf(' ') + 1)));
         }
         this.header = new LogHeader(seed, arena, end, sample, robots);
     }

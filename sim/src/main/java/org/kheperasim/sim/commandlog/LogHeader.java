@@ -21,8 +21,9 @@ public record LogHeader(long seed, String arena, long endNanos, long sampleMilli
      * @param controllerClass the controller's class name, as the trace header writes it
      * @param name            the robot's name in reports (the class's simple name, {@code Name#i} with several)
      * @param settings        its settings as {@code Settings.describe()} writes them
+     * @param mode            where its controller ran ({@code SimRobot.controlMode()}): through the link or on the robot
      */
-    public record Robot(String controllerClass, String name, String settings) {
+    public record Robot(String controllerClass, String name, String settings, String mode) {
     }
 
     /** Copies the list. */
@@ -42,7 +43,7 @@ public record LogHeader(long seed, String arena, long endNanos, long sampleMilli
         var hosts = session.hosts();
         for (int i = 0; i < engineRobots.size(); i++) {
             robots.add(new Robot(hosts.get(i).type().getName(), engineRobots.get(i).name(),
-                    engineRobots.get(i).settings().describe()));
+                    engineRobots.get(i).settings().describe(), engineRobots.get(i).controlMode()));
         }
         return new LogHeader(session.seed(), session.arena().name() + " sha256="
                 + org.kheperasim.sim.arena.ArenaFormat.sha256(session.arena()), endNanos, sampleMillis, robots);
@@ -60,6 +61,7 @@ public record LogHeader(long seed, String arena, long endNanos, long sampleMilli
             Robot r = robots.get(i);
             sb.append("robot ").append(i).append(' ').append(r.controllerClass()).append(' ').append(r.name()).append('\n');
             sb.append("settings ").append(i).append(' ').append(r.settings()).append('\n');
+            sb.append("mode ").append(i).append(' ').append(r.mode()).append('\n');
         }
         return sb.toString();
     }

@@ -89,6 +89,11 @@ public final class OpenLoopReplay {
         List<Driver> drivers = new ArrayList<>();
         for (int i = 0; i < h.robots().size(); i++) {
             SimRobot robot = engine.addRobot(h.robots().get(i).name(), run.arena().robots().get(i), run.settings().get(i));
+            try {
+                robot.controlMode(h.robots().get(i).mode());
+            } catch (IllegalArgumentException e) {
+                throw new ReplayMismatchException("robot " + i + ": " + e.getMessage());
+            }
             Driver d = new Driver(i);
             engine.attach(robot, d, r -> d.ended ? "finished" : "replay");
             robots.add(robot);
@@ -136,6 +141,7 @@ public final class OpenLoopReplay {
         header.put("controller", h.robots().get(0).controllerClass());
         header.put("settings", run.settings().get(0).describe());
         header.put("sample-ms", Long.toString(run.sampleMillis()));
+        header.put("mode", org.kheperasim.sim.run.RunSession.modes(h.robots().stream().map(LogHeader.Robot::mode).toList()));
         boolean alike = true;
         for (LogHeader.Robot r : h.robots()) {
             alike &= r.controllerClass().equals(h.robots().get(0).controllerClass())

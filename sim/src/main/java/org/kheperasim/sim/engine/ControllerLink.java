@@ -5,13 +5,18 @@ import org.kheperasim.api.GripperState;
 import org.kheperasim.link.timing.PollStep;
 
 /**
- * What a controller does to its simulated robot and reads from it, through the simulated serial
- * link: commands that act when their characters and the robot's turnaround have passed, and the
- * values the poll cycle has delivered by the controller's time (see {@link RobotLink}).
+ * What a controller does to its simulated robot and reads from it. Tethered (the default for a
+ * thread-style controller), through the simulated serial link: commands act when their characters
+ * and the robot's turnaround have passed, and it sees the values the poll cycle has delivered by
+ * its time (see {@link RobotLink}). On-board (the default for a step controller), on the robot's
+ * own processor: it reads the latest 20 ms scan and the counters, and its commands act at once
+ * (see {@link OnBoardLink}).
  */
 public final class ControllerLink {
     private final SimRobot robot;
     private final RobotLink link;
+    /** The controller runs on the robot, or null: through the link. */
+    private OnBoardLink onBoard;
     /** Hears every command that reaches the link (a command log), or null. */
     private DriverRecorder recorder;
 
@@ -24,8 +29,25 @@ public final class ControllerLink {
         this.recorder = recorder;
     }
 
+    /** @param board the controller runs on the robot from now on */
+    void onBoard(OnBoardLink board) {
+        this.onBoard = board;
+    }
+
+    /** @return true when the controller runs on the robot (on-board), false when through the serial link */
+    public boolean isOnBoard() {
+        return onBoard != null;
+    }
+
     /** A controller asks for wheel speeds at simulated time {@code now}, units; they act after the wire time. */
     public void commandSpeeds(long now, int left, int right) {
+        if (onBoard != null) {
+            if (recorder != null && onBoard.speedsWouldChange(left, right)) {
+                recorder.speeds(robot.id(), now, left, right);
+            }
+            onBoard.commandSpeeds(left, right);
+            return;
+        }
         // A busy loop asks for the same speeds tens of thousands of times a second: only calls that change the
         // link are told, which replays the same (the others leave every field of the link as it was).
         if (recorder != null && link.speedsWouldChange(now, left, right)) {
@@ -39,6 +61,10 @@ public final class ControllerLink {
     public void commandPositions(long now, int left, int right) {
         if (recorder != null) {
             recorder.positions(robot.id(), now, left, right);
+        }
+        if (onBoard != null) {
+            onBoard.commandPositions(left, right);
+            return;
         }
         link.commandPositions(now, left, right);
         robot.commandQueued();
@@ -54,6 +80,10 @@ public final class ControllerLink {
         if (recorder != null) {
             recorder.arm(robot.id(), now, position);
         }
+        if (onBoard != null) {
+            onBoard.commandArm(robot.movedTo(), position);
+            return;
+        }
         link.commandArm(now, position);
         robot.commandQueued();
     }
@@ -63,40 +93,56 @@ public final class ControllerLink {
         if (recorder != null) {
             recorder.fingers(robot.id(), now, state == GripperState.CLOSED);
         }
+        if (onBoard != null) {
+            onBoard.commandFingers(robot.movedTo(), state == GripperState.CLOSED);
+            return;
+        }
         link.commandFingers(now, state == GripperState.CLOSED);
         robot.commandQueued();
     }
 
     /** @param i sensor index @return the proximity value a controller sees at the time the robot has been moved to */
     public int visibleProximity(int i) {
-        return link.visibleProximity(robot.movedTo(), i);
+        return onBoard != null ? onBoard.proximity(robot.movedTo(), i) : link.visibleProximity(robot.movedTo(), i);
     }
 
     /** @param i sensor index @return the light value a controller sees at the time the robot has been moved to */
     public int visibleLight(int i) {
-        return link.visibleLight(robot.movedTo(), i);
+        return onBoard != null ? onBoard.light(robot.movedTo(), i) : link.visibleLight(robot.movedTo(), i);
     }
 
     /** @param now the controller's simulated time, ns @param i sensor index @return the proximity value it sees */
     public int visibleProximity(long now, int i) {
+        if (onBoard != null) {
+            return onBoard.proximity(now, i);
+        }
         read(PollStep.PROXIMITY, now);
         return link.visibleProximity(now, i);
     }
 
     /** @param now the controller's simulated time, ns @param i sensor index @return the light value it sees */
     public int visibleLight(long now, int i) {
+        if (onBoard != null) {
+            return onBoard.light(now, i);
+        }
         read(PollStep.LIGHT, now);
         return link.visibleLight(now, i);
     }
 
     /** @param now the controller's simulated time, ns @return the left position counter it sees, pulses */
     public int visibleEncoderLeft(long now) {
+        if (onBoard != null) {
+            return onBoard.counterLeft();
+        }
         read(PollStep.ENCODERS, now);
         return link.visibleCounterLeft(now);
     }
 
     /** @param now the controller's simulated time, ns @return the right position counter it sees, pulses */
     public int visibleEncoderRight(long now) {
+        if (onBoard != null) {
+            return onBoard.counterRight();
+        }
         read(PollStep.ENCODERS, now);
         return link.visibleCounterRight(now);
     }
@@ -108,13 +154,18 @@ public final class ControllerLink {
         }
     }
 
+    /** @return the poll cycles the link has run so far (proximity replies taken), for measuring its rate */
+    public long pollCycles() {
+        return link.proximityReplies();
+    }
+
     /** @return the left speed the controller last asked for, units */
     public int askedLeft() {
-        return link.askedLeft();
+        return onBoard != null ? onBoard.askedLeft() : link.askedLeft();
     }
 
     /** @return the right speed the controller last asked for, units */
     public int askedRight() {
-        return link.askedRight();
+        return onBoard != null ? onBoard.askedRight() : link.askedRight();
     }
 }

@@ -5,17 +5,16 @@ import java.util.List;
 
 /**
  * Moves the robots that may see each other during a stretch, without stepping them all tick by
- * tick. Within a stretch nothing but poll samples falls due (no command, noise redraw, controller
- * or snapshot), so a robot's path depends only on the walls and on what it may touch; the other
- * robots matter to it only through its proximity samples, which must see them where they are at
- * the sample's tick.
+ * tick. Within a stretch nothing but scans and poll samples falls due (no command, noise redraw,
+ * controller or snapshot), so a robot's path depends only on the walls and on what it may touch;
+ * the other robots matter to it only through its scans, which must see them where they are at the
+ * scan's tick (a poll sample reads the robot's own scan and counters, and is taken on the way).
  *
  * <p>So each robot, or each group of robots that may touch each other during the stretch, moves on
- * its own, gliding as far as the walls allow, from one sample to the next. The samples are taken
- * in the order of their ticks (and of the robots within a tick); before a proximity sample, the
- * robots that may come within its sight are moved to its tick too. A sample therefore sees every
- * robot where the tick-by-tick reference has it, and each robot's path is the one it would drive
- * there. While any robot may touch a cap, or its gripper moves or holds one, {@link Motion} keeps
+ * its own, gliding as far as the walls allow, from one scan to the next. The scans are taken in the
+ * order of their ticks (and of the robots within a tick); before a scan, the robots that may come
+ * within its sight are moved to its tick too. A scan therefore sees every robot where the
+ * tick-by-tick reference has it, and each robot's path is the one it would drive there. While any robot may touch a cap, or its gripper moves or holds one, {@link Motion} keeps
  * these robots to the tick-by-tick lockstep instead: a cap pushed moves while others may be looking
  * at it.
  */
@@ -70,14 +69,12 @@ final class Crowd implements Bodies.Visitor {
             long tick = key >>> ID_BITS;
             SimRobot r = robots.get((int) (key & ((1 << ID_BITS) - 1)));
             advance(find(r.id()), tick);
-            boolean proximity = r.proximityNext();
-            if (proximity) {
-                for (int k = first[r.id()]; k < first[r.id() + 1]; k++) {
-                    advance(find(sight[k]), tick);
-                }
+            // A scan sees the robots that may come within its reach where they are at its tick.
+            for (int k = first[r.id()]; k < first[r.id() + 1]; k++) {
+                advance(find(sight[k]), tick);
             }
             r.sightScope(sight, first[r.id()], first[r.id() + 1]);
-            r.sampleAt(tick * Engine.TICK_NANOS, proximity);
+            r.scanAt(tick * Engine.TICK_NANOS);
             r.sightScope(null, 0, 0);
             schedule(r, end);
         }
@@ -87,7 +84,7 @@ final class Crowd implements Bodies.Visitor {
     }
 
     private void schedule(SimRobot r, long end) {
-        long tick = r.nextPollTick();
+        long tick = r.nextScanTick();
         if (tick < end) {
             events.push(tick << ID_BITS | r.id());
         }

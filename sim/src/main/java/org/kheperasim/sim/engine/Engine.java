@@ -208,6 +208,13 @@ public final class Engine {
                 }
             }
             publish();
+            // A program on the robot reads the scan of its next wake's window: that scan is taken at its tick.
+            for (int i = 0; i < drivers.size(); i++) {
+                RobotDriver d = drivers.get(i);
+                if (d != null) {
+                    robots.get(i).wantScan(d.wakeNanos());
+                }
+            }
             long n = quietTicks();
             motion.move(tick, n);
             tick += n;
@@ -319,6 +326,10 @@ public final class Engine {
     public void edit(org.kheperasim.sim.arena.Arena edited) {
         if (inTick) {
             throw new IllegalStateException("the arena can only be edited between ticks, by the thread holding the turn");
+        }
+        // Values of the scans left for a later read are those of the arena as it was.
+        for (SimRobot r : robots) {
+            r.settleScan();
         }
         world.replaceArena(edited);
         for (SimRobot r : robots) {

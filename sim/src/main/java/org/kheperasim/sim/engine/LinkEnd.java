@@ -4,28 +4,23 @@ import org.kheperasim.api.GripperState;
 
 /**
  * The robot's end of its simulated serial link: what a command that has arrived does to the parts
- * (wheels, counters, arm, fingers) and how a poll sample is taken from them (proximity, light,
- * counters), at the pose {@link SamplePose} gives for the sample's tick. Each sensor's samples are
- * numbered, and the number keys its noise draws.
+ * (wheels, counters, arm, fingers), and what a poll reply carries: the proximity and light values of
+ * the robot's latest {@link Scans scan}, and the counters where the robot is at the sample's tick
+ * ({@link SamplePose}).
  */
 final class LinkEnd implements RobotLink.Robot {
     private final DriveBody body;
     private final SamplePose sense;
-    private final ProximitySensing proximity;
-    private final LightSensing light;
     private final GripperModel gripper;
-    private final Coverage coverage;
-    private long proximitySamples;
-    private long lightSamples;
+    private final LightSensing light;
+    private final Scans scans;
 
-    LinkEnd(DriveBody body, SamplePose sense, ProximitySensing proximity, LightSensing light, GripperModel gripper,
-            Coverage coverage) {
+    LinkEnd(DriveBody body, SamplePose sense, GripperModel gripper, LightSensing light, Scans scans) {
         this.body = body;
         this.sense = sense;
-        this.proximity = proximity;
-        this.light = light;
         this.gripper = gripper;
-        this.coverage = coverage;
+        this.light = light;
+        this.scans = scans;
     }
 
     @Override
@@ -49,29 +44,21 @@ final class LinkEnd implements RobotLink.Robot {
     }
 
     @Override
-    public void sampleProximity(int[] out) {
-        double[] at = sense.position();
-        if (proximity.open(at[0], at[1])) {
-            proximity.sampleOpen(proximitySamples++, out);
-        } else {
-            at = sense.pose();
-            proximity.sampleNear(at[0], at[1], at[2], at[3], proximitySamples++, out);
-        }
-        coverage.mark(at[0], at[1]);
+    public void sampleProximity(long now, int[] out) {
+        scans.proximity(now, out);
     }
 
     @Override
-    public void sampleLight(int[] out) {
-        double[] at = sense.pose();
-        light.sample(at[0], at[1], at[2], at[3], lightSamples++, out);
+    public void sampleLight(long now, int[] out) {
+        scans.light(now, out);
     }
 
     @Override
-    public long pollLight(int[] out) {
+    public long pollLight(long now, int[] out) {
         if (light.deferDark() >= 0) {
-            return lightSamples++;
+            return scans.indexAt(now);
         }
-        sampleLight(out);
+        scans.light(now, out);
         return -1;
     }
 

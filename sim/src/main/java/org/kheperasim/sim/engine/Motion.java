@@ -10,11 +10,11 @@ import java.util.List;
  * <ul>
  *   <li>a robot that no other robot can reach during the stretch (neither touch nor see, nor be
  *       seen, even if both drive straight at each other) moves on its own: it glides as far as its
- *       own clearance allows, and steps a tick with contact handling where it must, its poll
- *       samples taken on the way (exactly what a lone robot does);</li>
- *   <li>robots that may see each other move on their own between their samples, each sample
- *       seeing the others where they are at its tick, and those that may touch each other a tick at
- *       a time, in robot order ({@link Crowd});</li>
+ *       own clearance allows, and steps a tick with contact handling where it must, its scans and
+ *       poll samples taken on the way (exactly what a lone robot does);</li>
+ *   <li>robots that may see each other move on their own between their scans, each scan seeing
+ *       the others where they are at its tick, and those that may touch each other a tick at a
+ *       time, in robot order ({@link Crowd});</li>
  *   <li>when a robot may push or carry a cap, or its gripper moves, every robot moves a tick at a
  *       time, in robot order, so each sees the others and the caps where they are at that tick: a
  *       cap may jump by as much as a part newly overlaps it (fingers lowered beside it, a grip
@@ -55,6 +55,9 @@ final class Motion {
             if (!capsMove && crowd.unseen(r)) {
                 alone(r, start, n);
             } else {
+                // Values of its last scan left for a later read were those of a robot alone: computed now,
+                // before others may come within its sensors' reach.
+                r.settleScan();
                 together.add(r);
             }
         }

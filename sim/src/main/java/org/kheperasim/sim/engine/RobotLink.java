@@ -35,19 +35,19 @@ final class RobotLink {
 
         void applyFingers(long now, boolean closed);
 
-        /** Sample the proximity sensors now into {@code out}. */
-        void sampleProximity(int[] out);
+        /** The proximity values of the latest scan at {@code now} into {@code out}. */
+        void sampleProximity(long now, int[] out);
 
-        /** Sample the light sensors now into {@code out}. */
-        void sampleLight(int[] out);
+        /** The light values of the latest scan at {@code now} into {@code out}. */
+        void sampleLight(long now, int[] out);
 
         /**
-         * Take the light sensors' sample for the poll cycle: into {@code out}, or, when the reply's
-         * length is known without the values (darkness), later ({@link #fillLight}).
+         * The light values of the latest scan at {@code now} for the poll cycle: into {@code out}, or,
+         * when the reply's length is known without the values (darkness), later ({@link #fillLight}).
          *
-         * @return -1 when {@code out} holds the values, else the sample's key for {@link #fillLight}
+         * @return -1 when {@code out} holds the values, else the scan's key for {@link #fillLight}
          */
-        long pollLight(int[] out);
+        long pollLight(long now, int[] out);
 
         /** @return the reply characters of the eight values of a deferred light sample */
         int deferredLightChars();
@@ -71,6 +71,8 @@ final class RobotLink {
     private int sentLeft;
     private int sentRight;
     private boolean speedPending;
+    /** Proximity replies taken so far: the poll cycles run. */
+    private long proximityReplies;
 
     // The poll cycle: the step whose sample comes next, and when. Each step's last sample waits in
     // `sampled` until its reply has arrived (`deliverAt`); it is delivered lazily, when someone looks
@@ -108,10 +110,10 @@ final class RobotLink {
         }
     }
 
-    /** robot-link primes every value before it starts the controller; so does the simulator. */
+    /** robot-link primes every value before it starts the controller; so does the simulator (from scan 0). */
     void prime() {
         for (int k = 0; k < CYCLE.length; k++) {
-            take(CYCLE[k], visible[k]);
+            take(CYCLE[k], 0, visible[k]);
         }
         step = 0;
         sampleAt = commandNanos[0];
@@ -244,19 +246,12 @@ final class RobotLink {
     }
 
     /**
-     * Take the poll cycle's sample due at {@code now}, if one is; the robot is where it is at
+     * Take the poll cycle's samples due by the tick at {@code now}, if any: the proximity and light
+     * replies carry the robot's latest scan then, the counters are read where the robot is at
      * {@code now}. Call it for every tick at which {@link #nextPollDue} falls, in order.
      */
     void pollDue(long now) {
-        pollDue(now, true);
-    }
-
-    /**
-     * As {@link #pollDue(long)}, but with {@code proximityToo} false it stops before a proximity
-     * sample (one that must see the other robots where they are at {@code now}).
-     */
-    void pollDue(long now, boolean proximityToo) {
-        while (polling && sampleAt <= now && (proximityToo || step != PROXIMITY)) {
+        while (polling && sampleAt <= now) {
             int k = step;
             if (pending[k]) {
                 deliver(k);
@@ -265,13 +260,14 @@ final class RobotLink {
             int[] values = sampled[k];
             int chars;
             if (k == PROXIMITY) {
-                robot.sampleProximity(values);
+                robot.sampleProximity(now, values);
                 chars = readingsReplyChars(values);
+                proximityReplies++;
             } else if (k == LIGHT) {
-                sampledKey[k] = robot.pollLight(values);
+                sampledKey[k] = robot.pollLight(now, values);
                 chars = sampledKey[k] >= 0 ? 1 + IrSensor.COUNT + 2 + robot.deferredLightChars() : readingsReplyChars(values);
             } else {
-                take(CYCLE[k], values);
+                take(CYCLE[k], now, values);
                 chars = LinkTiming.replyChars(CYCLE[k], values);
             }
             deliverAt[k] = sampleAt + (chars < lineNanos.length ? lineNanos[chars] : timing.wireNanos(chars));
@@ -279,11 +275,6 @@ final class RobotLink {
             step = k + 1 == CYCLE.length ? 0 : k + 1;
             sampleAt = deliverAt[k] + commandNanos[step];
         }
-    }
-
-    /** @return true when the poll cycle's next sample is a proximity sample */
-    boolean proximityNext() {
-        return step == PROXIMITY;
     }
 
     /** @return when the poll cycle's next sample is taken, ns ({@link Long#MAX_VALUE}: not polling) */
@@ -303,11 +294,11 @@ final class RobotLink {
         return chars;
     }
 
-    /** Take a step's sample on the robot now. */
-    private void take(PollStep s, int[] out) {
+    /** Take a step's sample on the robot at {@code now}. */
+    private void take(PollStep s, long now, int[] out) {
         switch (s) {
-            case PROXIMITY -> robot.sampleProximity(out);
-            case LIGHT -> robot.sampleLight(out);
+            case PROXIMITY -> robot.sampleProximity(now, out);
+            case LIGHT -> robot.sampleLight(now, out);
             case ENCODERS -> {
                 out[0] = robot.sampleCounterLeft();
                 out[1] = robot.sampleCounterRight();
@@ -377,6 +368,11 @@ final class RobotLink {
     void copyVisible(long now, int[] prox, int[] light) {
         System.arraycopy(seen(PROXIMITY, now), 0, prox, 0, IrSensor.COUNT);
         System.arraycopy(seen(LIGHT, now), 0, light, 0, IrSensor.COUNT);
+    }
+
+    /** @return the proximity replies taken so far (one per poll cycle) */
+    long proximityReplies() {
+        return proximityReplies;
     }
 
     int askedLeft() {

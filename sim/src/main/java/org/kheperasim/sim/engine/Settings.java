@@ -79,6 +79,11 @@ public final class Settings {
         num("vision.grey.background", "0", 0, 255, "grey level of a pixel that sees nothing (beyond the arena)");
         num("vision.lampGain", "0.25", 0, 10, "how much brighter a surface looks lit by a lamp at full exposure (the"
                 + " light sensors' exposure model); a lamp itself is always 255");
+        choice("controller.mode", "where the controller runs: auto (the default: a step controller on the robot, any"
+                + " other through the serial link), onboard (on the robot's own processor: it reads the latest 20 ms scan and"
+                + " its commands act at once, as swarms and evolutionary robotics run it) or tethered (on the host, through"
+                + " the serial link: values refresh at the poll rate the baud allows, commands act after their wire time)",
+                "auto", "onboard", "tethered");
         choice("wsu.positionUnits", "unit of a WSU controller's wheel positions: pulses (the Khepera's 0.08 mm encoder"
                 + " pulses, the default) or legacy (the original simulator's counts, 3 per degree of a turn on the spot)",
                 "pulses", "legacy");

@@ -47,6 +47,10 @@ public final class SimRobot {
     private final ControllerLink controls;
     private final World world;
     private final LinearCamera camera;
+    /** The robot's own 20 ms sensor scan, which every reader of a sensor gets. */
+    private final Scans scans;
+    /** The controller on the robot's processor, or null: it runs through the serial link. */
+    private OnBoardLink onBoardLink;
     /** Hears the commands and emergency stops (a command log), or null. */
     private DriverRecorder recorder;
 
@@ -84,12 +88,15 @@ public final class SimRobot {
         this.coverage = new Coverage(world, start.x(), start.y());
         this.unseenMm = SensorPlacement.REACH_MM + model.proximity().profile().rangeMm() + 1;
         this.glides = new Glides(model, body, gripper, capContacts, coverage);
-        this.end = new LinkEnd(body, sense, proximity, light, gripper, coverage);
+        this.scans = new Scans(sense, proximity, light, coverage, !world.arena().lights().isEmpty());
+        this.end = new LinkEnd(body, sense, gripper, light, scans);
         this.link = new RobotLink(model.link().timing(), end);
         this.controls = new ControllerLink(this, link);
         // The turret's stream is drawn last, so that it shifts none of the others.
         this.camera = new LinearCamera(world, id, body, VisionModel.of(settings), new CounterNoise(random.nextLong()));
         sense.at(0);
+        scans.taking(Scans.Taking.EVERY, 0);
+        scans.capture(0, true);
         link.prime();
     }
 
@@ -103,17 +110,101 @@ public final class SimRobot {
 
     // ------------------------------------------------------------------ the engine's side
 
-    /** Apply what falls due at the tick at {@code now}: commands, poll samples, noise, position moves. */
+    /** Apply what falls due at the tick at {@code now}: commands, the scan, poll samples, noise, position moves. */
     void beginTick(long now) {
         if (now < nextDue) {
             return;
         }
         link.commandsDue(now);
         sense.at(0);
+        // The world stops here: the scan is computed at once, seeing every robot and cap where they are.
+        captureDue(now, true);
         link.pollDue(now);
         long due = StrictMath.min(link.nextCommandDue(), body.wheels().noiseDue(now));
         nextHardDue = StrictMath.min(due, onBoard.due(now));
-        nextDue = StrictMath.min(nextHardDue, link.nextPollDue());
+        nextDue = StrictMath.min(nextHardDue, nextSenseDue());
+    }
+
+    /** Take the scan of the tick at {@code now} if it is wanted; the sample pose is at that tick. */
+    private void captureDue(long now, boolean computeNow) {
+        long tick = now / Engine.TICK_NANOS;
+        if (scans.nextTick() == tick) {
+            scans.capture(tick, computeNow);
+        }
+    }
+
+    /** @return when the robot next takes a scan or a poll sample, ns ({@link Long#MAX_VALUE}: neither) */
+    private long nextSenseDue() {
+        long t = scans.nextTick();
+        return StrictMath.min(link.nextPollDue(), t == Long.MAX_VALUE ? Long.MAX_VALUE : t * Engine.TICK_NANOS);
+    }
+
+    /** @return the tick of the robot's next scan (far in the future: none wanted) */
+    long nextScanTick() {
+        long t = scans.nextTick();
+        return t == Long.MAX_VALUE ? Long.MAX_VALUE / 2 : t;
+    }
+
+    /**
+     * A program on the robot will read its sensors at {@code readAt}: the scan of that window is taken.
+     *
+     * @param readAt simulated time, ns ({@link Long#MAX_VALUE}: never)
+     */
+    void wantScan(long readAt) {
+        scans.want(readAt);
+        nextDue = StrictMath.min(nextDue, nextSenseDue());
+    }
+
+    /** The robot moves among others, or the arena is edited: values left for a later read are computed now. */
+    void settleScan() {
+        scans.settle();
+    }
+
+    /**
+     * The controller runs on the robot's own processor from now on (on-board): no serial link, it
+     * reads the latest scan and its commands act at once. Call before the controller is made.
+     *
+     * @param readsAtWakes true when it reads only when its driver wakes (a step controller: the
+     *     engine then has the scans of those windows taken, no others); false for a controller that
+     *     may read at any moment (every scan is taken)
+     */
+    public void runOnBoard(boolean readsAtWakes) {
+        onBoardLink = new OnBoardLink(this, body, gripper, scans);
+        controls.onBoard(onBoardLink);
+        link.stopPolling();
+        scans.taking(readsAtWakes ? Scans.Taking.WANTED : Scans.Taking.EVERY, movedTo);
+        nextDue = StrictMath.min(nextHardDue, nextSenseDue());
+    }
+
+    /** @return true when the controller runs on the robot (see {@link #runOnBoard}) */
+    public boolean runsOnBoard() {
+        return onBoardLink != null;
+    }
+
+    /** The controller's modes, as a command log and a trace header name them. */
+    public static final String TETHERED = "tethered";
+    /** On the robot, reading when it wakes (a step controller). */
+    public static final String ON_BOARD_STEPS = "onboard-steps";
+    /** On the robot, reading at any time. */
+    public static final String ON_BOARD = "onboard";
+
+    /** @return where the controller runs: {@link #TETHERED}, {@link #ON_BOARD_STEPS} or {@link #ON_BOARD} */
+    public String controlMode() {
+        return onBoardLink == null ? TETHERED : scans.readsAtWakes() ? ON_BOARD_STEPS : ON_BOARD;
+    }
+
+    /**
+     * @param mode where the controller runs, as {@link #controlMode} names it (a replay sets the run's up again)
+     * @throws IllegalArgumentException for another word
+     */
+    public void controlMode(String mode) {
+        switch (mode) {
+            case TETHERED -> { }
+            case ON_BOARD_STEPS -> runOnBoard(true);
+            case ON_BOARD -> runOnBoard(false);
+            default -> throw new IllegalArgumentException("unknown controller mode '" + mode + "': " + TETHERED + ", "
+                    + ON_BOARD_STEPS + " or " + ON_BOARD);
+        }
     }
 
     /**
@@ -156,20 +247,32 @@ public final class SimRobot {
     void move(long ticks, long endNanos, boolean glide, int[] mates, int mateCount) {
         if (glide) {
             long start = endNanos - ticks * Engine.TICK_NANOS;
-            // Poll samples that fall inside the glide are taken where the robot is at their tick.
-            long due = link.nextPollDue();
+            // Scans and poll samples that fall inside the glide are taken where the robot is at their
+            // tick. Gliding, it is alone (no other robot can come within its sensors' reach): a scan's
+            // proximity values can wait for their first read, unless a cap or the gripper may move meanwhile.
+            boolean computeNow = mayMoveCaps(ticks + Scans.PERIOD_TICKS);
+            long due = nextSenseDue();
             while (due < endNanos) {
                 long at = ceilTick(due);
                 if (at >= endNanos) {
                     break;
                 }
                 sense.at((at - start) / Engine.TICK_NANOS);
+                captureDue(at, computeNow);
                 link.pollDue(at);
-                due = link.nextPollDue();
+                due = nextSenseDue();
             }
             nextDue = StrictMath.min(nextHardDue, due);
             body.glide(ticks);
         } else {
+            // A step among others that may touch it: its own poll samples of this tick first (they read
+            // only its own scan and counters), then the step.
+            long start = endNanos - Engine.TICK_NANOS;
+            if (link.nextPollDue() <= start) {
+                sense.at(0);
+                link.pollDue(start);
+                nextDue = StrictMath.min(nextHardDue, nextSenseDue());
+            }
             body.step(capContacts, mates, mateCount);
         }
         movedTo = endNanos;
@@ -191,24 +294,15 @@ public final class SimRobot {
         proximity.scope(ids, from, to);
     }
 
-    /** @return the tick at whose start the poll cycle's next sample is taken (far in the future: never) */
-    long nextPollTick() {
-        return Engine.ceilTicks(link.nextPollDue());
-    }
-
-    /** @return true when the poll cycle's next sample is a proximity sample (it sees the other robots) */
-    boolean proximityNext() {
-        return link.proximityNext();
-    }
-
     /**
-     * Take the poll samples due at the tick at {@code now}, where the robot has been moved to;
-     * with {@code proximityToo} false, stop before a proximity sample.
+     * Take the scan due at the tick at {@code now}, where the robot has been moved to (and every robot
+     * that may come within its sensors' reach), and the poll samples due then.
      */
-    void sampleAt(long now, boolean proximityToo) {
+    void scanAt(long now) {
         sense.at(0);
-        link.pollDue(now, proximityToo);
-        nextDue = StrictMath.min(nextHardDue, link.nextPollDue());
+        captureDue(now, true);
+        link.pollDue(now);
+        nextDue = StrictMath.min(nextHardDue, nextSenseDue());
     }
 
     /**
@@ -238,15 +332,27 @@ public final class SimRobot {
 
     /** Sample the proximity sensors where the robot is now (a protocol client's {@code N}); snapshots show them. */
     void readProximityNow(int[] out) {
-        sense.at(0);
-        end.sampleProximity(out);
+        scanReady();
+        end.sampleProximity(movedTo, out);
         link.reportedProximity(out);
+    }
+
+    /**
+     * The robot is read where it has been moved to, between ticks: a scan due at that very tick is
+     * taken first (the world is there, as at the start of the tick).
+     */
+    private void scanReady() {
+        long tick = movedTo / Engine.TICK_NANOS;
+        if (scans.nextTick() <= tick) {
+            sense.at(0);
+            scans.capture(tick - Math.floorMod(tick, Scans.PERIOD_TICKS), true);
+        }
     }
 
     /** Sample the light sensors where the robot is now (a protocol client's {@code O}); snapshots show them. */
     void readLightNow(int[] out) {
-        sense.at(0);
-        end.sampleLight(out);
+        scanReady();
+        end.sampleLight(movedTo, out);
         link.reportedLight(out);
     }
 
@@ -296,6 +402,9 @@ public final class SimRobot {
         }
         onBoard.speedMode();
         link.reset();
+        if (onBoardLink != null) {
+            onBoardLink.reset();
+        }
         body.wheels().setSpeeds(0, 0);
     }
 
@@ -425,6 +534,10 @@ public final class SimRobot {
 
     /** Copy the values the controller sees at {@code now} into a snapshot's arrays. */
     void copyVisible(long now, int[] prox, int[] lightValues) {
+        if (onBoardLink != null) {
+            onBoardLink.copyLatest(prox, lightValues);
+            return;
+        }
         link.copyVisible(now, prox, lightValues);
     }
 }

@@ -71,7 +71,8 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
         // The robot's name: the simple class name alone, and with its index (Name#3) when the arena has several.
         this.name = robot.name();
         this.console = console;
-        this.apiCostNanos = robot.model().link().apiCostNanos();
+        // On the robot's own processor a step is one instant (its calls read memory): steps come at a fixed rate.
+        this.apiCostNanos = robot.runsOnBoard() ? 0 : robot.model().link().apiCostNanos();
         this.hangTimeoutNanos = options.hangTimeoutNanos();
         SimulatedRobotPort port = new SimulatedRobotPort(robot, this);
         this.controller = ConstructionWatch.construct(name, type, hangTimeoutNanos,

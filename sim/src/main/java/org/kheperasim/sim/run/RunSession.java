@@ -137,8 +137,13 @@ public final class RunSession implements AutoCloseable {
             cls = cls == null ? type.getName() : cls;
             String name = arena.robots().size() == 1 ? type.getSimpleName() : type.getSimpleName() + "#" + i;
             SimRobot robot = engine.addRobot(name, start, setup.settings());
+            boolean stepStyle = Controllers.isStep(type);
+            if (onBoard(setup.settings(), stepStyle)) {
+                // Before the controller is made: its constructor may already command the robot.
+                robot.runOnBoard(stepStyle);
+            }
             HostedController host;
-            if (Controllers.isStep(type)) {
+            if (stepStyle) {
                 StepHost step = new StepHost(robot, type, console, hostOptions);
                 stepHosts.add(step);
                 host = step;
@@ -153,6 +158,25 @@ public final class RunSession implements AutoCloseable {
         }
         this.controllerClass = cls;
         this.lockstep = new Lockstep(engine, threadHosts, stepHosts, hostOptions.hangTimeoutNanos());
+    }
+
+    /**
+     * @param modes each robot's controller mode ({@link SimRobot#controlMode})
+     * @return the trace header's {@code mode} field: the mode, or each robot's when they differ
+     */
+    public static String modes(List<String> modes) {
+        return modes.stream().distinct().count() == 1 ? modes.get(0) : String.join(" ", modes);
+    }
+
+    /**
+     * @param settings a robot's settings
+     * @param step whether its controller is a step controller
+     * @return true when it runs on the robot's own processor: {@code controller.mode} onboard, or auto for a
+     *     step controller
+     */
+    static boolean onBoard(Settings settings, boolean step) {
+        String mode = settings.raw("controller.mode");
+        return mode.equals("onboard") || mode.equals("auto") && step;
     }
 
     /** A thread of its own, not a shared pool's, which a controller's parallel streams may keep busy. */
@@ -208,6 +232,7 @@ public final class RunSession implements AutoCloseable {
         header.put("controller", controllerClass);
         header.put("settings", settings.describe());
         header.put("sample-ms", Long.toString(sampleMillis));
+        header.put("mode", modes(robots.stream().map(SimRobot::controlMode).toList()));
         if (setups.stream().distinct().count() > 1) {
             // Robots with controllers or settings of their own: each is named (one robot's run keeps the old header).
             for (int i = 0; i < setups.size(); i++) {

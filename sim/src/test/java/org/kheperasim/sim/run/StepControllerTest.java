@@ -31,23 +31,54 @@ class StepControllerTest {
         return String.join("\n", trace.toString().lines().filter(l -> !l.startsWith("#")).toList());
     }
 
+    /** The pose, speed and counter columns of a trace's samples (the sensor columns show what was delivered by then). */
+    private static String motion(StringWriter trace) {
+        return String.join("\n", trace.toString().lines().filter(l -> !l.startsWith("#"))
+                .map(l -> String.join(" ", java.util.Arrays.asList(l.split(" ")).subList(0, 10))).toList());
+    }
+
     @Test
-    void aStepControllerDrivesExactlyAsTheSameLogicInAThreadDoes() {
+    void aTetheredStepControllerDrivesExactlyAsTheSameLogicInAThreadDoes() {
         StringWriter thread = new StringWriter();
         StringWriter step = new StringWriter();
         Simulation.builder().arena("lab").controller("Braitenberg").seed(9).seconds(120).trace(thread).run();
-        RunResult r = Simulation.builder().arena("lab").controller("StepBraitenberg").seed(9).seconds(120).trace(step).run();
-        assertEquals(body(thread), body(step), "Braitenberg's doWork() + sleepMillis(100) and StepBraitenberg's step()"
-                + " every 100 ms give the same samples, to the last digit");
+        RunResult r = Simulation.builder().arena("lab").controller("StepBraitenberg").seed(9).seconds(120)
+                .settings(org.kheperasim.sim.engine.Settings.defaults().with("controller.mode", "tethered")).trace(step)
+                .run();
+        // The same reads and commands at the same times through the link: the same path, to the last digit. (A
+        // step runs whole inside its tick, so a reply its late calls bring in shows in that tick's sample, where
+        // the thread's shows one tick later: the sensor columns may differ at such a tick, the path never.)
+        assertEquals(motion(thread), motion(step), "Braitenberg's doWork() + sleepMillis(100) and StepBraitenberg's step()"
+                + " every 100 ms, both through the serial link, drive the same path");
         assertTrue(r.first().distanceMm() > 2000, r.first().toString());
         assertEquals(ControllerStatus.STOPPED, r.first().status());
+    }
+
+    @Test
+    void anOnBoardStepControllersCommandsActInTheSameStep() {
+        List<long[]> speeds = new CopyOnWriteArrayList<>();
+        for (String mode : List.of("onboard", "tethered")) {
+            long[] first = {-1};
+            Simulation.builder().arena("lab").controller("StepBraitenberg").seed(9).seconds(1)
+                    .settings(org.kheperasim.sim.engine.Settings.defaults().with("controller.mode", mode))
+                    .listener(s -> {
+                        if (first[0] < 0 && s.robots().get(0).speedLeft() != 0) {
+                            first[0] = s.timeNanos();
+                        }
+                    }, 1).run();
+            speeds.add(first);
+        }
+        // On the robot, the first step's speeds (at 0) drive the robot from that very tick; through the link at
+        // 38400 baud, only once the command's characters and the robot's turnaround have passed.
+        assertEquals(0, speeds.get(0)[0], "on-board: the wheels turn from the tick of the step that set them");
+        assertTrue(speeds.get(1)[0] >= 1_000_000, "tethered: the wheels turn after the wire time, at " + speeds.get(1)[0]);
     }
 
     @Test
     void aStepThatThrowsFailsTheControllerAtTheStudentsLine() {
         RunResult r = run("org.kheperasim.testcontrollers.StepThrower", 10, HostOptions.defaults());
         assertEquals(ControllerStatus.FAILED, r.first().status(), console.toString());
-        // Ten steps, each one period (100 ms) after the previous step's last call (20 us each).
+        // Ten steps, 100 ms apart: on the robot (on-board, a step controller's default) a step is one instant.
         assertTrue(console.contains("tenth step at 60900"), console.toString());
         assertTrue(console.stream().anyMatch(l -> l.contains("ArithmeticException") && l.contains("StepThrower.step(StepThrower.java:")),
                 console.toString());
