@@ -6,6 +6,7 @@ import org.kheperasim.api.spi.ControllerException;
 import org.kheperasim.api.spi.ControllerNames;
 import org.kheperasim.sim.host.loading.ControllerClassLoader;
 import org.kheperasim.sim.host.loading.ControllerPolicyError;
+import org.kheperasim.sim.host.loading.SharedControllers;
 
 /**
  * Finds controller classes by name: a bundled controller ({@code WallFollower}), or a class the
@@ -21,6 +22,8 @@ public final class ControllerCatalog {
     private final boolean trusted;
     /** The bundled controllers' names, read once (a run loads one class per robot). */
     private final List<String> bundledNames = List.copyOf(bundled());
+    /** The shared (stateless) controllers this catalog has served, by name: checked once per catalog (a run's). */
+    private final java.util.Map<String, Class<?>> loaded = new java.util.concurrent.ConcurrentHashMap<>();
 
     /** @param classpath folders and jars with the user's compiled classes (may be empty) */
     public ControllerCatalog(List<Path> classpath) {
@@ -59,7 +62,17 @@ public final class ControllerCatalog {
      * @throws ControllerException naming what was looked for and how to fix it
      */
     public Class<?> load(String name) {
+        Class<?> known = loaded.get(name);
+        if (known != null) {
+            return known;
+        }
         ControllerClassLoader loader = new ControllerClassLoader(classpath, ControllerCatalog.class.getClassLoader(), !trusted);
+        // A stateless controller's classes are defined once in the process (the JIT compiles them once).
+        Class<?> shared = SharedControllers.lookUp(classpath, name, loader);
+        if (shared != null) {
+            loaded.put(name, shared);
+            return shared;
+        }
         try {
             if (!anyLoads(name, loader)) {
                 // A wrong name: say what was most likely meant and what to type, or else where it was looked for.
@@ -67,7 +80,11 @@ public final class ControllerCatalog {
                 throw hint != null ? new ControllerException("no controller named '" + name + "': " + hint)
                         : ControllerNames.notFound(name, bundledNames, classpath, "khepera-sim.jar");
             }
-            return ControllerNames.resolve(name, loader, bundledNames, classpath, "khepera-sim.jar");
+            Class<?> type = ControllerNames.resolve(name, loader, bundledNames, classpath, "khepera-sim.jar");
+            if (SharedControllers.offer(classpath, name, type, loader)) {
+                loaded.put(name, type);
+            }
+            return type;
         } catch (ControllerPolicyError e) {
             throw new ControllerException("controller " + name + " was refused: " + e.getMessage(), e);
         }

@@ -202,6 +202,15 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         }
     }
 
+    /**
+     * @param internalName a class's internal name
+     * @return the class file this loader defines (or would define) for it, as read from its classpath or the
+     *     simulator's controllers, before rewriting; null for a class it leaves to its parent
+     */
+    byte[] ownClassFile(String internalName) {
+        return localClassFile(internalName);
+    }
+
     /** For {@link ClassHierarchy}: the class file of a class this loader defines itself, or null. */
     private byte[] localClassFile(String internalName) {
         String className = internalName.replace('/', '.');
