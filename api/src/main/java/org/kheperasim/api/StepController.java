@@ -141,4 +141,12 @@ public abstract class StepController {
     protected final void print(String text) {
         messages.sendMessage(text);
     }
+
+    /**
+     * @return the numbers the run hands this controller (a weight vector, a genome: see {@link Parameters}); none
+     *     unless the run was given some ({@code khepera-sim evaluate}'s jobs, {@code Simulation.builder().parameters(...)})
+     */
+    protected final Parameters parameters() {
+        return org.kheperasim.api.spi.RobotPorts.of(robot).parameters();
+    }
 }

@@ -4,10 +4,14 @@ import org.kheperasim.api.IrSensor;
 import org.kheperasim.api.StepController;
 
 /**
- * {@link Braitenberg} as a step controller: the same weighted sums, called by the simulator once
- * every 100 ms instead of looping in a thread of its own. Both drive the robot along the same path:
- * a step comes one period after the previous step's last call, as {@code sleepMillis(100)} at the
- * end of {@code doWork()} does. For swarms: a step costs no thread hand-over.
+ * {@link Braitenberg} as a step controller: the same weighted sums, called once every 100 ms instead
+ * of looping in a thread of its own. A step controller runs on the robot by default (on-board: it
+ * reads the latest scan and its speeds act at once); through the serial link
+ * ({@code controller.mode=tethered}) it drives the same path as {@link Braitenberg}. For swarms: a
+ * step costs no thread hand-over.
+ *
+ * <p>Its numbers can be handed to it ({@code evaluate}'s {@code parameters}, for an evolutionary
+ * algorithm): {@code weights} (six numbers, sensors 0..5) and {@code cruise} (a speed, units).
  */
 public class StepBraitenberg extends StepController {
     /** Cruising speed, units (about 48 mm/s). */
@@ -17,19 +21,32 @@ public class StepBraitenberg extends StepController {
     /** Proximity at which the front counts as blocked. */
     private static final int BLOCKED = 500;
 
+    private double[] weights = TURN_WEIGHTS;
+    private double cruise = CRUISE;
+
+    @Override
+    protected void setup() {
+        weights = parameters().vector("weights", TURN_WEIGHTS);
+        cruise = parameters().get("cruise", CRUISE);
+        if (weights.length != TURN_WEIGHTS.length) {
+            throw new IllegalArgumentException("parameter weights has " + weights.length + " numbers: give "
+                    + TURN_WEIGHTS.length + ", for sensors 0..5");
+        }
+    }
+
     @Override
     protected void step() {
         int frontLeft = proximity(IrSensor.FRONT_LEFT);
         int frontRight = proximity(IrSensor.FRONT_RIGHT);
         double turn = 0;
-        for (int i = 0; i < TURN_WEIGHTS.length; i++) {
-            turn += TURN_WEIGHTS[i] * sensors()[i].getDistValue() / 100.0;
+        for (int i = 0; i < weights.length; i++) {
+            turn += weights[i] * sensors()[i].getDistValue() / 100.0;
         }
         if (StrictMath.max(frontLeft, frontRight) > BLOCKED) {
             // Spin away from the nearer side; with nothing to tell them apart, turn right.
             setSpeeds(turn >= 0 ? 4 : -4, turn >= 0 ? -4 : 4);
         } else {
-            setSpeeds(clamp((int) StrictMath.round(CRUISE + turn)), clamp((int) StrictMath.round(CRUISE - turn)));
+            setSpeeds(clamp((int) StrictMath.round(cruise + turn)), clamp((int) StrictMath.round(cruise - turn)));
         }
     }
 

@@ -151,4 +151,11 @@ public interface RobotPort {
     default String option(String key) {
         return null;
     }
+
+    /**
+     * @return the numbers the run hands the controller ({@link org.kheperasim.api.Parameters}); none by default
+     */
+    default org.kheperasim.api.Parameters parameters() {
+        return org.kheperasim.api.Parameters.NONE;
+    }
 }

@@ -51,6 +51,8 @@ public final class SimRobot {
     private final Scans scans;
     /** The controller on the robot's processor, or null: it runs through the serial link. */
     private OnBoardLink onBoardLink;
+    /** What the run hands the controller. */
+    private org.kheperasim.api.Parameters parameters = org.kheperasim.api.Parameters.NONE;
     /** Hears the commands and emergency stops (a command log), or null. */
     private DriverRecorder recorder;
 
@@ -174,6 +176,16 @@ public final class SimRobot {
         link.stopPolling();
         scans.taking(readsAtWakes ? Scans.Taking.WANTED : Scans.Taking.EVERY, movedTo);
         nextDue = StrictMath.min(nextHardDue, nextSenseDue());
+    }
+
+    /** @param given the numbers the run hands the robot's controller (see {@link org.kheperasim.api.Parameters}) */
+    public void parameters(org.kheperasim.api.Parameters given) {
+        this.parameters = java.util.Objects.requireNonNull(given);
+    }
+
+    /** @return the numbers the run hands the robot's controller */
+    public org.kheperasim.api.Parameters parameters() {
+        return parameters;
     }
 
     /** @return true when the controller runs on the robot (see {@link #runOnBoard}) */

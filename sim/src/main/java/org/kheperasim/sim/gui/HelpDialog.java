@@ -21,7 +21,7 @@ final class HelpDialog {
     /** Every page of docs/, in reading order (a test checks that none is missing). */
     static final List<String> PAGES = List.of("quick-start.md", "gui.md", "arena-format.md", "simulation-model.md",
             "controller-rules.md", "swarms.md", "robot-link.md", "protocol-server.md", "wsu-migration.md", "grading.md",
-            "testing.md", "autograding.md", "web-replay.md", "faq.md");
+            "testing.md", "autograding.md", "web-replay.md", "evaluate.md", "faq.md");
 
     private HelpDialog() {
     }

@@ -213,6 +213,12 @@ final class SimulatedRobotPort implements RobotPort {
     }
 
     @Override
+    public org.kheperasim.api.Parameters parameters() {
+        // Free: what the run hands the controller is not the robot's (no time passes, as in a constructor).
+        return robot.parameters();
+    }
+
+    @Override
     public String option(String key) {
         return Settings.catalogue().containsKey(key) ? robot.settings().raw(key) : null;
     }

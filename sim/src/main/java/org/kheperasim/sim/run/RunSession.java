@@ -137,6 +137,7 @@ public final class RunSession implements AutoCloseable {
             cls = cls == null ? type.getName() : cls;
             String name = arena.robots().size() == 1 ? type.getSimpleName() : type.getSimpleName() + "#" + i;
             SimRobot robot = engine.addRobot(name, start, setup.settings());
+            robot.parameters(setup.parameters());
             boolean stepStyle = Controllers.isStep(type);
             if (onBoard(setup.settings(), stepStyle)) {
                 // Before the controller is made: its constructor may already command the robot.
@@ -233,6 +234,9 @@ public final class RunSession implements AutoCloseable {
         header.put("settings", settings.describe());
         header.put("sample-ms", Long.toString(sampleMillis));
         header.put("mode", modes(robots.stream().map(SimRobot::controlMode).toList()));
+        if (!setups.get(0).parameters().isEmpty()) {
+            header.put("parameters", setups.get(0).parameters().toString());
+        }
         if (setups.stream().distinct().count() > 1) {
             // Robots with controllers or settings of their own: each is named (one robot's run keeps the old header).
             for (int i = 0; i < setups.size(); i++) {

@@ -70,6 +70,7 @@ public final class Simulation {
         private long outputLimit = DEFAULT_OUTPUT_LIMIT;
         private final java.util.Map<Integer, String> robotOverrides = new java.util.TreeMap<>();
         private final java.util.Map<Integer, Settings> robotSettingOverrides = new java.util.TreeMap<>();
+        private org.kheperasim.api.Parameters parameters = org.kheperasim.api.Parameters.NONE;
 
         /** @return one setup per robot of the arena: the run's, but where a robot has its own */
         List<RobotSetup> setups() {
@@ -84,9 +85,19 @@ public final class Simulation {
             for (int i = 0; i < n; i++) {
                 String c = robotOverrides.get(i);
                 Settings s = robotSettingOverrides.get(i);
-                out.add(new RobotSetup(c != null ? c : controllerName, s != null ? s : settings));
+                out.add(new RobotSetup(c != null ? c : controllerName, s != null ? s : settings, parameters));
             }
             return out;
+        }
+
+        /**
+         * @param given the numbers handed to every robot's controller ({@link org.kheperasim.api.Parameters}):
+         *     a weight vector, a genome
+         * @return this
+         */
+        public Builder parameters(org.kheperasim.api.Parameters given) {
+            this.parameters = java.util.Objects.requireNonNull(given);
+            return this;
         }
 
         /** @param arena the arena @return this */
