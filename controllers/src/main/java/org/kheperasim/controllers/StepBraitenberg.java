@@ -21,12 +21,14 @@ public class StepBraitenberg extends StepController {
     /** Proximity at which the front counts as blocked. */
     private static final int BLOCKED = 500;
 
-    private double[] weights = TURN_WEIGHTS;
-    private double cruise = CRUISE;
+    /** This robot's weights and speed: the constants above unless its run hands it others (set up in setup()). */
+    private double[] weights;
+    private double cruise;
 
     @Override
     protected void setup() {
-        weights = parameters().vector("weights", TURN_WEIGHTS);
+        // A copy of the constant: one definition of this class serves every robot (docs/controller-rules.md).
+        weights = parameters().vector("weights", TURN_WEIGHTS.clone());
         cruise = parameters().get("cruise", CRUISE);
         if (weights.length != TURN_WEIGHTS.length) {
             throw new IllegalArgumentException("parameter weights has " + weights.length + " numbers: give "

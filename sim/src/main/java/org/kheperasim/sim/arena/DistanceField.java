@@ -23,18 +23,20 @@ public final class DistanceField {
     private final int pw;
     private final int ph;
     /** Squared distance in cells from each padded cell's centre to its nearest obstacle centre. */
-    private final int[] dist2;
+    private int[] dist2;
     /**
      * For each padded cell, the lower bound of the clearance that {@link #clearanceBelow} returns
      * for a point in it, in steps of {@link #BELOW_STEP_MM} (unsigned, saturating): a byte, so that
      * the table is a quarter of the grid's size and stays in the cache.
      */
-    private final byte[] below;
+    private byte[] below;
     /**
      * Padded column and row of each padded cell's nearest obstacle cell, packed as
      * {@code row << 16 | col} (a grid has fewer than 65,534 columns), so reading them takes no division.
      */
-    private final int[] nearest;
+    private int[] nearest;
+    /** The three arrays above are shared with the field this one was copied from until it is recomputed. */
+    private boolean shared;
 
     // Scratch for the one-dimensional transform and the column sweeps, a row long.
     private final int[] f;
@@ -45,6 +47,11 @@ public final class DistanceField {
     private final int[] lineNearest;
 
     private DistanceField(OccupancyGrid grid) {
+        this(grid, null);
+    }
+
+    /** @param from a field of a grid with the same cells, whose arrays this one shares; null to make its own */
+    private DistanceField(OccupancyGrid grid, DistanceField from) {
         this.grid = grid;
         this.pw = grid.cols() + 2;
         this.ph = grid.rows() + 2;
@@ -52,9 +59,10 @@ public final class DistanceField {
             throw new IllegalArgumentException("a distance field holds at most 65,533 x 65,533 cells, not "
                     + grid.cols() + " x " + grid.rows());
         }
-        this.dist2 = new int[pw * ph];
-        this.below = new byte[pw * ph];
-        this.nearest = new int[pw * ph];
+        this.dist2 = from != null ? from.dist2 : new int[pw * ph];
+        this.below = from != null ? from.below : new byte[pw * ph];
+        this.nearest = from != null ? from.nearest : new int[pw * ph];
+        this.shared = from != null;
         // Only rows go through the envelope, and the column sweeps keep one value per column.
         this.f = new int[pw];
         this.out = new int[pw];
@@ -77,8 +85,29 @@ public final class DistanceField {
         return field;
     }
 
+    /**
+     * A copy of this field for a copy of its grid (the same cells): a field is costly to compute and
+     * the same for every run of an arena, so a run copies one computed before.
+     *
+     * @param copy a grid with the same cells as this field's
+     * @return a field of {@code copy}, equal to this one
+     */
+    public DistanceField copyFor(OccupancyGrid copy) {
+        if (copy.cols() != grid.cols() || copy.rows() != grid.rows()) {
+            throw new IllegalArgumentException("a field's copy needs a grid of the same size");
+        }
+        // Shared until the copy is recomputed (an edit); this one must not be recomputed after.
+        return new DistanceField(copy, this);
+    }
+
     /** Recomputes the whole field from the grid's current cells, reusing all storage. */
     public void recompute() {
+        if (shared) {
+            dist2 = new int[dist2.length];
+            below = new byte[below.length];
+            nearest = new int[nearest.length];
+            shared = false;
+        }
         // Pass 1, down each padded column: distance to the nearest obstacle in the same column (the
         // one above on a tie). Obstacles have no extent here, so two sweeps over the rows find it,
         // reading the grid in its own order: downwards the nearest above, upwards the nearest below.

@@ -29,7 +29,9 @@ public final class OccupancyGrid {
 
     private final int cols;
     private final int rows;
-    private final short[] cells;
+    /** The cells; shared with the grid this one was copied from until this one first changes one. */
+    private short[] cells;
+    private boolean shared;
 
     /**
      * An all-floor grid.
@@ -62,6 +64,30 @@ public final class OccupancyGrid {
     }
 
     /**
+     * @return a new grid with the same cells (a run's own copy of a grid computed before); the cells
+     *     are copied only when either grid first changes one, and this one must not change after
+     */
+    public OccupancyGrid copy() {
+        OccupancyGrid g = new OccupancyGrid(cols, rows, cells);
+        return g;
+    }
+
+    private OccupancyGrid(int cols, int rows, short[] sharedCells) {
+        this.cols = cols;
+        this.rows = rows;
+        this.cells = sharedCells;
+        this.shared = true;
+    }
+
+    /** Before a change: cells shared with another grid become this grid's own. */
+    private void own() {
+        if (shared) {
+            cells = cells.clone();
+            shared = false;
+        }
+    }
+
+    /**
      * Rasterise an arena of this grid's size again, in place: every cell is cleared first (an
      * edited arena during a run).
      *
@@ -74,6 +100,7 @@ public final class OccupancyGrid {
                     + arena.height() + " mm but the grid is " + cols + " x " + rows
                     + " cells; the size cannot change during a run (start a new run instead)");
         }
+        own();
         java.util.Arrays.fill(cells, (short) FLOOR);
         paint(arena);
     }
@@ -166,6 +193,7 @@ public final class OccupancyGrid {
         if (id < 0 || id > Short.MAX_VALUE) {
             throw new IllegalArgumentException("cell id " + id + " is out of range 0.." + Short.MAX_VALUE);
         }
+        own();
         cells[row * cols + col] = (short) id;
     }
 
@@ -357,6 +385,7 @@ public final class OccupancyGrid {
             for (int c = c0; c <= c1; c++) {
                 int i = r * cols + c;
                 if (cells[i] == id) {
+                    own();
                     cells[i] = FLOOR;
                 }
             }
@@ -390,6 +419,7 @@ public final class OccupancyGrid {
     void paintFloor(int col, int row, int id) {
         int i = row * cols + col;
         if (cells[i] == FLOOR) {
+            own();
             cells[i] = (short) id;
         }
     }

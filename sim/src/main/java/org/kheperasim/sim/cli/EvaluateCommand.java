@@ -140,8 +140,10 @@ final class EvaluateCommand implements Callable<Integer> {
                 });
             }
         }
-        synchronized (lock) {
-            flushOrdered(pending, order, nextOrdered, sink, true);
+        if (ordered) {
+            synchronized (lock) {
+                flushOrdered(pending, order, nextOrdered, sink, true);
+            }
         }
         if (progress) {
             System.err.println();

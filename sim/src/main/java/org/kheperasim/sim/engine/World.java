@@ -1,6 +1,7 @@
 package org.kheperasim.sim.engine;
 
 import java.util.List;
+import java.util.Map;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.DistanceField;
 import org.kheperasim.sim.arena.OccupancyGrid;
@@ -22,18 +23,43 @@ public final class World {
     private final Caps caps;
     private final Bodies bodies;
 
+    /** What rasterising an arena gives: the same for every run of it. */
+    private record Raster(OccupancyGrid grid, DistanceField field, int freeCells) {
+    }
+
+    /** The walls, lights and caps a raster is made from. */
+    private record Layout(double width, double height, List<?> walls, List<?> lights, List<?> caps) {
+    }
+
+    /** The last arenas' rasters (an evaluation runs one arena many times): each run copies one, never changes it. */
+    private static final Map<Layout, Raster> RASTERS = java.util.Collections.synchronizedMap(
+            new java.util.LinkedHashMap<>(8, 0.75f, true) {
+                @Override
+                protected boolean removeEldestEntry(Map.Entry<Layout, Raster> eldest) {
+                    return size() > 4;
+                }
+            });
+
     /** @param arena the arena to build the world from */
     public World(Arena arena) {
         this.arena = arena;
-        this.grid = OccupancyGrid.of(arena);
-        this.field = DistanceField.of(grid);
+        Layout layout = new Layout(arena.width(), arena.height(), arena.walls(), arena.lights(), arena.caps());
+        Raster raster = RASTERS.get(layout);
+        if (raster == null) {
+            OccupancyGrid g = OccupancyGrid.of(arena);
+            raster = new Raster(g, DistanceField.of(g), countFree(g));
+            RASTERS.put(layout, raster);
+        }
+        // The run's own copies: an edit or a moving cap changes them, never the shared raster.
+        this.grid = raster.grid().copy();
+        this.field = raster.field().copyFor(grid);
         this.bodies = new Bodies(arena.width(), arena.height());
         this.caps = new Caps(grid, field, bodies);
         caps.load(arena.caps());
-        this.freeCells = countFree();
+        this.freeCells = raster.freeCells();
     }
 
-    private int countFree() {
+    private static int countFree(OccupancyGrid grid) {
         int free = 0;
         for (int r = 0; r < grid.rows(); r++) {
             for (int c = 0; c < grid.cols(); c++) {
@@ -61,7 +87,7 @@ public final class World {
         caps.load(edited.caps());
         caps.paintAll();
         field.recompute();
-        freeCells = countFree();
+        freeCells = countFree(grid);
     }
 
     /** @return the arena (as last edited) */

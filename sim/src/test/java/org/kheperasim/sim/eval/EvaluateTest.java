@@ -77,6 +77,10 @@ class EvaluateTest {
         }
     }
 
+    private static List<String> sorted(String output) {
+        return output.lines().sorted().toList();
+    }
+
     private String evaluate(String... args) {
         PrintStream old = System.out;
         ByteArrayOutputStream out = new ByteArrayOutputStream();
@@ -105,6 +109,10 @@ class EvaluateTest {
         assertTrue(whole.startsWith("2\n"), "a bad line makes the exit status 2: " + whole);
         assertTrue(whole.contains("\"id\":\"broken\",\"status\":\"error\",\"error\":\"line 8: \\\"seconds\\\" must be a number"),
                 whole);
+        // Without --ordered each outcome comes as its job ends: the same lines, in another order perhaps.
+        String asTheyEnd = evaluate("evaluate", "--jobs", file.toString(), "--controller", "StepBraitenberg", "--arena", "lab",
+                "--threads", "2");
+        assertEquals(sorted(whole), sorted(asTheyEnd));
         List<Path> parts = new ArrayList<>();
         for (int k = 1; k <= 3; k++) {
             Path part = dir.resolve("part" + k + ".jsonl");

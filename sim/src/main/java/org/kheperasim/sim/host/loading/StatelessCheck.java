@@ -27,7 +27,7 @@ import org.objectweb.asm.Type;
  * <p>Deliberately conservative: a class graph passes only when every static field of the
  * controller's own classes is {@code final} and holds a primitive, a string, a boxed number, one of
  * its own enum's constants, or an array that is only ever read ({@code W[i]}, {@code W.length},
- * {@code W[i][j]}: the array reference is used by nothing else); when a static initializer only
+ * {@code W[i][j]}, {@code W.clone()}: the array reference is used by nothing else); when a static initializer only
  * builds such constants; when an enum's fields are final primitives or strings; and when no static
  * method is {@code synchronized}. Anything else (a static counter, a static list, an array handed to
  * a method) keeps today's loading: classes of its own for each robot.
@@ -268,8 +268,8 @@ final class StatelessCheck implements Opcodes {
         @Override
         public void visitMethodInsn(int opcode, String owner, String name, String descriptor, boolean isInterface) {
             loadedThis = false;
-            if (pending > 0 && values && name.equals("clone") && owner.startsWith("[")) {
-                pending--; // an enum's values(): a copy of its constants
+            if (pending > 0 && name.equals("clone") && owner.startsWith("[")) {
+                pending--; // a copy of the array (an enum's values()): the array itself stays as it was
                 return;
             }
             escape("passed to " + owner.replace('/', '.') + "." + name);
