@@ -23,10 +23,17 @@ public record ProximityProfile(String name, double[] distancesMm, double[] value
             new double[] {0, 5, 10, 15, 20, 25, 30, 35, 40, 45, 50, 55, 60},
             new double[] {1023, 985, 880, 745, 600, 455, 325, 215, 130, 70, 30, 10, 0});
 
-    /** The Khepera II white-paper calibration (RoadNarrows), from 10 mm out to 100 mm. */
+    /**
+     * The Khepera II white-sheet calibration (RoadNarrows' default, taken "placing a sheet of white
+     * paper at various distances", Khepera manual section 3.1.8): 1000 at 10 mm, 450 at 20 mm, 80 at
+     * 100 mm. Those are whole readings, the sensor's residual included, so the table holds them less
+     * the nominal offset ({@code prox.offset}, 15) that every reading adds: a robot's mean reading
+     * at each distance is the published one. Beyond 100 mm the response falls to nothing by 120 mm.
+     */
     public static final ProximityProfile KHEPERA_II = new ProximityProfile("khepera2",
-            new double[] {0, 10, 20, 30, 40, 50, 60, 80, 100, 120},
-            new double[] {1023, 1000, 450, 275, 190, 150, 125, 100, 80, 0});
+            new double[] {0, 10, 20, 30, 40, 50, 60, 70, 80, 90, 100, 120},
+            new double[] {1008, 985, 435, 260, 175, 135, 110, 95, 85, 75, 65, 0});
+
 
     /** The built-in profiles, by name. */
     public static final List<ProximityProfile> BUILT_IN = List.of(KHEPERA_I, KHEPERA_II);

@@ -60,6 +60,36 @@ class ProximityResponseTest {
         assertEquals(expected, sum3 / samples, tolerance, "mean of sensor 3 over " + samples + " readings");
     }
 
+    /**
+     * The khepera2 profile gives the published white-sheet readings (RoadNarrows' default Khepera II
+     * calibration, Khepera manual section 3.1.8) as whole readings, the sensor's offset included:
+     * 1000 at 10 mm, 450 at 20 mm, ... 80 at 100 mm, not 15 counts above them.
+     */
+    @ParameterizedTest(name = "white sheet at {0} mm reads {1}")
+    @org.junit.jupiter.params.provider.CsvSource({"10,1000", "20,450", "30,275", "40,190", "50,150", "60,125",
+        "70,110", "80,100", "90,90", "100,80"})
+    void khepera2ReadsThePublishedTable(int distanceMm, int published) {
+        Settings settings = Settings.defaults().withNoise(0).with("prox.spikeRate", "0").with("prox.profile", "khepera2");
+        Engine engine = new Engine(wallAhead(distanceMm), 7);
+        double face = 300 * OccupancyGrid.CELL_MM;
+        SimRobot robot = engine.addRobot("r", new Pose(face - 25 - distanceMm, 600, 0), settings);
+        for (int t = 0; t < 100; t++) {
+            engine.step();
+        }
+        for (int sensor : new int[] {2, 3}) {
+            int v = robot.controls().visibleProximity(sensor);
+            assertTrue(StrictMath.abs(v - published) <= 1,
+                    "sensor " + sensor + " at " + distanceMm + " mm read " + v + ", published " + published);
+        }
+    }
+
+    private static World wallAhead(int distanceMm) {
+        double face = 300 * OccupancyGrid.CELL_MM;
+        double robotX = face - 25 - distanceMm;
+        return new World(ArenaFormat.parse(String.format(Locale.ROOT, "khepera-arena 1\nname wall\nsize 1219.2 1219.2\n"
+                + "robot %s 600 0\nwall %s 400 %s 800 8\n", robotX, face + 4, face + 4), "wall.arena"));
+    }
+
     @org.junit.jupiter.api.Test
     void aProfileReachesOneMillimetreAtLeast() {
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
