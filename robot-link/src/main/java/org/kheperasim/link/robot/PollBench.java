@@ -4,27 +4,41 @@ import java.util.Locale;
 import org.kheperasim.link.session.Session;
 import org.kheperasim.link.session.SessionException;
 import org.kheperasim.link.timing.LinkTiming;
+import org.kheperasim.link.timing.PollStep;
 
 /** Measures the poll rate a link reaches: the poll loop alone, no controller, for a while. */
 public final class PollBench {
     /**
      * @param baud the line speed
      * @param rateHz poll cycles per second reached
-     * @param modelHz what the link timing model predicts at that speed for the values the robot last reported
+     * @param modelHz what the link timing model predicts at that speed for the replies the robot
+     *     actually sent during the bench (their mean length)
+     * @param replyCharsPerCycle the mean characters of a cycle's three replies, CR LF included
      * @param cycles cycles run
      * @param stats the session's counts and round-trip times
      */
-    public record Result(int baud, double rateHz, double modelHz, long cycles, Session.Stats stats) {
+    public record Result(int baud, double rateHz, double modelHz, double replyCharsPerCycle, long cycles, Session.Stats stats) {
         /** @return one line for people */
         public String describe() {
             return String.format(Locale.ROOT, "%6d baud: %6.1f poll cycles/s (N, O, H), %5.2f ms per cycle;"
-                    + " the timing model predicts %6.1f/s; mean round trip %.2f ms, %d retries",
-                    baud, rateHz, 1000.0 / Math.max(rateHz, 1e-9), modelHz, stats.meanRoundTripNanos() / 1e6,
-                    stats.retries());
+                    + " the timing model predicts %6.1f/s for the replies received (%.1f characters a cycle);"
+                    + " mean round trip %.2f ms, %d retries",
+                    baud, rateHz, 1000.0 / Math.max(rateHz, 1e-9), modelHz, replyCharsPerCycle,
+                    stats.meanRoundTripNanos() / 1e6, stats.retries());
         }
     }
 
+    private static final PollStep[] STEPS = {PollStep.PROXIMITY, PollStep.LIGHT, PollStep.ENCODERS};
+
     private PollBench() {
+    }
+
+    private static long[][] replies(Session session) {
+        long[][] r = new long[STEPS.length][];
+        for (int k = 0; k < STEPS.length; k++) {
+            r[k] = session.replies(STEPS[k].command());
+        }
+        return r;
     }
 
     /**
@@ -38,6 +52,8 @@ public final class PollBench {
         RobotBackend backend = new RobotBackend(session, RobotSettings.defaults(), line -> { });
         try {
             backend.start(10_000);
+            // Count from here: the start's priming exchanges are not the bench's.
+            long[][] before = replies(session);
             long end = System.nanoTime() + millis * 1_000_000L;
             while (System.nanoTime() < end && backend.failure() == null) {
                 Thread.sleep(20);
@@ -46,16 +62,19 @@ public final class PollBench {
                 throw backend.failure();
             }
             double rate = backend.pollRateHz();
-            // The model's rate for the values the robot last reported: its replies are as long as they are.
-            int[] proximity = new int[8];
-            int[] light = new int[8];
-            for (int i = 0; i < 8; i++) {
-                proximity[i] = backend.proximity(i);
-                light[i] = backend.ambientLight(i);
+            // The model's cycle for the replies the robot really sent: each step's command, gap and
+            // turnaround, and its replies' mean length over the bench.
+            long[][] after = replies(session);
+            LinkTiming timing = LinkTiming.atBaud(baud);
+            double perCycle = 0;
+            double cycleNanos = 0;
+            for (int k = 0; k < STEPS.length; k++) {
+                long n = after[k][0] - before[k][0];
+                double chars = n == 0 ? STEPS[k].replyChars() : (double) (after[k][1] - before[k][1]) / n;
+                perCycle += chars;
+                cycleNanos += timing.commandNanos(STEPS[k]) + chars * timing.wireNanos(1000) / 1000.0;
             }
-            int[] counters = {backend.leftPosition(), backend.rightPosition()};
-            return new Result(baud, rate, 1e9 / LinkTiming.atBaud(baud).pollCycleNanos(proximity, light, counters),
-                    backend.cycles(), session.stats());
+            return new Result(baud, rate, 1e9 / cycleNanos, perCycle, backend.cycles(), session.stats());
         } finally {
             backend.stop();
         }

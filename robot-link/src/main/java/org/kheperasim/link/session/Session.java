@@ -79,6 +79,9 @@ public final class Session implements AutoCloseable {
     private final LongAdder discardedChars = new LongAdder();
     private final LongAdder foreignLines = new LongAdder();
     private final LongAdder boots = new LongAdder();
+    /** Characters of the replies received, and how many replies, by the command's letter (A..Z). */
+    private final long[] repliedChars = new long[26];
+    private final long[] replies = new long[26];
     private long rttSum;
     private long rttMax;
     private volatile String lastSent;
@@ -175,6 +178,7 @@ public final class Session implements AutoCloseable {
                     try {
                         Reply reply = KheperaProtocol.parseReply(command, got);
                         record(System.nanoTime() - sent);
+                        countReply(line, got);
                         return reply;
                     } catch (ProtocolException e) {
                         skippedLines.increment();
@@ -302,6 +306,24 @@ public final class Session implements AutoCloseable {
         exchanges.increment();
         rttSum += rtt;
         rttMax = Math.max(rttMax, rtt);
+    }
+
+    private void countReply(String command, String reply) {
+        int letter = command.isEmpty() ? -1 : Character.toUpperCase(command.charAt(0)) - 'A';
+        if (letter >= 0 && letter < 26) {
+            repliedChars[letter] += reply.length() + 2L; // the line and its CR LF
+            replies[letter]++;
+        }
+    }
+
+    /**
+     * @param letter a command's letter, such as {@code 'N'}
+     * @return {replies received, their characters with each line's CR LF}: what the robot's answers
+     *     to that command have cost on the wire so far
+     */
+    public synchronized long[] replies(char letter) {
+        int i = Character.toUpperCase(letter) - 'A';
+        return i < 0 || i >= 26 ? new long[2] : new long[] {replies[i], repliedChars[i]};
     }
 
     /** @return counts and round-trip times so far */

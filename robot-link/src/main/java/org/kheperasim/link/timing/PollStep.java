@@ -5,8 +5,8 @@ package org.kheperasim.link.timing;
  * the cycle runs them. The robot-link poll loop sends exactly these commands; the simulator delivers
  * sensor values on the same schedule, so code tuned in one behaves the same in the other.
  *
- * <p>Reply lengths are the longest each reply can be (every value at its widest), so the timing
- * never depends on the values themselves.
+ * <p>{@link #replyChars()} is the longest each reply can be (every value at its widest), an upper
+ * bound; a real reply is as long as its numbers ({@link LinkTiming#replyChars(PollStep, int[])}).
  */
 public enum PollStep {
     /** {@code N}: the eight proximity values; reply {@code n,v0,...,v7} with 4-digit values. */
