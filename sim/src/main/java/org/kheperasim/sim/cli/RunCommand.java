@@ -15,6 +15,7 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.grade.ChildSide;
+import org.kheperasim.sim.grade.FailureText;
 import org.kheperasim.sim.host.ConsoleLine;
 
 import org.kheperasim.sim.host.HostOptions;
@@ -113,6 +114,7 @@ final class RunCommand implements Callable<Integer> {
         Settings settings = settingsOptions.settings();
         PrintStream info = json ? System.err : System.out;
         Arena resolved = ArenaFormat.resolve(arena);
+        FailureLines failures = new FailureLines();
         Simulation.Builder run = Simulation.builder()
                 .arena(resolved)
                 .controller(controllerOptions.controller())
@@ -123,6 +125,7 @@ final class RunCommand implements Callable<Integer> {
                 .sampleMillis(sampleMillis)
                 .hostOptions(HostOptions.defaults().withHangTimeout((long) (hangTimeout * 1e9)))
                 .console(line -> {
+                    failures.seen(line);
                     if (line.kind() != ConsoleLine.Kind.MESSAGE) {
                         System.err.println(line.format());
                     } else if (!quiet) {
@@ -148,13 +151,13 @@ final class RunCommand implements Callable<Integer> {
             }
             return StopOnSignal.run(run, hangTimeout, result -> {
                 Score score = score(result, resolved);
-                String claim = toJson(result, score);
-                int exit = report(result, score);
+                String claim = toJson(result, score, failures);
+                int exit = report(result, score, failures);
                 child.finish(claim, exit);
                 return exit;
             });
         }
-        return StopOnSignal.run(run, hangTimeout, result -> report(result, score(result, resolved)));
+        return StopOnSignal.run(run, hangTimeout, result -> report(result, score(result, resolved), failures));
     }
 
     /** The same command again, in a bubblewrap box (see sandbox.Reexec). */
@@ -222,8 +225,8 @@ final class RunCommand implements Callable<Integer> {
         }
     }
 
-    private int report(RunResult result, Score score) {
-        System.out.println(json ? toJson(result, score) : summary(result, score));
+    private int report(RunResult result, Score score, FailureLines failures) {
+        System.out.println(json ? toJson(result, score, failures) : summary(result, score));
         System.out.flush();
         for (RunResult.RobotResult r : result.robots()) {
             if (r.status().failed()) {
@@ -279,11 +282,16 @@ final class RunCommand implements Callable<Integer> {
     }
 
     static String toJson(RunResult result) {
-        return toJson(result, null);
+        return toJson(result, null, new FailureLines());
     }
 
-    /** @param score the run's score, or null when the arena has no tasks @return the JSON object */
-    static String toJson(RunResult result, Score score) {
+    /**
+     * @param score    the run's score, or null when the arena has no tasks
+     * @param failures the controllers' error lines seen during the run: a robot whose controller threw gets
+     *                 {@code failureAt}, the student's line, and {@code failureSeconds}, when it threw
+     * @return the JSON object
+     */
+    static String toJson(RunResult result, Score score, FailureLines failures) {
         RunResult.RobotResult first = result.first();
         Json j = new Json().begin()
                 .put("seed", result.seed())
@@ -308,8 +316,13 @@ final class RunCommand implements Callable<Integer> {
                     .put("distanceMm", r.distanceMm()).put("collisions", r.collisions())
                     .put("visitedPercent", r.visitedPercent())
                     .put("controllerStatus", r.status().name().toLowerCase(Locale.ROOT))
-                    .put("failure", r.failure())
-                    .end();
+                    .put("failure", r.failure());
+            ConsoleLine thrown = r.status().failed() ? failures.of(r.name()) : null;
+            String at = thrown == null ? null : FailureText.studentFrame(thrown.text());
+            if (at != null) {
+                j.put("failureAt", at).put("failureSeconds", thrown.timeNanos() / 1e9);
+            }
+            j.end();
         }
         j.endArray();
         if (score != null) {

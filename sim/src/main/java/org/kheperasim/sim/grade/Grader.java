@@ -186,7 +186,8 @@ public final class Grader {
     private static ChildRun.Outcome one(GradePlan.Job job, Submission sub, ChildRun.Limits limits, Arena arena, Options o,
             Path work, Path sockets, int slot, Set<Process> running) throws IOException {
         if (!sub.runnable()) {
-            RunRecord r = new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.COMPILE_FAILED, 0,
+            RunRecord r = new RunRecord(job.student(), job.arena(), job.seed(),
+                    sub.empty() ? RunStatus.NOTHING_HANDED_IN : RunStatus.COMPILE_FAILED, 0,
                     arena.assignment().maxPoints(), 0, 0, sub.controller(), sub.problem(), "", "");
             return new ChildRun.Outcome(r, 0, null, null);
         }

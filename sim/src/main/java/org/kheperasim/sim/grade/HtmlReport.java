@@ -22,16 +22,20 @@ final class HtmlReport {
                 .append(" seeds = ").append(report.runs().size()).append(" runs")
                 .append(report.shard().n() > 1 ? " (shard " + report.shard() + ")" : "")
                 .append("; ").append(esc(TextTable.madeIn(report.runs())))
-                .append(". Also as <a href=\"results.csv\">CSV</a> and <a href=\"results.json\">JSON</a>.</p>\n");
+                .append(". Also as <a href=\"results.csv\">CSV</a> and <a href=\"results.json\">JSON</a>.</p>\n")
+                .append("<p>").append(esc(Ranking.RULE)).append("</p>\n");
         for (Map.Entry<String, List<Ranking.Entry>> e : Ranking.of(report.runs()).entrySet()) {
             sb.append("<h2>Arena ").append(esc(e.getKey())).append("</h2>\n<table><tr><th>rank</th><th>student</th>"
-                    + "<th>mean score %</th><th>mean points</th><th>runs by seed</th></tr>\n");
+                    + "<th>mean score %</th><th>mean points</th><th>score % by seed</th></tr>\n");
             for (Ranking.Entry x : e.getValue()) {
                 sb.append("<tr><td>").append(x.ranked() ? Integer.toString(x.rank()) : "&ndash;").append("</td><td>").append(esc(x.student())).append("</td><td>")
                         .append(ReportFiles.num(x.meanPercent())).append("</td><td>").append(ReportFiles.num(x.meanPoints()))
                         .append("</td><td>");
-                for (RunRecord r : x.runs()) {
-                    sb.append(status(r)).append(' ');
+                for (int i = 0; i < x.runs().size(); i++) {
+                    RunRecord r = x.runs().get(i);
+                    sb.append(i > 0 ? " | " : "").append("<span class=\"").append(r.status() == RunStatus.OK ? "ok" : "bad")
+                            .append("\" title=\"seed ").append(r.seed()).append(r.detail().isEmpty() ? "" : ": " + esc(r.detail()))
+                            .append("\">").append(esc(TextTable.seed(r))).append("</span>");
                 }
                 sb.append("</td></tr>\n");
             }

@@ -38,6 +38,7 @@ class GradeCommandTest {
     void everySubmissionGetsItsStatusAndTheReportReadsBack() throws IOException {
         Path subs = copySubmissions(List.of("alice", "bob", "carol", "dave", "erin", "frank", "grace", "heidi", "ivan"));
         addClassSubmission(subs.resolve("judy"));
+        Files.createDirectories(subs.resolve("zed")); // handed in nothing
         Path out = dir.resolve("report");
         String printed = grade("--submissions", subs.toString(), "--arenas", "maze", "--seeds", "1", "--seconds", "20",
                 "--jobs", "2", "--out", out.toString(), "--hang-timeout", "5", "--wall-limit", "90", "--heap-mb", "128");
@@ -48,12 +49,13 @@ class GradeCommandTest {
         Map<String, String> expected = new TreeMap<>(Map.of("alice", "ok", "bob", "ok", "carol", "ok", "dave", "ok",
                 "judy", "ok", "erin", "compile_failed", "frank", "threw", "grace", "hung", "heidi", "broke_rule",
                 "ivan", "exceeded_memory"));
+        expected.put("zed", "nothing_handed_in");
         assertEquals(expected, status, printed);
 
         ReportFiles.Report json = ReportFiles.read(out.resolve("results.json"));
         assertEquals(csv, json.runs(), "the CSV and the JSON hold the same runs");
         assertEquals(List.of("maze"), json.plan().arenas());
-        assertEquals(10, json.plan().students().size());
+        assertEquals(11, json.plan().students().size());
         for (RunRecord r : csv) {
             assertEquals(100, r.max(), r.toString());
             if (r.status() == RunStatus.OK) {
@@ -62,11 +64,20 @@ class GradeCommandTest {
             if (r.status() == RunStatus.COMPILE_FAILED) {
                 assertTrue(r.detail().startsWith("Broken.java:7:"), r.detail());
                 assertEquals("", r.picture());
+            } else if (r.status() == RunStatus.NOTHING_HANDED_IN) {
+                assertEquals("the folder is empty", r.detail());
+                assertEquals("", r.picture());
             } else {
                 assertTrue(Files.size(out.resolve(r.picture())) > 500, r.picture());
             }
         }
-        assertTrue(byStudent(csv, "frank").detail().contains("IllegalStateException: frank's controller gave up"));
+        // What frank's run threw, and where in his code: in every format the instructor sends back.
+        assertTrue(byStudent(csv, "frank").detail().startsWith("java.lang.IllegalStateException: frank's controller gave up"
+                + " at step 20 at Thrower.doWork(Thrower.java:12)"), byStudent(csv, "frank").detail());
+        for (String file : new String[] {"results.csv", "results.json", "report.txt", "index.html"}) {
+            assertTrue(Files.readString(out.resolve(file)).contains("at Thrower.doWork(Thrower.java:12)"), file);
+        }
+        assertTrue(!byStudent(csv, "grace").detail().contains("real time"), "no machine's seconds: " + byStudent(csv, "grace"));
         assertTrue(byStudent(csv, "heidi").detail().contains("called System.exit(3)"));
         assertTrue(byStudent(csv, "grace").detail().contains("stopped making API calls"));
         assertTrue(byStudent(csv, "ivan").detail().contains("allocated without bound"));
@@ -75,7 +86,8 @@ class GradeCommandTest {
         String html = Files.readString(out.resolve("index.html"));
         assertTrue(html.contains("<img src=\"img/alice__maze__s1.png\""), html);
         assertTrue(html.contains("failed to compile"), html);
-        assertTrue(printed.contains("10 runs: 5 ok, 1 failed to compile, 1 threw, 1 hung, 1 exceeded memory, 1 broke a rule;"
+        assertTrue(printed.contains("11 runs: 5 ok, 1 failed to compile, 1 nothing handed in, 1 threw, 1 hung, 1 exceeded memory,"
+                + " 1 broke a rule;"
                 + (org.kheperasim.sim.sandbox.BoxProbe.unavailable().isEmpty() ? " every run made in the sandbox"
                 : " made WITHOUT the sandbox")), printed);
     }
