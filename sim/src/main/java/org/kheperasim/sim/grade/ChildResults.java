@@ -1,10 +1,14 @@
 package org.kheperasim.sim.grade;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import org.kheperasim.sim.run.BoundedConsole;
+import org.kheperasim.sim.run.RunResult;
+import org.kheperasim.sim.task.RunFacts;
 import org.kheperasim.sim.task.Score;
+import org.kheperasim.sim.web.RunOutcome;
 
 /**
  * Turns what a child run left into a {@link RunRecord}: its own result (the claim at the end of its
@@ -76,6 +80,44 @@ final class ChildResults {
         return new RunRecord(job.student(), job.arena(), job.seed(), status, score == null ? 0 : score.points(),
                 score == null ? 0 : score.max(), score == null ? 0 : score.percent(), seconds, controller,
                 withDropped(detail.toString(), err), "", madeIn);
+    }
+
+    /**
+     * What a replayed run's page says besides its samples: who and what it was, each controller that
+     * failed with the report's words (the student's line where it threw) and when, and the replay's
+     * facts for the score (its floor coverage and region times, exactly the report's score).
+     *
+     * @param job        the run
+     * @param controller the controller class
+     * @param claim      the run's own result, parsed (empty when it was not the simulator's)
+     * @param replay     the result of the grader's replay
+     * @param record     the run as the report holds it
+     * @return the page's outcome
+     */
+    static RunOutcome page(GradePlan.Job job, String controller, Map<String, Object> claim, RunResult replay, RunRecord record) {
+        String title = job.student() + ": " + controller.substring(controller.lastIndexOf('.') + 1) + " in "
+                + ReportFiles.arenaLabel(job.arena()) + " · seed " + job.seed();
+        List<RunOutcome.Failure> failures = new ArrayList<>();
+        if (claim.get("robots") instanceof List<?> robots) {
+            for (int i = 0; i < robots.size(); i++) {
+                if (robots.get(i) instanceof Map<?, ?> robot) {
+                    String word = String.valueOf(robot.get("controllerStatus"));
+                    if (ofController(word) == RunStatus.OK) {
+                        continue;
+                    }
+                    String text = robot.get("failure") == null ? "" : String.valueOf(robot.get("failure"));
+                    String message = ofController(word) == RunStatus.THREW
+                            ? text + (robot.get("failureAt") instanceof String at ? " at " + at : "")
+                            : FailureText.machineFree(text);
+                    double seconds = robot.get("failureSeconds") instanceof Number n ? n.doubleValue() : Double.NaN;
+                    failures.add(new RunOutcome.Failure(i, seconds, word, message));
+                }
+            }
+        }
+        if (failures.isEmpty() && record.status() != RunStatus.OK) {
+            title += " · " + record.status().label() + (record.status() == RunStatus.TAMPERED ? " (the replay's points)" : "");
+        }
+        return new RunOutcome(title, failures, RunFacts.of(replay));
     }
 
     /**

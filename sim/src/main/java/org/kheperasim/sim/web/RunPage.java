@@ -82,10 +82,25 @@ public final class RunPage {
      * @return what was written
      */
     public static Written write(Replay replay, RunOutcome outcome, Path out) {
+        return write(replay, outcome, replay.source(), out);
+    }
+
+    /**
+     * The page of a run read back from working files whose paths mean nothing to the page's reader
+     * (grade's replay of a run, the window's run so far): the page says {@code source} where it would
+     * name them, so the same run gives the same page wherever its files lay.
+     *
+     * @param replay  a run read back ({@link ReplayFiles#open})
+     * @param outcome what the run's result says, or {@link RunOutcome#none()}
+     * @param source  what the page was made from, in words, e.g. {@code the grader's replay of the run}
+     * @param out     the page to write
+     * @return what was written
+     */
+    public static Written write(Replay replay, RunOutcome outcome, String source, Path out) {
         RunTape tape = RunTape.of(replay);
         String title = outcome.title().isEmpty() ? title(replay) : outcome.title();
-        PageModel.About about = new PageModel.About(title, replay.source(), replay.notes(),
-                failures(tape, outcome, List.of()));
+        List<String> notes = replay.notes().stream().map(n -> n.replace(replay.source(), source)).toList();
+        PageModel.About about = new PageModel.About(title, source, notes, failures(tape, outcome, List.of()));
         return save(out, tape, about, outcome);
     }
 
