@@ -67,8 +67,7 @@ final class ChildResults {
             }
         }
         if (status == RunStatus.EXCEEDED_MEMORY) {
-            // The heap watch or an OutOfMemoryError, depending on the collector's timing: one text for both.
-            failure = "controller " + controller + " allocated without bound and was stopped at the run's heap limit";
+            failure = outOfMemory(controller);
         } else if (failure == null && status != RunStatus.OK) {
             failure = fault(err);
         }
@@ -106,9 +105,9 @@ final class ChildResults {
                         continue;
                     }
                     String text = robot.get("failure") == null ? "" : String.valueOf(robot.get("failure"));
-                    String message = ofController(word) == RunStatus.THREW
-                            ? text + (robot.get("failureAt") instanceof String at ? " at " + at : "")
-                            : FailureText.machineFree(text);
+                    RunStatus s = ofController(word);
+                    String message = s == RunStatus.THREW ? text + (robot.get("failureAt") instanceof String at ? " at " + at : "")
+                            : s == RunStatus.EXCEEDED_MEMORY ? outOfMemory(controller) : FailureText.machineFree(text);
                     double seconds = robot.get("failureSeconds") instanceof Number n ? n.doubleValue() : Double.NaN;
                     failures.add(new RunOutcome.Failure(i, seconds, word, message));
                 }
@@ -118,6 +117,11 @@ final class ChildResults {
             title += " · " + record.status().label() + (record.status() == RunStatus.TAMPERED ? " (the replay's points)" : "");
         }
         return new RunOutcome(title, failures, RunFacts.of(replay));
+    }
+
+    /** The heap watch or an OutOfMemoryError, depending on the collector's timing: one text for both. */
+    private static String outOfMemory(String controller) {
+        return "controller " + controller + " allocated without bound and was stopped at the run's heap limit";
     }
 
     /**

@@ -25,7 +25,6 @@ import java.util.stream.Stream;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.files.AtomicFiles;
-import org.kheperasim.sim.replay.ReplayFiles;
 import org.kheperasim.sim.sandbox.BoxProbe;
 import org.kheperasim.sim.web.RunPage;
 
@@ -41,10 +40,10 @@ public final class Grader {
     /** The first line of {@code timings.csv}: per run its child's wall seconds and its page's. */
     static final String TIMINGS_HEADER = "run,status,wall_s,page_s\n";
     /**
-     * The replay's trace's sample period, ms: the web page's (poses and sensor values every 50 ms, as
-     * {@code run --trace} writes them); the picture needs no more.
+     * The replay's trace's sample period, ms, enough for the picture (the page takes the replay's
+     * snapshots every 50 ms itself, see {@link Verdict}).
      */
-    static final long SAMPLE_MILLIS = 50;
+    static final long SAMPLE_MILLIS = 250;
     /** The folder of the runs' web pages, in the report folder. */
     static final String PAGES = "pages/";
 
@@ -206,7 +205,7 @@ public final class Grader {
             RunRecord r = new RunRecord(job.student(), job.arena(), job.seed(),
                     sub.empty() ? RunStatus.NOTHING_HANDED_IN : RunStatus.COMPILE_FAILED, 0,
                     arena.assignment().maxPoints(), 0, 0, sub.controller(), sub.problem(), "", "");
-            return new Made(new ChildRun.Outcome(r, 0, null, null, null), 0);
+            return new Made(new ChildRun.Outcome(r, 0, null, null, null, null), 0);
         }
         ChildRun.Outcome outcome = ChildRun.run(job, sub, arena, limits, work.resolve("runs"), sockets, slot, running);
         RunRecord r = outcome.record();
@@ -221,13 +220,9 @@ public final class Grader {
                 String picture = "img/" + ReportFiles.runId(job) + ".png";
                 TrajectoryPicture.draw(arena, outcome.trace(), o.out().resolve(picture), 320);
                 r = r.withPicture(picture);
-                if (outcome.page() != null) {
+                if (outcome.page() != null && outcome.tape() != null) {
                     long t0 = System.nanoTime();
-                    String page = PAGES + ReportFiles.runId(job) + ".html";
-                    Files.createDirectories(o.out().resolve(PAGES));
-                    RunPage.write(ReplayFiles.open(outcome.trace(), arena), outcome.page(),
-                            "the grader's replay of the run's command log", o.out().resolve(page));
-                    r = r.withPage(page);
+                    r = withPage(r, job, outcome, o);
                     pageSeconds = (System.nanoTime() - t0) / 1e9;
                 }
             }
@@ -240,8 +235,26 @@ public final class Grader {
                 }
             }
         }
-        return new Made(new ChildRun.Outcome(r, outcome.wallSeconds(), outcome.trace(), outcome.log(), outcome.page()),
+        return new Made(new ChildRun.Outcome(r, outcome.wallSeconds(), outcome.trace(), outcome.log(), null, null),
                 pageSeconds);
+    }
+
+    /**
+     * The run's page, from the grader's replay; a page that cannot be made (a replay without a sample)
+     * costs the run its page, said on the progress stream, never the grading.
+     */
+    private static RunRecord withPage(RunRecord r, GradePlan.Job job, ChildRun.Outcome outcome, Options o)
+            throws IOException {
+        String page = PAGES + ReportFiles.runId(job) + ".html";
+        Files.createDirectories(o.out().resolve(PAGES));
+        try {
+            RunPage.write(outcome.tape(), outcome.page(), "the grader's replay of the run's command log",
+                    o.out().resolve(page));
+            return r.withPage(page);
+        } catch (IllegalArgumentException | IllegalStateException | UncheckedIOException e) {
+            o.progress().println("note: " + ReportFiles.runId(job) + " has no web page: " + e.getMessage());
+            return r;
+        }
     }
 
     /** A folder only the grader's user may enter: the runs' sockets live there (a box sees only its own). */

@@ -20,6 +20,7 @@ import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.task.RunFacts;
 import org.kheperasim.sim.task.Score;
 import org.kheperasim.sim.web.RunOutcome;
+import org.kheperasim.sim.web.RunPageRecorder;
 
 /**
  * The grader's judgement of one child run: it replays the run's command log in its own engine, with
@@ -54,10 +55,11 @@ final class Verdict {
      * @param record the run as the report holds it
      * @param page   what the run's page says besides the replay's samples (title, failures with the student's
      *               line, the replay's facts for the score), or null when there is no replay to show
+     * @param tape   the replay's samples for the page, every {@link RunPageRecorder#PERIOD_MILLIS}, or null
      */
-    record Judged(RunRecord record, RunOutcome page) {
+    record Judged(RunRecord record, RunOutcome page, RunPageRecorder tape) {
         Judged(RunRecord record) {
-            this(record, null);
+            this(record, null, null);
         }
     }
 
@@ -88,11 +90,14 @@ final class Verdict {
         OpenLoopReplay.Run run = new OpenLoopReplay.Run(arena, job.seed(), (long) StrictMath.rint(seconds * 1e9),
                 lim.sampleMillis(), Collections.nCopies(arena.robots().size(), Settings.defaults()));
         OpenLoopReplay.Outcome replay;
+        // The page's samples come from the replay's own snapshots, every 50 ms: a trace that fine would
+        // cost the run and the replay five times the formatting of the trace's 250 ms lines.
+        RunPageRecorder tape = new RunPageRecorder(arena, null);
         try (BufferedReader in = open(child.log()); Writer out = Files.newBufferedWriter(trace, StandardCharsets.UTF_8)) {
             if (in == null) {
                 throw new TornLogException(0, "no command log came");
             }
-            replay = OpenLoopReplay.replay(run, new CommandLogReader(in), out);
+            replay = OpenLoopReplay.replay(run, new CommandLogReader(in), out, tape, RunPageRecorder.PERIOD_MILLIS);
         } catch (UncheckedIOException e) {
             deleteQuietly(trace);
             return new Judged(new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.ERROR, 0, 0, 0, 0, controller,
@@ -119,14 +124,14 @@ final class Verdict {
         } catch (RuntimeException e) {
             RunRecord r = ChildResults.tampered(job, controller, "its own result is not the simulator's JSON", score, reached,
                     child.madeIn());
-            return new Judged(r, ChildResults.page(job, controller, Map.of(), replay.result(), r));
+            return new Judged(r, ChildResults.page(job, controller, Map.of(), replay.result(), r), tape);
         }
         String differs = differs(claim, replay, score);
         if (differs != null) {
             RunRecord r = ChildResults.tampered(job, controller, "its own result differs from the replay of its command log ("
                     + differs + "): something other than the simulator wrote it; the score is the replay's", score, reached,
                     child.madeIn());
-            return new Judged(r, ChildResults.page(job, controller, Map.of(), replay.result(), r));
+            return new Judged(r, ChildResults.page(job, controller, Map.of(), replay.result(), r), tape);
         }
         RunRecord r = ChildResults.fromClaim(job, controller, claim, score, reached, child.err(), child.madeIn());
         int expected = r.status() == RunStatus.OK ? 0 : 1;
@@ -135,7 +140,7 @@ final class Verdict {
                     r.simulatedSeconds(), controller, "exit status " + child.exit() + " after a whole run that ended "
                     + r.status().label() + " (" + expected + " expected)", "", child.madeIn());
         }
-        return new Judged(r, ChildResults.page(job, controller, claim, replay.result(), r));
+        return new Judged(r, ChildResults.page(job, controller, claim, replay.result(), r), tape);
     }
 
     /** @return what differs between the run's claim and the replay, or null when nothing does */
