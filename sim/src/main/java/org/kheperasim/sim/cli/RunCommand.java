@@ -15,6 +15,7 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.grade.ChildSide;
+import org.kheperasim.sim.grade.FailureText;
 import org.kheperasim.sim.host.ConsoleLine;
 
 import org.kheperasim.sim.host.HostOptions;
@@ -59,6 +60,10 @@ final class RunCommand implements Callable<Integer> {
 
     @Option(names = "--trace", paramLabel = "FILE", description = "write a trace of the run (text, one line per sample)")
     Path trace;
+
+    @Option(names = "--html", paramLabel = "FILE", description = "write the run as one web page that replays it in any"
+            + " browser, with its failures and score (no server or network: docs/web-replay.md)")
+    Path html;
 
     @Option(names = "--edits", paramLabel = "FILE",
             description = "apply the arena edits recorded in the window (run.edits) at their simulated times, replaying that run")
@@ -113,6 +118,9 @@ final class RunCommand implements Callable<Integer> {
         Settings settings = settingsOptions.settings();
         PrintStream info = json ? System.err : System.out;
         Arena resolved = ArenaFormat.resolve(arena);
+        HtmlPage[] page = new HtmlPage[1]; // set once the run is configured; the console writes to it
+        FailureLines failures = new FailureLines();
+        EditLog editLog = edits == null ? null : EditLog.load(edits);
         Simulation.Builder run = Simulation.builder()
                 .arena(resolved)
                 .controller(controllerOptions.controller())
@@ -123,6 +131,10 @@ final class RunCommand implements Callable<Integer> {
                 .sampleMillis(sampleMillis)
                 .hostOptions(HostOptions.defaults().withHangTimeout((long) (hangTimeout * 1e9)))
                 .console(line -> {
+                    failures.seen(line);
+                    if (page[0] != null) {
+                        page[0].recorder().console(line);
+                    }
                     if (line.kind() != ConsoleLine.Kind.MESSAGE) {
                         System.err.println(line.format());
                     } else if (!quiet) {
@@ -136,8 +148,11 @@ final class RunCommand implements Callable<Integer> {
         if (trace != null) {
             run.trace(trace);
         }
-        if (edits != null) {
-            run.edits(EditLog.load(edits));
+        if (editLog != null) {
+            run.edits(editLog);
+        }
+        if (html != null && child == null) {
+            page[0] = HtmlPage.attach(html, resolved, editLog, run);
         }
         info.println("seed " + run.seed());
         if (child != null) {
@@ -148,13 +163,19 @@ final class RunCommand implements Callable<Integer> {
             }
             return StopOnSignal.run(run, hangTimeout, result -> {
                 Score score = score(result, resolved);
-                String claim = toJson(result, score);
-                int exit = report(result, score);
+                String claim = toJson(result, score, failures);
+                int exit = report(result, score, failures);
                 child.finish(claim, exit);
                 return exit;
             });
         }
-        return StopOnSignal.run(run, hangTimeout, result -> report(result, score(result, resolved)));
+        return StopOnSignal.run(run, hangTimeout, result -> {
+            int exit = report(result, score(result, resolved), failures);
+            if (page[0] != null) {
+                page[0].write(result, info);
+            }
+            return exit;
+        });
     }
 
     /** The same command again, in a bubblewrap box (see sandbox.Reexec). */
@@ -168,10 +189,15 @@ final class RunCommand implements Callable<Integer> {
         if (edits != null) {
             read.add(edits);
         }
-        List<Path> write = trace == null ? List.of() : List.of(trace);
-        int robots = ArenaFormat.resolve(arena).robots().size();
-        return org.kheperasim.sim.sandbox.Reexec.run("run", args, read, write, false,
-                org.kheperasim.sim.sandbox.BoxLimits.forCommand(robots), hangTimeout + 5);
+        List<Path> write = new ArrayList<>(trace == null ? List.of() : List.of(trace));
+        HtmlPage.Boxed page = html == null ? null : new HtmlPage.Boxed(html, trace, args, write);
+        Arena resolved = ArenaFormat.resolve(arena);
+        int code = org.kheperasim.sim.sandbox.Reexec.run("run", args, read, write, false,
+                org.kheperasim.sim.sandbox.BoxLimits.forCommand(resolved.robots().size()), hangTimeout + 5);
+        if (page != null) {
+            page.write(resolved, json ? System.err : System.out);
+        }
+        return code;
     }
 
     private static Score score(RunResult result, Arena resolved) {
@@ -222,8 +248,8 @@ final class RunCommand implements Callable<Integer> {
         }
     }
 
-    private int report(RunResult result, Score score) {
-        System.out.println(json ? toJson(result, score) : summary(result, score));
+    private int report(RunResult result, Score score, FailureLines failures) {
+        System.out.println(json ? toJson(result, score, failures) : summary(result, score));
         System.out.flush();
         for (RunResult.RobotResult r : result.robots()) {
             if (r.status().failed()) {
@@ -279,11 +305,16 @@ final class RunCommand implements Callable<Integer> {
     }
 
     static String toJson(RunResult result) {
-        return toJson(result, null);
+        return toJson(result, null, new FailureLines());
     }
 
-    /** @param score the run's score, or null when the arena has no tasks @return the JSON object */
-    static String toJson(RunResult result, Score score) {
+    /**
+     * @param score    the run's score, or null when the arena has no tasks
+     * @param failures the controllers' error lines seen during the run: a robot whose controller threw gets
+     *                 {@code failureAt}, the student's line; one that failed {@code failureSeconds}, when, s
+     * @return the JSON object
+     */
+    static String toJson(RunResult result, Score score, FailureLines failures) {
         RunResult.RobotResult first = result.first();
         Json j = new Json().begin()
                 .put("seed", result.seed())
@@ -308,8 +339,19 @@ final class RunCommand implements Callable<Integer> {
                     .put("distanceMm", r.distanceMm()).put("collisions", r.collisions())
                     .put("visitedPercent", r.visitedPercent())
                     .put("controllerStatus", r.status().name().toLowerCase(Locale.ROOT))
-                    .put("failure", r.failure())
-                    .end();
+                    .put("failure", r.failure());
+            if (r.status().failed()) {
+                ConsoleLine thrown = failures.thrown(r.name());
+                String at = thrown == null ? null : FailureText.studentFrame(thrown.text());
+                if (at != null) {
+                    j.put("failureAt", at);
+                }
+                ConsoleLine report = failures.first(r.name());
+                if (report != null) {
+                    j.put("failureSeconds", report.timeNanos() / 1e9);
+                }
+            }
+            j.end();
         }
         j.endArray();
         if (score != null) {

@@ -13,6 +13,7 @@ import org.kheperasim.sim.engine.Engine;
 import org.kheperasim.sim.engine.RobotDriver;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
+import org.kheperasim.sim.engine.SnapshotListener;
 import org.kheperasim.sim.engine.World;
 import org.kheperasim.sim.host.ControllerStatus;
 import org.kheperasim.sim.run.RunResult;
@@ -79,6 +80,23 @@ public final class OpenLoopReplay {
      * (a test's check that the replay does what the log says, in the same order).
      */
     static Outcome replay(Run run, CommandLogReader log, Writer trace, org.kheperasim.sim.engine.DriverRecorder recorder) {
+        return replay(run, log, trace, recorder, null, 0);
+    }
+
+    /**
+     * As {@link #replay(Run, CommandLogReader, Writer)}, with one more listener of the replay's
+     * snapshots (grade's web page of the run, at its own period; like any listener it does not change
+     * what the replay computes).
+     *
+     * @param listener     also receives the replay's snapshots
+     * @param periodMillis how often, simulated ms, ≥ 1
+     */
+    public static Outcome replay(Run run, CommandLogReader log, Writer trace, SnapshotListener listener, long periodMillis) {
+        return replay(run, log, trace, null, listener, periodMillis);
+    }
+
+    private static Outcome replay(Run run, CommandLogReader log, Writer trace, org.kheperasim.sim.engine.DriverRecorder recorder,
+            SnapshotListener listener, long periodMillis) {
         LogHeader h = log.header();
         check(run, h);
         Engine engine = new Engine(new World(run.arena()), run.seed());
@@ -103,6 +121,9 @@ public final class OpenLoopReplay {
         TraceWriter writer = new TraceWriter(trace, header);
         long sampleNanos = run.sampleMillis() * Engine.TICK_NANOS;
         engine.addListener(writer, sampleNanos);
+        if (listener != null) {
+            engine.addListener(listener, periodMillis * Engine.TICK_NANOS);
+        }
         engine.setEnd(run.endNanos());
         Player player = new Player(log, robots, drivers);
         String claim;

@@ -1,5 +1,7 @@
 package org.kheperasim.sim.files;
 
+import java.awt.image.RenderedImage;
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.channels.FileChannel;
@@ -17,9 +19,11 @@ import java.nio.file.attribute.GroupPrincipal;
 import java.nio.file.attribute.PosixFileAttributeView;
 import java.nio.file.attribute.PosixFileAttributes;
 import java.util.concurrent.atomic.AtomicLong;
+import javax.imageio.ImageIO;
 
 /**
- * The one way the simulator saves a file (arenas, settings, edit logs, run recordings): a reader
+ * The one way the simulator saves a file (arenas, settings, edit logs, run recordings, web pages, the grade
+ * report and its pictures, the window's plot exports): a reader
  * never sees half a file, and a failed save leaves the old file as it was.
  *
  * <ol>
@@ -90,6 +94,22 @@ public final class AtomicFiles {
                 deleteQuietly(tmp);
             }
         }
+    }
+
+    /**
+     * Saves an image as PNG, atomically: it is encoded in memory first, so a failed encoding leaves
+     * the old file as it was too.
+     *
+     * @param file  where, possibly through a symbolic link, in an existing folder
+     * @param image the picture
+     * @throws IOException naming what failed, also when this Java runtime has no PNG writer
+     */
+    public static void writePng(Path file, RenderedImage image) throws IOException {
+        ByteArrayOutputStream png = new ByteArrayOutputStream(1 << 16);
+        if (!ImageIO.write(image, "png", png)) {
+            throw new IOException("cannot write " + file + ": no PNG writer in this Java runtime");
+        }
+        write(file, png.toByteArray());
     }
 
     /**

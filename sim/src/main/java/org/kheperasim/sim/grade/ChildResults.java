@@ -1,10 +1,14 @@
 package org.kheperasim.sim.grade;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import org.kheperasim.sim.run.BoundedConsole;
+import org.kheperasim.sim.run.RunResult;
+import org.kheperasim.sim.task.RunFacts;
 import org.kheperasim.sim.task.Score;
+import org.kheperasim.sim.web.RunOutcome;
 
 /**
  * Turns what a child run left into a {@link RunRecord}: its own result (the claim at the end of its
@@ -35,6 +39,7 @@ final class ChildResults {
             String err, String madeIn) {
         RunStatus status = RunStatus.OK;
         String failure = null;
+        String at = null;
         Object robots = claim.get("robots");
         if (robots instanceof List<?> list) {
             for (Object o : list) {
@@ -42,9 +47,13 @@ final class ChildResults {
                     RunStatus s = ofController(String.valueOf(robot.get("controllerStatus")));
                     if (s != RunStatus.OK) {
                         status = s;
-                        // What it threw; for the other faults the run's error line, read below without
-                        // what depends on the machine (the JSON's text keeps it).
-                        failure = s != RunStatus.THREW || robot.get("failure") == null ? null : String.valueOf(robot.get("failure"));
+                        // What it threw, and where in the student's code; for the other faults the run's
+                        // first error line (below; its result's text is its last error, which may be a
+                        // later one), else its result's text, without what depends on the machine.
+                        Object text = robot.get("failure");
+                        failure = text == null ? null : s == RunStatus.THREW ? String.valueOf(text)
+                                : fault(err) != null ? fault(err) : FailureText.machineFree(String.valueOf(text));
+                        at = robot.get("failureAt") instanceof String frame ? frame : null;
                         break;
                     }
                 }
@@ -58,17 +67,61 @@ final class ChildResults {
             }
         }
         if (status == RunStatus.EXCEEDED_MEMORY) {
-            // The heap watch or an OutOfMemoryError, depending on the collector's timing: one text for both.
-            failure = "controller " + controller + " allocated without bound and was stopped at the run's heap limit";
+            failure = outOfMemory(controller);
         } else if (failure == null && status != RunStatus.OK) {
             failure = fault(err);
         }
         if (failure != null) {
-            detail.insert(0, shorten(failure) + (detail.length() > 0 ? " | " : ""));
+            // The student's line is kept whole, however long the message before it.
+            String where = at == null ? "" : " at " + at;
+            detail.insert(0, shorten(failure, MAX_DETAIL - where.length()) + where + (detail.length() > 0 ? " | " : ""));
         }
         return new RunRecord(job.student(), job.arena(), job.seed(), status, score == null ? 0 : score.points(),
                 score == null ? 0 : score.max(), score == null ? 0 : score.percent(), seconds, controller,
                 withDropped(detail.toString(), err), "", madeIn);
+    }
+
+    /**
+     * What a replayed run's page says besides its samples: who and what it was, each controller that
+     * failed with the report's words (the student's line where it threw) and when, and the replay's
+     * facts for the score (its floor coverage and region times, exactly the report's score).
+     *
+     * @param job        the run
+     * @param controller the controller class
+     * @param claim      the run's own result, parsed (empty when it was not the simulator's)
+     * @param replay     the result of the grader's replay
+     * @param record     the run as the report holds it
+     * @return the page's outcome
+     */
+    static RunOutcome page(GradePlan.Job job, String controller, Map<String, Object> claim, RunResult replay, RunRecord record) {
+        String title = job.student() + ": " + controller.substring(controller.lastIndexOf('.') + 1) + " in "
+                + ReportFiles.arenaLabel(job.arena()) + " · seed " + job.seed();
+        List<RunOutcome.Failure> failures = new ArrayList<>();
+        if (claim.get("robots") instanceof List<?> robots) {
+            for (int i = 0; i < robots.size(); i++) {
+                if (robots.get(i) instanceof Map<?, ?> robot) {
+                    String word = String.valueOf(robot.get("controllerStatus"));
+                    if (ofController(word) == RunStatus.OK) {
+                        continue;
+                    }
+                    String text = robot.get("failure") == null ? "" : String.valueOf(robot.get("failure"));
+                    RunStatus s = ofController(word);
+                    String message = s == RunStatus.THREW ? text + (robot.get("failureAt") instanceof String at ? " at " + at : "")
+                            : s == RunStatus.EXCEEDED_MEMORY ? outOfMemory(controller) : FailureText.machineFree(text);
+                    double seconds = robot.get("failureSeconds") instanceof Number n ? n.doubleValue() : Double.NaN;
+                    failures.add(new RunOutcome.Failure(i, seconds, word, message));
+                }
+            }
+        }
+        if (failures.isEmpty() && record.status() != RunStatus.OK) {
+            title += " · " + record.status().label() + (record.status() == RunStatus.TAMPERED ? " (the replay's points)" : "");
+        }
+        return new RunOutcome(title, failures, RunFacts.of(replay));
+    }
+
+    /** The heap watch or an OutOfMemoryError, depending on the collector's timing: one text for both. */
+    private static String outOfMemory(String controller) {
+        return "controller " + controller + " allocated without bound and was stopped at the run's heap limit";
     }
 
     /**
@@ -96,7 +149,7 @@ final class ChildResults {
             detail = "the run's JVM ran out of heap (exit status " + exit + ")";
         } else if (err.contains(" was refused: ")) {
             status = RunStatus.BROKE_RULE;
-            detail = lastLine(err, " was refused: ");
+            detail = refusal(lastLine(err, " was refused: "));
         } else if (exit == 0) {
             // The simulator hands its result over before it ends the JVM: something else ended it.
             status = RunStatus.TAMPERED;
@@ -149,13 +202,23 @@ final class ChildResults {
             int e = line.indexOf("] ERROR ");
             int colon = e < 0 ? -1 : line.indexOf(": ", e);
             if (colon > 0 && line.indexOf("controller ", colon) == colon + 2) {
-                String msg = line.substring(colon + 2);
-                int cut = msg.indexOf("; the controller was stopped");
-                msg = cut > 0 ? msg.substring(0, cut) : msg;
-                return msg.replaceAll("\\s*\\([^()]*\\bMB\\b[^()]*\\)", "");
+                return FailureText.machineFree(line.substring(colon + 2));
             }
         }
         return null;
+    }
+
+    /**
+     * A class refused at load, told from the student's line on ({@code controller Filer was refused at load:
+     * Filer.java:3: uses java.io.File: ...}), without the class file's path and the loader's words.
+     */
+    static String refusal(String line) {
+        java.util.regex.Matcher where = java.util.regex.Pattern.compile("[\\w$]+\\.java:\\d+: ").matcher(line);
+        java.util.regex.Matcher who = java.util.regex.Pattern.compile("controller \\S+ was refused").matcher(line);
+        if (!where.find() || !who.find() || where.start() < who.end()) {
+            return line.replaceFirst("^khepera-sim: error: ", "");
+        }
+        return who.group() + " at load: " + line.substring(where.start());
     }
 
     static RunStatus ofController(String s) {
@@ -180,7 +243,11 @@ final class ChildResults {
     }
 
     private static String shorten(String s) {
+        return shorten(s, MAX_DETAIL);
+    }
+
+    private static String shorten(String s, int max) {
         String one = s.replaceAll("\\s+", " ").strip();
-        return one.length() <= MAX_DETAIL ? one : one.substring(0, MAX_DETAIL - 3) + "...";
+        return one.length() <= max ? one : one.substring(0, StrictMath.max(0, max - 3)) + "...";
     }
 }

@@ -13,6 +13,8 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.commandlog.LogChannel;
 import org.kheperasim.sim.sandbox.Box;
 import org.kheperasim.sim.sandbox.BoxLimits;
+import org.kheperasim.sim.web.RunOutcome;
+import org.kheperasim.sim.web.RunPageRecorder;
 
 /**
  * Makes one graded run in a child JVM: {@code java -Xmx… org.kheperasim.sim.cli.Main run …
@@ -46,8 +48,10 @@ final class ChildRun {
      * @param wallSeconds real time it took, s
      * @param trace       the replay's trace, or null when there is none
      * @param log         the run's command log as received, or null
+     * @param page        what the run's page says besides the replay (null without a replay)
+     * @param tape        the replay's samples for the page (null without a replay)
      */
-    record Outcome(RunRecord record, double wallSeconds, Path trace, Path log) {
+    record Outcome(RunRecord record, double wallSeconds, Path trace, Path log, RunOutcome page, RunPageRecorder tape) {
     }
 
     private ChildRun() {
@@ -142,8 +146,9 @@ final class ChildRun {
         double wall = (System.nanoTime() - start) / 1e9;
         String madeIn = lim.sandbox() ? RunRecord.SANDBOX : RunRecord.NO_SANDBOX;
         Verdict.Child child = new Verdict.Child(killed, exit, err, Files.isRegularFile(logFile) ? logFile : null, cut, madeIn);
-        RunRecord r = Verdict.judge(job, sub, arena, lim, child, trace);
-        return new Outcome(r, wall, Files.isRegularFile(trace) ? trace : null, child.log());
+        Verdict.Judged judged = Verdict.judge(job, sub, arena, lim, child, trace);
+        return new Outcome(judged.record(), wall, Files.isRegularFile(trace) ? trace : null, child.log(), judged.page(),
+                judged.tape());
     }
 
     /** Kill a child and everything it started (bubblewrap's own child dies with it too). */

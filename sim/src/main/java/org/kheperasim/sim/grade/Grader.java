@@ -26,6 +26,7 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.files.AtomicFiles;
 import org.kheperasim.sim.sandbox.BoxProbe;
+import org.kheperasim.sim.web.RunPage;
 
 /**
  * Grades a folder of submissions (or one shard of the grading): compiles them, makes each run in a
@@ -36,6 +37,15 @@ import org.kheperasim.sim.sandbox.BoxProbe;
  * Ctrl-C) kills the runs going; after {@code kill -9} they end by themselves (see {@link ChildSide}).
  */
 public final class Grader {
+    /** The first line of {@code timings.csv}: per run its child's wall seconds and its page's. */
+    static final String TIMINGS_HEADER = "run,status,wall_s,page_s\n";
+    /**
+     * The replay's trace's sample period, ms, enough for the picture (the page takes the replay's
+     * snapshots every 50 ms itself, see {@link Verdict}).
+     */
+    static final long SAMPLE_MILLIS = 250;
+    /** The folder of the runs' web pages, in the report folder. */
+    static final String PAGES = "pages/";
 
     /**
      * What to grade and how.
@@ -102,12 +112,12 @@ public final class Grader {
                 makeRuns(o, todo, jobs.size() - todo.size(), jobs.size(), subs, arenas, work, journal);
             }
             List<RunRecord> records = new ArrayList<>();
-            StringBuilder timings = new StringBuilder("run,status,wall_s\n");
+            StringBuilder timings = new StringBuilder(TIMINGS_HEADER);
             for (int i = 0; i < jobs.size(); i++) {
                 Journal.Entry e = journal.done().get(jobs.get(i).index());
                 records.add(e.record());
                 timings.append(ReportFiles.runId(jobs.get(i))).append(',').append(e.record().status().word()).append(',')
-                        .append(String.format(Locale.ROOT, "%.3f", e.wallSeconds())).append('\n');
+                        .append(String.format(Locale.ROOT, "%.3f,%.3f", e.wallSeconds(), e.pageSeconds())).append('\n');
             }
             ReportFiles.Report report = new ReportFiles.Report(plan, o.shard(), records);
             ReportFiles.write(report, o.out());
@@ -118,16 +128,17 @@ public final class Grader {
         }
     }
 
-    /** A run the journal holds counts as made, unless its picture has gone since. */
+    /** A run the journal holds counts as made, unless its picture or its page has gone since. */
     private static boolean done(Journal journal, GradePlan.Job job, Path out) {
         Journal.Entry e = journal.done().get(job.index());
-        return e != null && (e.record().picture().isEmpty() || Files.isRegularFile(out.resolve(e.record().picture())));
+        return e != null && (e.record().picture().isEmpty() || Files.isRegularFile(out.resolve(e.record().picture())))
+                && (e.record().page().isEmpty() || Files.isRegularFile(out.resolve(e.record().page())));
     }
 
     private static void makeRuns(Options o, List<GradePlan.Job> todo, int alreadyDone, int total, Map<String, Submission> subs,
             Map<String, Arena> arenas, Path work, Journal journal) {
         int processors = StrictMath.max(1, Runtime.getRuntime().availableProcessors() / o.jobs());
-        ChildRun.Limits limits = new ChildRun.Limits(o.heapMb(), o.wallSeconds(), o.hangSeconds(), o.seconds(), 250,
+        ChildRun.Limits limits = new ChildRun.Limits(o.heapMb(), o.wallSeconds(), o.hangSeconds(), o.seconds(), SAMPLE_MILLIS,
                 processors, o.sandbox(), o.trustedForTests());
         Path sockets;
         try {
@@ -152,10 +163,11 @@ public final class Grader {
             futures.add(pool.submit(() -> {
                 int slot = slots.take();
                 try {
-                    ChildRun.Outcome outcome = one(job, subs.get(job.student()), limits, arenas.get(job.arena()), o, work,
-                            sockets, slot, running);
-                    journal.add(job, new Journal.Entry(outcome.record(), outcome.wallSeconds()));
-                    progress.finished(job, outcome.record());
+                    Made made = one(job, subs.get(job.student()), limits, arenas.get(job.arena()), o, work, sockets, slot,
+                            running);
+                    journal.add(job, new Journal.Entry(made.outcome().record(), made.outcome().wallSeconds(),
+                            made.pageSeconds()));
+                    progress.finished(job, made.outcome().record());
                 } finally {
                     slots.add(slot);
                 }
@@ -183,12 +195,17 @@ public final class Grader {
         }
     }
 
-    private static ChildRun.Outcome one(GradePlan.Job job, Submission sub, ChildRun.Limits limits, Arena arena, Options o,
+    /** A run made, and the real time its page took, s. */
+    private record Made(ChildRun.Outcome outcome, double pageSeconds) {
+    }
+
+    private static Made one(GradePlan.Job job, Submission sub, ChildRun.Limits limits, Arena arena, Options o,
             Path work, Path sockets, int slot, Set<Process> running) throws IOException {
         if (!sub.runnable()) {
-            RunRecord r = new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.COMPILE_FAILED, 0,
+            RunRecord r = new RunRecord(job.student(), job.arena(), job.seed(),
+                    sub.empty() ? RunStatus.NOTHING_HANDED_IN : RunStatus.COMPILE_FAILED, 0,
                     arena.assignment().maxPoints(), 0, 0, sub.controller(), sub.problem(), "", "");
-            return new ChildRun.Outcome(r, 0, null, null);
+            return new Made(new ChildRun.Outcome(r, 0, null, null, null, null), 0);
         }
         ChildRun.Outcome outcome = ChildRun.run(job, sub, arena, limits, work.resolve("runs"), sockets, slot, running);
         RunRecord r = outcome.record();
@@ -196,12 +213,18 @@ public final class Grader {
             r = new RunRecord(r.student(), r.arena(), r.seed(), r.status(), 0, arena.assignment().maxPoints(), 0,
                     r.simulatedSeconds(), r.controller(), r.detail(), "", r.madeIn());
         }
+        double pageSeconds = 0;
         try {
             if (outcome.trace() != null) {
-                // The picture is drawn from the grader's own replay, never from anything the run wrote.
+                // The picture and the page are made from the grader's own replay, never from anything the run wrote.
                 String picture = "img/" + ReportFiles.runId(job) + ".png";
                 TrajectoryPicture.draw(arena, outcome.trace(), o.out().resolve(picture), 320);
                 r = r.withPicture(picture);
+                if (outcome.page() != null && outcome.tape() != null) {
+                    long t0 = System.nanoTime();
+                    r = withPage(r, job, outcome, o);
+                    pageSeconds = (System.nanoTime() - t0) / 1e9;
+                }
             }
         } finally {
             if (!o.keepTraces()) {
@@ -212,7 +235,26 @@ public final class Grader {
                 }
             }
         }
-        return new ChildRun.Outcome(r, outcome.wallSeconds(), outcome.trace(), outcome.log());
+        return new Made(new ChildRun.Outcome(r, outcome.wallSeconds(), outcome.trace(), outcome.log(), null, null),
+                pageSeconds);
+    }
+
+    /**
+     * The run's page, from the grader's replay; a page that cannot be made (a replay without a sample)
+     * costs the run its page, said on the progress stream, never the grading.
+     */
+    private static RunRecord withPage(RunRecord r, GradePlan.Job job, ChildRun.Outcome outcome, Options o)
+            throws IOException {
+        String page = PAGES + ReportFiles.runId(job) + ".html";
+        Files.createDirectories(o.out().resolve(PAGES));
+        try {
+            RunPage.write(outcome.tape(), outcome.page(), "the grader's replay of the run's command log",
+                    o.out().resolve(page));
+            return r.withPage(page);
+        } catch (IllegalArgumentException | IllegalStateException | UncheckedIOException e) {
+            o.progress().println("note: " + ReportFiles.runId(job) + " has no web page: " + e.getMessage());
+            return r;
+        }
     }
 
     /** A folder only the grader's user may enter: the runs' sockets live there (a box sees only its own). */

@@ -3,7 +3,10 @@ package org.kheperasim.sim.grade;
 import java.util.List;
 import java.util.Map;
 
-/** The report as one HTML page: per arena the ranking, then every run with its picture. */
+/**
+ * The report as one HTML page: per arena the ranking, with each seed's score linked to its run's page,
+ * then every run with its picture, which links to the page that replays it.
+ */
 final class HtmlReport {
     private HtmlReport() {
     }
@@ -22,16 +25,23 @@ final class HtmlReport {
                 .append(" seeds = ").append(report.runs().size()).append(" runs")
                 .append(report.shard().n() > 1 ? " (shard " + report.shard() + ")" : "")
                 .append("; ").append(esc(TextTable.madeIn(report.runs())))
-                .append(". Also as <a href=\"results.csv\">CSV</a> and <a href=\"results.json\">JSON</a>.</p>\n");
+                .append(". Also as <a href=\"results.csv\">CSV</a> and <a href=\"results.json\">JSON</a>.</p>\n")
+                .append("<p>").append(esc(Ranking.RULE)).append("</p>\n");
         for (Map.Entry<String, List<Ranking.Entry>> e : Ranking.of(report.runs()).entrySet()) {
             sb.append("<h2>Arena ").append(esc(e.getKey())).append("</h2>\n<table><tr><th>rank</th><th>student</th>"
-                    + "<th>mean score %</th><th>mean points</th><th>runs by seed</th></tr>\n");
+                    + "<th>mean score %</th><th>mean points</th><th>score % by seed</th></tr>\n");
             for (Ranking.Entry x : e.getValue()) {
                 sb.append("<tr><td>").append(x.ranked() ? Integer.toString(x.rank()) : "&ndash;").append("</td><td>").append(esc(x.student())).append("</td><td>")
                         .append(ReportFiles.num(x.meanPercent())).append("</td><td>").append(ReportFiles.num(x.meanPoints()))
                         .append("</td><td>");
-                for (RunRecord r : x.runs()) {
-                    sb.append(status(r)).append(' ');
+                for (int i = 0; i < x.runs().size(); i++) {
+                    RunRecord r = x.runs().get(i);
+                    String tag = r.page().isEmpty() ? "span" : "a";
+                    sb.append(i > 0 ? " | " : "").append('<').append(tag)
+                            .append(r.page().isEmpty() ? "" : " href=\"" + esc(r.page()) + "\"").append(" class=\"")
+                            .append(r.status() == RunStatus.OK ? "ok" : "bad").append("\" title=\"seed ").append(r.seed())
+                            .append(r.detail().isEmpty() ? "" : ": " + esc(r.detail())).append("\">").append(esc(TextTable.seed(r)))
+                            .append("</").append(tag).append('>');
                 }
                 sb.append("</td></tr>\n");
             }
@@ -40,13 +50,16 @@ final class HtmlReport {
                 for (RunRecord r : x.runs()) {
                     sb.append("<div class=\"run\">");
                     if (!r.picture().isEmpty()) {
-                        sb.append("<img src=\"").append(esc(r.picture())).append("\" alt=\"trajectory of ")
-                                .append(esc(r.student())).append(" seed ").append(r.seed()).append("\">");
+                        String img = "<img src=\"" + esc(r.picture()) + "\" alt=\"trajectory of " + esc(r.student()) + " seed "
+                                + r.seed() + "\">";
+                        sb.append(r.page().isEmpty() ? img : "<a href=\"" + esc(r.page()) + "\" title=\"watch the run\">" + img
+                                + "</a>");
                     }
                     sb.append("<b>").append(esc(r.student())).append("</b> seed ").append(r.seed()).append("<br>")
                             .append(status(r)).append(" &middot; ").append(ReportFiles.num(r.points())).append('/')
                             .append(ReportFiles.num(r.max())).append(" points")
                             .append(r.madeIn().equals(RunRecord.NO_SANDBOX) ? " &middot; <b>no sandbox</b>" : "")
+                            .append(r.page().isEmpty() ? "" : " &middot; <a href=\"" + esc(r.page()) + "\">watch</a>")
                             .append("<br><span class=\"detail\">")
                             .append(esc(r.detail())).append("</span></div>\n");
                 }

@@ -31,8 +31,13 @@ final class Journal implements AutoCloseable {
      *
      * @param record      the run as the report holds it
      * @param wallSeconds real time it took, s (for {@code timings.csv})
+     * @param pageSeconds real time its web page took to write, s (for {@code timings.csv})
      */
-    record Entry(RunRecord record, double wallSeconds) {
+    record Entry(RunRecord record, double wallSeconds, double pageSeconds) {
+        /** A run without a page. */
+        Entry(RunRecord record, double wallSeconds) {
+            this(record, wallSeconds, 0);
+        }
     }
 
     private final FileChannel out;
@@ -83,7 +88,9 @@ final class Journal implements AutoCloseable {
                         Map<?, ?> m = (Map<?, ?>) JsonValues.parse(line);
                         @SuppressWarnings("unchecked")
                         RunRecord r = ReportFiles.record((Map<String, Object>) m.get("run"));
-                        done.put(((Number) m.get("index")).intValue(), new Entry(r, ((Number) m.get("wallSeconds")).doubleValue()));
+                        double page = m.get("pageSeconds") instanceof Number n ? n.doubleValue() : 0;
+                        done.put(((Number) m.get("index")).intValue(), new Entry(r, ((Number) m.get("wallSeconds")).doubleValue(),
+                                page));
                     } catch (RuntimeException e) {
                         throw new IllegalArgumentException(file + ":" + lineNumber + ": not a journal line (" + e.getMessage()
                                 + "); delete " + file + " to grade again from the start");
@@ -118,6 +125,7 @@ final class Journal implements AutoCloseable {
      */
     synchronized void add(GradePlan.Job job, Entry e) {
         String line = "{\"index\": " + job.index() + ", \"wallSeconds\": " + String.format(Locale.ROOT, "%.3f", e.wallSeconds())
+                + ", \"pageSeconds\": " + String.format(Locale.ROOT, "%.3f", e.pageSeconds())
                 + ", \"run\": " + ReportFiles.json(e.record()) + "}\n";
         try {
             ByteBuffer b = ByteBuffer.wrap(line.getBytes(StandardCharsets.UTF_8));

@@ -8,11 +8,16 @@ import java.util.Map;
 
 /**
  * The students of one assignment (arena) ranked by their mean score over the seeds; a run that
- * failed counts with the points it earned before it failed (none, when it did not run). Equal means
- * share a rank. A student with a run found {@link RunStatus#TAMPERED tampered} in an arena is not
- * ranked there: listed after the ranked ones, with rank 0.
+ * failed counts with the points it earned before it failed (none, when it did not run). At equal
+ * means, fewer runs not ok rank first, so a failure never ties a clean run; equal means with as many
+ * runs not ok share a rank. A student with a run found {@link RunStatus#TAMPERED tampered} in an
+ * arena is not ranked there: listed after the ranked ones, with rank 0.
  */
 final class Ranking {
+    /** The rule, as the report states it. */
+    static final String RULE = "Ranked by mean score over the seeds (a run that failed keeps the points it earned before it"
+            + " failed); at equal means, fewer runs not ok rank first, so a failure never ties a clean run; equal means with"
+            + " as many runs not ok share a rank. A student with a tampered run is not ranked (-).";
 
     /**
      * One student's line.
@@ -53,17 +58,24 @@ final class Ranking {
                 entries.add(new Entry(0, student, ReportFiles.round2(pct), ReportFiles.round2(pts), sorted));
             });
             entries.sort(Comparator.comparing(Ranking::tampered).thenComparing(Comparator.comparingDouble(Entry::meanPercent)
-                    .reversed()).thenComparing(Entry::student));
+                    .reversed()).thenComparingLong(Ranking::notOk).thenComparing(Entry::student));
             List<Entry> ranked = new ArrayList<>();
             for (int i = 0; i < entries.size(); i++) {
                 Entry e = entries.get(i);
+                Entry before = i > 0 ? entries.get(i - 1) : null;
                 int rank = tampered(e) ? 0
-                        : i > 0 && entries.get(i - 1).meanPercent() == e.meanPercent() ? ranked.get(i - 1).rank() : i + 1;
+                        : before != null && before.meanPercent() == e.meanPercent() && notOk(before) == notOk(e)
+                                ? ranked.get(i - 1).rank() : i + 1;
                 ranked.add(new Entry(rank, e.student(), e.meanPercent(), e.meanPoints(), e.runs()));
             }
             out.put(arena, ranked);
         });
         return out;
+    }
+
+    /** @return how many of a student's runs were not ok */
+    static long notOk(Entry e) {
+        return e.runs().stream().filter(r -> r.status() != RunStatus.OK).count();
     }
 
     private static boolean tampered(Entry e) {

@@ -23,7 +23,7 @@ public final class ReportFiles {
     public static final String FORMAT = "khepera-grade 1";
     /** The columns of {@code results.csv}. */
     public static final String CSV_HEADER = "student,arena,seed,status,points,max,percent,simulated_s,controller,picture,detail,"
-            + "made_in";
+            + "made_in,page";
 
     /**
      * A report: the plan it covers, the slice made, and the runs.
@@ -82,7 +82,8 @@ public final class ReportFiles {
                     .append(r.status().word()).append(',').append(num(r.points())).append(',').append(num(r.max())).append(',')
                     .append(num(r.percent())).append(',').append(String.format(Locale.ROOT, "%.3f", r.simulatedSeconds()))
                     .append(',').append(csvField(r.controller())).append(',').append(csvField(r.picture())).append(',')
-                    .append(csvField(r.detail())).append(',').append(r.madeIn()).append('\n');
+                    .append(csvField(r.detail())).append(',').append(r.madeIn()).append(',').append(csvField(r.page()))
+                    .append('\n');
         }
         return sb.toString();
     }
@@ -125,7 +126,8 @@ public final class ReportFiles {
                 .append(", \"controller\": ").append(JsonValues.quote(r.controller()))
                 .append(", \"picture\": ").append(JsonValues.quote(r.picture()))
                 .append(", \"detail\": ").append(JsonValues.quote(r.detail()))
-                .append(", \"madeIn\": ").append(JsonValues.quote(r.madeIn())).append('}').toString();
+                .append(", \"madeIn\": ").append(JsonValues.quote(r.madeIn()))
+                .append(", \"page\": ").append(JsonValues.quote(r.page())).append('}').toString();
     }
 
     /** @param r a run's JSON object, parsed @return the run */
@@ -133,7 +135,7 @@ public final class ReportFiles {
         return new RunRecord((String) r.get("student"), (String) r.get("arena"), ((Number) r.get("seed")).longValue(),
                 RunStatus.ofWord((String) r.get("status")), dbl(r.get("points")), dbl(r.get("max")),
                 dbl(r.get("percent")), dbl(r.get("simulatedSeconds")), (String) r.get("controller"),
-                (String) r.get("detail"), (String) r.get("picture"), (String) r.get("madeIn"));
+                (String) r.get("detail"), (String) r.get("picture"), (String) r.get("madeIn"), (String) r.get("page"));
     }
 
     /**
@@ -176,7 +178,8 @@ public final class ReportFiles {
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read " + file + ": " + e.getMessage(), e);
         }
-        if (lines.isEmpty() || !lines.get(0).equals(CSV_HEADER)) {
+        // Reports written before a column was added read too: made_in, then page.
+        if (lines.isEmpty() || !CSV_HEADER.startsWith(lines.get(0)) || !lines.get(0).contains(",detail")) {
             throw new IllegalArgumentException(file + " does not start with the header " + CSV_HEADER);
         }
         List<RunRecord> out = new ArrayList<>();
@@ -184,7 +187,8 @@ public final class ReportFiles {
             List<String> f = csvSplit(line);
             out.add(new RunRecord(f.get(0), f.get(1), Long.parseLong(f.get(2)), RunStatus.ofWord(f.get(3)),
                     Double.parseDouble(f.get(4)), Double.parseDouble(f.get(5)), Double.parseDouble(f.get(6)),
-                    Double.parseDouble(f.get(7)), f.get(8), f.get(10), f.get(9), f.size() > 11 ? f.get(11) : ""));
+                    Double.parseDouble(f.get(7)), f.get(8), f.get(10), f.get(9), f.size() > 11 ? f.get(11) : "",
+                    f.size() > 12 ? f.get(12) : ""));
         }
         return out;
     }

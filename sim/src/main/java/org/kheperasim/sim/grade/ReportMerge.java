@@ -4,12 +4,12 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import org.kheperasim.sim.files.AtomicFiles;
 
 /**
  * Joins the reports of the shards of one grading into the report of the whole: the same files,
@@ -34,7 +34,7 @@ public final class ReportMerge {
         Map<Integer, Path> seen = new TreeMap<>();
         int n = 0;
         Map<Integer, RunRecord> byIndex = new HashMap<>();
-        StringBuilder timings = new StringBuilder("run,status,wall_s\n");
+        StringBuilder timings = new StringBuilder(Grader.TIMINGS_HEADER);
         for (Path folder : shardFolders) {
             Path file = folder.resolve("results.json");
             if (!Files.isRegularFile(file)) {
@@ -60,7 +60,7 @@ public final class ReportMerge {
             for (int i = 0; i < jobs.size(); i++) {
                 byIndex.put(jobs.get(i).index(), r.runs().get(i));
             }
-            copyPictures(folder, out, r.runs());
+            copyFiles(folder, out, r.runs());
             appendTimings(folder, timings);
         }
         for (int k = 1; k <= n; k++) {
@@ -76,24 +76,27 @@ public final class ReportMerge {
         ReportFiles.Report merged = new ReportFiles.Report(plan, GradePlan.Shard.ALL, runs);
         ReportFiles.write(merged, out);
         try {
-            Files.writeString(out.resolve("timings.csv"), timings);
+            AtomicFiles.write(out.resolve("timings.csv"), timings.toString());
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write timings.csv: " + e.getMessage(), e);
         }
         return merged;
     }
 
-    private static void copyPictures(Path from, Path to, List<RunRecord> runs) {
+    /** The runs' pictures and pages, each saved atomically (a reader of the merged report never sees half a file). */
+    private static void copyFiles(Path from, Path to, List<RunRecord> runs) {
         try {
             for (RunRecord r : runs) {
-                if (!r.picture().isEmpty()) {
-                    Path target = to.resolve(r.picture());
-                    Files.createDirectories(target.getParent());
-                    Files.copy(from.resolve(r.picture()), target, StandardCopyOption.REPLACE_EXISTING);
+                for (String file : new String[] {r.picture(), r.page()}) {
+                    if (!file.isEmpty()) {
+                        Path target = to.resolve(file);
+                        Files.createDirectories(target.getParent());
+                        AtomicFiles.write(target, Files.readAllBytes(from.resolve(file)));
+                    }
                 }
             }
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot copy the pictures of " + from + ": " + e.getMessage(), e);
+            throw new UncheckedIOException("cannot copy the pictures and pages of " + from + ": " + e.getMessage(), e);
         }
     }
 
@@ -102,7 +105,9 @@ public final class ReportMerge {
         try {
             if (Files.isRegularFile(t)) {
                 List<String> lines = Files.readAllLines(t);
-                lines.stream().skip(1).forEach(l -> timings.append(l).append('\n'));
+                // A shard of an earlier version has no page_s: its runs had no page.
+                boolean pages = !lines.isEmpty() && lines.get(0).endsWith(",page_s");
+                lines.stream().skip(1).forEach(l -> timings.append(l).append(pages ? "" : ",0.000").append('\n'));
             }
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read " + t + ": " + e.getMessage(), e);

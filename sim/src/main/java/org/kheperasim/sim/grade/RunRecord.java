@@ -18,9 +18,12 @@ package org.kheperasim.sim.grade;
  * @param picture          the trajectory picture, relative to the report folder (empty when none)
  * @param madeIn           how the run was made: {@link #SANDBOX}, {@link #NO_SANDBOX}, or empty when it was not
  *                         (it did not compile)
+ * @param page             the run's web page, which replays it in a browser, relative to the report folder (empty
+ *                         when there is none: the run left nothing to replay)
  */
 public record RunRecord(String student, String arena, long seed, RunStatus status, double points, double max,
-        double percent, double simulatedSeconds, String controller, String detail, String picture, String madeIn) {
+        double percent, double simulatedSeconds, String controller, String detail, String picture, String madeIn,
+        String page) {
     /** Made in the operating-system sandbox (docs/grading.md, "The sandbox"). */
     public static final String SANDBOX = "sandbox";
     /** Made without it ({@code grade --no-sandbox}). */
@@ -36,11 +39,24 @@ public record RunRecord(String student, String arena, long seed, RunStatus statu
         controller = controller == null ? "" : controller;
         picture = picture == null ? "" : picture;
         madeIn = madeIn == null ? "" : madeIn;
+        page = page == null ? "" : page;
+    }
+
+    /** A run without a page (yet). */
+    public RunRecord(String student, String arena, long seed, RunStatus status, double points, double max, double percent,
+            double simulatedSeconds, String controller, String detail, String picture, String madeIn) {
+        this(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture, madeIn, "");
     }
 
     /** @param picture the trajectory picture @return this run with it */
     RunRecord withPicture(String picture) {
         return new RunRecord(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture,
-                madeIn);
+                madeIn, page);
+    }
+
+    /** @param page the run's web page @return this run with it */
+    RunRecord withPage(String page) {
+        return new RunRecord(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture,
+                madeIn, page);
     }
 }

@@ -8,6 +8,8 @@ public enum RunStatus {
     OK("ok"),
     /** The submission did not compile, or holds no controller class. */
     COMPILE_FAILED("failed to compile"),
+    /** The student's folder is empty, or holds no {@code .java} or {@code .class} file. */
+    NOTHING_HANDED_IN("nothing handed in"),
     /** The controller threw. */
     THREW("threw"),
     /** The controller stopped making API calls, or the run did not end within the wall-clock limit. */

@@ -69,7 +69,7 @@ public final class Submissions {
                     return new Submission(student, null, null, first);
                 }
             } else if (files(folder, ".class").isEmpty()) {
-                return new Submission(student, null, null, "no .java or .class file in " + folder);
+                return new Submission(student, null, null, handedIn(folder), true);
             }
             return withController(student, classes.toAbsolutePath());
         } catch (IOException e) {
@@ -101,6 +101,22 @@ public final class Submissions {
                     + " (CurrentRobotState, MessagePasser) constructor, Controller, StepController or RobotController");
         }
         return new Submission(student, classes, found.get(0), null);
+    }
+
+    /**
+     * What a folder without code holds, by name (a zip or a report handed in instead?), without the
+     * folder's path: the report is the same wherever the submissions lie.
+     */
+    private static String handedIn(Path folder) throws IOException {
+        List<String> names = files(folder, "").stream().map(p -> folder.relativize(p).toString().replace('\\', '/'))
+                .filter(n -> !n.startsWith(".") && !n.contains("/.")).toList();
+        if (names.isEmpty()) {
+            return "the folder is empty";
+        }
+        String shown = String.join(", ", names.subList(0, StrictMath.min(5, names.size())))
+                + (names.size() > 5 ? ", ..." : "");
+        return "no .java or .class file; the folder holds " + (names.size() == 1 ? "1 file: " : names.size() + " files: ")
+                + shown;
     }
 
     private static void deleteTree(Path folder) throws IOException {

@@ -6,7 +6,10 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.stream.Collectors;
 
-/** The report as a terminal table: per arena, the students ranked, with each seed's status. */
+/**
+ * The report as a terminal table: per arena, the students ranked, with each seed's score (and its
+ * status when not ok), then every run not ok with its detail (the student's line where it threw).
+ */
 final class TextTable {
     private TextTable() {
     }
@@ -23,19 +26,33 @@ final class TextTable {
             sb.append("Arena ").append(e.getKey()).append(max > 0 ? " (" + ReportFiles.num(max) + " points)" : " (no tasks)")
                     .append('\n');
             sb.append(String.format(Locale.ROOT, "%4s  %-" + nameWidth + "s  %7s  %7s  %s%n", "rank", "student", "score%",
-                    "points", "runs by seed"));
+                    "points", "score% by seed"));
             for (Ranking.Entry x : entries) {
-                String statuses = x.runs().stream().map(r -> r.status() == RunStatus.OK ? ReportFiles.num(r.percent())
-                        : r.status().label()).collect(Collectors.joining(" | "));
+                String seeds = x.runs().stream().map(TextTable::seed).collect(Collectors.joining(" | "));
                 sb.append(String.format(Locale.ROOT, "%4s  %-" + nameWidth + "s  %7s  %7s  %s%n", x.ranked() ? x.rank() : "-", x.student(),
-                        ReportFiles.num(x.meanPercent()), ReportFiles.num(x.meanPoints()), statuses));
+                        ReportFiles.num(x.meanPercent()), ReportFiles.num(x.meanPoints()), seeds));
+            }
+            List<RunRecord> failed = entries.stream().flatMap(x -> x.runs().stream()).filter(r -> r.status() != RunStatus.OK)
+                    .toList();
+            if (!failed.isEmpty()) {
+                sb.append("Runs not ok:\n");
+                for (RunRecord r : failed) {
+                    sb.append("  ").append(r.student()).append(", seed ").append(r.seed()).append(": ").append(r.status().label())
+                            .append(r.detail().isEmpty() ? "" : ": " + r.detail()).append('\n');
+                }
             }
             sb.append('\n');
         }
+        sb.append(Ranking.RULE).append('\n');
         sb.append(runs.size()).append(" runs: ").append(counts.entrySet().stream()
                 .map(c -> c.getValue() + " " + c.getKey().label()).collect(Collectors.joining(", ")))
                 .append("; ").append(madeIn(runs)).append('\n');
         return sb.toString();
+    }
+
+    /** @return a seed's entry in the table: its score, %, and its status when not ok, e.g. {@code 4 (threw)} */
+    static String seed(RunRecord r) {
+        return ReportFiles.num(r.percent()) + (r.status() == RunStatus.OK ? "" : " (" + r.status().label() + ")");
     }
 
     /** @return how the runs were made: all in the sandbox, none, or how many each way */

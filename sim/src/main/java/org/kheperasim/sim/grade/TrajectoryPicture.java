@@ -18,17 +18,17 @@ import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.TreeMap;
-import javax.imageio.ImageIO;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.Cap;
 import org.kheperasim.sim.arena.Light;
 import org.kheperasim.sim.arena.Region;
 import org.kheperasim.sim.arena.Wall;
+import org.kheperasim.sim.files.AtomicFiles;
 
 /**
  * Draws a run's trajectory from its trace into a PNG, headless: the arena (regions, walls, lamps),
  * each robot's path from its start (green) to its end (red), and the caps where they ended. Same
- * trace, same bytes.
+ * trace, same bytes; saved atomically (a grading killed while drawing leaves no half picture).
  */
 final class TrajectoryPicture {
     private static final Color[] PATHS = {new Color(0x1f5fbf), new Color(0x9b30c0), new Color(0x0f8f6f), new Color(0xc06010)};
@@ -80,7 +80,7 @@ final class TrajectoryPicture {
             g.dispose();
         }
         Files.createDirectories(png.toAbsolutePath().getParent());
-        ImageIO.write(img, "png", png.toFile());
+        AtomicFiles.writePng(png, img);
     }
 
     private static void paths(Graphics2D g, Arena arena, Path trace, double scale) throws IOException {

@@ -19,6 +19,8 @@ import org.kheperasim.sim.commandlog.TornLogException;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.task.RunFacts;
 import org.kheperasim.sim.task.Score;
+import org.kheperasim.sim.web.RunOutcome;
+import org.kheperasim.sim.web.RunPageRecorder;
 
 /**
  * The grader's judgement of one child run: it replays the run's command log in its own engine, with
@@ -47,6 +49,20 @@ final class Verdict {
     record Child(boolean killed, int exit, String err, Path log, boolean logCut, String madeIn) {
     }
 
+    /**
+     * The judgement.
+     *
+     * @param record the run as the report holds it
+     * @param page   what the run's page says besides the replay's samples (title, failures with the student's
+     *               line, the replay's facts for the score), or null when there is no replay to show
+     * @param tape   the replay's samples for the page, every {@link RunPageRecorder#PERIOD_MILLIS}, or null
+     */
+    record Judged(RunRecord record, RunOutcome page, RunPageRecorder tape) {
+        Judged(RunRecord record) {
+            this(record, null, null);
+        }
+    }
+
     private Verdict() {
     }
 
@@ -57,39 +73,44 @@ final class Verdict {
      * @param lim   the grading's limits
      * @param child what the child left
      * @param trace where the replay's trace goes
-     * @return the run's record
+     * @return the run's record, and its page's facts when it was replayed
      */
-    static RunRecord judge(GradePlan.Job job, Submission sub, Arena arena, ChildRun.Limits lim, Child child, Path trace) {
+    static Judged judge(GradePlan.Job job, Submission sub, Arena arena, ChildRun.Limits lim, Child child, Path trace) {
         String controller = sub.controller();
         if (child.killed() || child.exit() == ChildSide.WALL_LIMIT_EXIT) {
-            return ChildResults.noResult(job, controller, true, lim.wallSeconds(), child.exit(), child.err(), child.madeIn());
+            return new Judged(ChildResults.noResult(job, controller, true, lim.wallSeconds(), child.exit(), child.err(),
+                    child.madeIn()));
         }
         if (child.logCut()) {
-            return new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.ERROR, 0, 0, 0, 0, controller,
+            return new Judged(new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.ERROR, 0, 0, 0, 0, controller,
                     "its command log passed the limit of " + (MAX_LOG_BYTES >> 20) + " MiB (compressed) and was cut off", "",
-                    child.madeIn());
+                    child.madeIn()));
         }
         double seconds = lim.seconds() != null ? lim.seconds() : arena.assignment().secondsOr(600);
         OpenLoopReplay.Run run = new OpenLoopReplay.Run(arena, job.seed(), (long) StrictMath.rint(seconds * 1e9),
                 lim.sampleMillis(), Collections.nCopies(arena.robots().size(), Settings.defaults()));
         OpenLoopReplay.Outcome replay;
+        // The page's samples come from the replay's own snapshots, every 50 ms: a trace that fine would
+        // cost the run and the replay five times the formatting of the trace's 250 ms lines.
+        RunPageRecorder tape = new RunPageRecorder(arena, null);
         try (BufferedReader in = open(child.log()); Writer out = Files.newBufferedWriter(trace, StandardCharsets.UTF_8)) {
             if (in == null) {
                 throw new TornLogException(0, "no command log came");
             }
-            replay = OpenLoopReplay.replay(run, new CommandLogReader(in), out);
+            replay = OpenLoopReplay.replay(run, new CommandLogReader(in), out, tape, RunPageRecorder.PERIOD_MILLIS);
         } catch (UncheckedIOException e) {
             deleteQuietly(trace);
-            return new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.ERROR, 0, 0, 0, 0, controller,
-                    "its command log could not be read: " + e.getMessage(), "", child.madeIn());
+            return new Judged(new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.ERROR, 0, 0, 0, 0, controller,
+                    "its command log could not be read: " + e.getMessage(), "", child.madeIn()));
         } catch (TornLogException e) {
             deleteQuietly(trace);
             // No whole log: the run did not end as the simulator ends it.
-            return ChildResults.noResult(job, controller, false, lim.wallSeconds(), child.exit(), child.err(), child.madeIn());
+            return new Judged(ChildResults.noResult(job, controller, false, lim.wallSeconds(), child.exit(), child.err(),
+                    child.madeIn()));
         } catch (ReplayMismatchException | LogFormatException e) {
             deleteQuietly(trace);
-            return ChildResults.tampered(job, controller, "its command log does not fit the run (" + e.getMessage() + ")", null,
-                    0, child.madeIn());
+            return new Judged(ChildResults.tampered(job, controller, "its command log does not fit the run (" + e.getMessage()
+                    + ")", null, 0, child.madeIn()));
         } catch (IOException e) {
             throw new UncheckedIOException("cannot replay " + child.log() + ": " + e.getMessage(), e);
         }
@@ -101,22 +122,25 @@ final class Verdict {
             Map<String, Object> parsed = (Map<String, Object>) JsonValues.parse(replay.claim());
             claim = parsed;
         } catch (RuntimeException e) {
-            return ChildResults.tampered(job, controller, "its own result is not the simulator's JSON", score, reached,
+            RunRecord r = ChildResults.tampered(job, controller, "its own result is not the simulator's JSON", score, reached,
                     child.madeIn());
+            return new Judged(r, ChildResults.page(job, controller, Map.of(), replay.result(), r), tape);
         }
         String differs = differs(claim, replay, score);
         if (differs != null) {
-            return ChildResults.tampered(job, controller, "its own result differs from the replay of its command log (" + differs
-                    + "): something other than the simulator wrote it; the score is the replay's", score, reached, child.madeIn());
+            RunRecord r = ChildResults.tampered(job, controller, "its own result differs from the replay of its command log ("
+                    + differs + "): something other than the simulator wrote it; the score is the replay's", score, reached,
+                    child.madeIn());
+            return new Judged(r, ChildResults.page(job, controller, Map.of(), replay.result(), r), tape);
         }
         RunRecord r = ChildResults.fromClaim(job, controller, claim, score, reached, child.err(), child.madeIn());
         int expected = r.status() == RunStatus.OK ? 0 : 1;
         if (child.exit() != expected) {
-            return new RunRecord(r.student(), r.arena(), r.seed(), RunStatus.ERROR, r.points(), r.max(), r.percent(),
+            r = new RunRecord(r.student(), r.arena(), r.seed(), RunStatus.ERROR, r.points(), r.max(), r.percent(),
                     r.simulatedSeconds(), controller, "exit status " + child.exit() + " after a whole run that ended "
                     + r.status().label() + " (" + expected + " expected)", "", child.madeIn());
         }
-        return r;
+        return new Judged(r, ChildResults.page(job, controller, claim, replay.result(), r), tape);
     }
 
     /** @return what differs between the run's claim and the replay, or null when nothing does */

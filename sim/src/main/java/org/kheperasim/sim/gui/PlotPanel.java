@@ -12,7 +12,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
-import javax.imageio.ImageIO;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
 import javax.swing.JFileChooser;
@@ -234,13 +233,13 @@ final class PlotPanel extends JPanel {
         return img;
     }
 
-    /** @param file where to write @param asCsv CSV of the data, else PNG of the view */
+    /** @param file where to write (atomically, as every save) @param asCsv CSV of the data, else PNG of the view */
     void exportTo(Path file, boolean asCsv) {
         try {
             if (asCsv) {
                 AtomicFiles.write(file, csv());
-            } else if (!ImageIO.write(image(), "png", file.toFile())) {
-                throw new IOException("no PNG writer in this Java runtime");
+            } else {
+                AtomicFiles.writePng(file, image());
             }
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write " + file + ": " + e.getMessage(), e);

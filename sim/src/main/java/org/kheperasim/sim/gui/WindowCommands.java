@@ -59,6 +59,8 @@ final class WindowCommands {
                 + " recording: play, pause, scrub, step", KeyEvent.VK_R, ctrl | shift, recordings::openRecording);
         add("saveRecording", "Save run recording…", "save what replays this run exactly: start arena, edits, seed, trace",
                 0, 0, recordings::saveRecording);
+        add("exportPage", "Export run as web page…", "write the run shown (live or replayed) as one web page that replays"
+                + " it in any browser: no Java, server or network needed (docs/web-replay.md)", 0, 0, recordings::exportPage);
         add("closeReplay", "Close replay", "back to the arena and its runs", 0, 0, recordings::closeReplay);
         add("close", "Close window", "close the simulator", KeyEvent.VK_Q, ctrl, close);
         add("undo", "Undo", "undo the last edit", KeyEvent.VK_Z, ctrl, model::undo);
@@ -124,6 +126,7 @@ final class WindowCommands {
         actions.enable("stop", live);
         actions.enable("reset", s != null);
         actions.enable("saveRecording", s != null);
+        actions.enable("exportPage", s != null || replaying);
         actions.enable("closeReplay", replaying);
         actions.enable("undo", editing && model.canUndo());
         actions.enable("redo", editing && model.canRedo());

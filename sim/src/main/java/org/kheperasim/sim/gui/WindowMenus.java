@@ -71,7 +71,7 @@ final class WindowMenus {
         file.addSeparator();
         addAll(file, "save", "saveAs");
         file.addSeparator();
-        addAll(file, "openRecording", "saveRecording", "closeReplay");
+        addAll(file, "openRecording", "saveRecording", "exportPage", "closeReplay");
         file.addSeparator();
         addAll(file, "close");
         bar.add(file);

@@ -82,10 +82,25 @@ public final class RunPage {
      * @return what was written
      */
     public static Written write(Replay replay, RunOutcome outcome, Path out) {
+        return write(replay, outcome, replay.source(), out);
+    }
+
+    /**
+     * The page of a run read back from working files whose paths mean nothing to the page's reader
+     * (grade's replay of a run, the window's run so far): the page says {@code source} where it would
+     * name them, so the same run gives the same page wherever its files lay.
+     *
+     * @param replay  a run read back ({@link ReplayFiles#open})
+     * @param outcome what the run's result says, or {@link RunOutcome#none()}
+     * @param source  what the page was made from, in words, e.g. {@code the grader's replay of the run}
+     * @param out     the page to write
+     * @return what was written
+     */
+    public static Written write(Replay replay, RunOutcome outcome, String source, Path out) {
         RunTape tape = RunTape.of(replay);
         String title = outcome.title().isEmpty() ? title(replay) : outcome.title();
-        PageModel.About about = new PageModel.About(title, replay.source(), replay.notes(),
-                failures(tape, outcome, List.of()));
+        List<String> notes = replay.notes().stream().map(n -> n.replace(replay.source(), source)).toList();
+        PageModel.About about = new PageModel.About(title, source, notes, failures(tape, outcome, List.of()));
         return save(out, tape, about, outcome);
     }
 
@@ -98,13 +113,27 @@ public final class RunPage {
      * @return what was written
      */
     public static Written write(RunPageRecorder recorder, RunOutcome outcome, Path out) {
+        return write(recorder, outcome, "", out);
+    }
+
+    /**
+     * As {@link #write(RunPageRecorder, RunOutcome, Path)}, saying what the run was (grade: the
+     * grader's replay of a run's command log).
+     *
+     * @param recorder the recorder attached to the run
+     * @param outcome  what the run's result says, or {@link RunOutcome#none()}
+     * @param source   what the page was made from, in words, or empty
+     * @param out      the page to write
+     * @return what was written
+     */
+    public static Written write(RunPageRecorder recorder, RunOutcome outcome, String source, Path out) {
         RunTape tape = recorder.tape();
         synchronized (recorder) {
             if (tape.robots().isEmpty()) {
                 throw new IllegalStateException("the run recorded no sample: attach the recorder to the run before it starts");
             }
             String title = outcome.title().isEmpty() ? tape.arenas().get(0).arena().name() : outcome.title();
-            PageModel.About about = new PageModel.About(title, "", List.of(), failures(tape, outcome, recorder.errors()));
+            PageModel.About about = new PageModel.About(title, source, List.of(), failures(tape, outcome, recorder.errors()));
             return save(out, tape, about, outcome);
         }
     }

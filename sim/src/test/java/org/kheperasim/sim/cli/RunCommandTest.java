@@ -113,6 +113,10 @@ class RunCommandTest {
         assertTrue(out.contains("\"name\":\"Braitenberg#0\",") && out.contains("\"controllerStatus\":\"stopped\",\"failure\":null}"), out);
         assertTrue(out.contains("\"controllerStatus\":\"broke_rule\",\"failure\":\"controller Exiter#1 (org.kheperasim.testcontrollers.Exiter) called System.exit("), out);
         assertTrue(out.contains("\"controllerStatus\":\"failed\",\"failure\":\"java.lang.ArithmeticException"), out);
+        // Where it threw, in the student's code, and when: the grade report and a run's page name the line.
+        assertTrue(out.contains("/ by zero\",\"failureAt\":\"org.kheperasim.testcontrollers.Thrower.run(Thrower.java:24)\","
+                + "\"failureSeconds\":1.0"), out);
+        assertTrue(!out.contains("Exiter.run(Exiter.java"), "System.exit is not a throw: " + out);
     }
 
     @Test

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.FileSystems;
 import java.nio.file.Files;
@@ -12,6 +13,7 @@ import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.List;
 import java.util.stream.Stream;
+import javax.imageio.ImageIO;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.sim.arena.ArenaFormat;
@@ -122,6 +124,24 @@ class AtomicFilesTest {
         Files.createSymbolicLink(b, a.getFileName());
         assertThrows(IOException.class, () -> AtomicFiles.write(a, "x"));
         assertEquals(List.of(a, b), list(dir));
+    }
+
+    @Test
+    void aPictureIsSavedAtomicallyThroughItsLinkWithItsMode(@TempDir Path dir) throws IOException {
+        assumeTrue(posix(), "POSIX permissions");
+        Path real = Files.createDirectories(dir.resolve("pictures")).resolve("plot.png");
+        Files.writeString(real, "an older picture");
+        Files.setPosixFilePermissions(real, PosixFilePermissions.fromString("rw-rw-r--"));
+        Path link = Files.createSymbolicLink(dir.resolve("plot.png"), Path.of("pictures", "plot.png"));
+        BufferedImage img = new BufferedImage(30, 20, BufferedImage.TYPE_INT_RGB);
+        img.setRGB(3, 4, 0x123456);
+        AtomicFiles.writePng(link, img);
+        assertTrue(Files.isSymbolicLink(link), "the link stays a link");
+        BufferedImage back = ImageIO.read(real.toFile());
+        assertEquals(30, back.getWidth());
+        assertEquals(0x123456, back.getRGB(3, 4) & 0xffffff, "the picture is the one given");
+        assertEquals("rw-rw-r--", PosixFilePermissions.toString(Files.getPosixFilePermissions(real)));
+        assertEquals(List.of(real), list(real.getParent()), "no temporary file is left");
     }
 
     private static long findDeadPid() {

@@ -25,7 +25,8 @@ import org.kheperasim.sim.cli.Main;
  * {@code grade} end to end, each run in a child JVM: a class of test submissions (good ones in every
  * controller style, one that does not compile, one that throws, hangs, calls System.exit, allocates
  * without bound, and one handed in as a .class file) gets the right status each, and the CSV and
- * JSON read back to the same runs; two shards merged give the same report as one grading.
+ * JSON read back to the same runs, each replayed run has its page; two shards merged give the same
+ * report, pages and all, as one grading.
  */
 class GradeCommandTest {
     private static final Path SUBMISSIONS = Path.of("src", "test", "resources", "grade");
@@ -38,6 +39,7 @@ class GradeCommandTest {
     void everySubmissionGetsItsStatusAndTheReportReadsBack() throws IOException {
         Path subs = copySubmissions(List.of("alice", "bob", "carol", "dave", "erin", "frank", "grace", "heidi", "ivan"));
         addClassSubmission(subs.resolve("judy"));
+        Files.createDirectories(subs.resolve("zed")); // handed in nothing
         Path out = dir.resolve("report");
         String printed = grade("--submissions", subs.toString(), "--arenas", "maze", "--seeds", "1", "--seconds", "20",
                 "--jobs", "2", "--out", out.toString(), "--hang-timeout", "5", "--wall-limit", "90", "--heap-mb", "128");
@@ -48,12 +50,13 @@ class GradeCommandTest {
         Map<String, String> expected = new TreeMap<>(Map.of("alice", "ok", "bob", "ok", "carol", "ok", "dave", "ok",
                 "judy", "ok", "erin", "compile_failed", "frank", "threw", "grace", "hung", "heidi", "broke_rule",
                 "ivan", "exceeded_memory"));
+        expected.put("zed", "nothing_handed_in");
         assertEquals(expected, status, printed);
 
         ReportFiles.Report json = ReportFiles.read(out.resolve("results.json"));
         assertEquals(csv, json.runs(), "the CSV and the JSON hold the same runs");
         assertEquals(List.of("maze"), json.plan().arenas());
-        assertEquals(10, json.plan().students().size());
+        assertEquals(11, json.plan().students().size());
         for (RunRecord r : csv) {
             assertEquals(100, r.max(), r.toString());
             if (r.status() == RunStatus.OK) {
@@ -62,20 +65,41 @@ class GradeCommandTest {
             if (r.status() == RunStatus.COMPILE_FAILED) {
                 assertTrue(r.detail().startsWith("Broken.java:7:"), r.detail());
                 assertEquals("", r.picture());
+            } else if (r.status() == RunStatus.NOTHING_HANDED_IN) {
+                assertEquals("the folder is empty", r.detail());
+                assertEquals("", r.picture());
             } else {
                 assertTrue(Files.size(out.resolve(r.picture())) > 500, r.picture());
+                // Every run that was replayed is a page that replays it, linked from its thumbnail.
+                assertEquals("pages/" + r.student() + "__maze__s1.html", r.page());
+                assertTrue(Files.readString(out.resolve(r.page())).contains("\"title\":\"" + r.student() + ": "), r.page());
             }
         }
-        assertTrue(byStudent(csv, "frank").detail().contains("IllegalStateException: frank's controller gave up"));
+        // What frank's run threw, and where in his code: in every format the instructor sends back.
+        assertTrue(byStudent(csv, "frank").detail().startsWith("java.lang.IllegalStateException: frank's controller gave up"
+                + " at step 20 at Thrower.doWork(Thrower.java:12)"), byStudent(csv, "frank").detail());
+        for (String file : new String[] {"results.csv", "results.json", "report.txt", "index.html"}) {
+            assertTrue(Files.readString(out.resolve(file)).contains("at Thrower.doWork(Thrower.java:12)"), file);
+        }
+        assertTrue(!byStudent(csv, "grace").detail().contains("real time"), "no machine's seconds: " + byStudent(csv, "grace"));
         assertTrue(byStudent(csv, "heidi").detail().contains("called System.exit(3)"));
         assertTrue(byStudent(csv, "grace").detail().contains("stopped making API calls"));
         assertTrue(byStudent(csv, "ivan").detail().contains("allocated without bound"));
         assertTrue(byStudent(csv, "alice").points() > 4, "alice explores more than her start cell");
 
         String html = Files.readString(out.resolve("index.html"));
-        assertTrue(html.contains("<img src=\"img/alice__maze__s1.png\""), html);
+        assertTrue(html.contains("<a href=\"pages/alice__maze__s1.html\" title=\"watch the run\"><img src=\"img/alice__maze__s1.png\""),
+                html);
+        // frank's page shows his failure as the report tells it, when it happened.
+        String frank = Files.readString(out.resolve("pages/frank__maze__s1.html"));
+        assertTrue(frank.matches("(?s).*\"failures\":\\[\\{\"robot\":0,\"t\":20\\d\\d(\\.\\d+)?,\"status\":\"failed\",\"message\":"
+                + "\"java.lang.IllegalStateException: frank's controller gave up at step 20 at Thrower.doWork\\(Thrower.java:12\\)\"}].*"),
+                "frank's page names his line, at the time he threw");
+        String timings = Files.readString(out.resolve("timings.csv"));
+        assertTrue(timings.startsWith("run,status,wall_s,page_s\n"), timings);
         assertTrue(html.contains("failed to compile"), html);
-        assertTrue(printed.contains("10 runs: 5 ok, 1 failed to compile, 1 threw, 1 hung, 1 exceeded memory, 1 broke a rule;"
+        assertTrue(printed.contains("11 runs: 5 ok, 1 failed to compile, 1 nothing handed in, 1 threw, 1 hung, 1 exceeded memory,"
+                + " 1 broke a rule;"
                 + (org.kheperasim.sim.sandbox.BoxProbe.unavailable().isEmpty() ? " every run made in the sandbox"
                 : " made WITHOUT the sandbox")), printed);
     }
@@ -102,7 +126,7 @@ class GradeCommandTest {
 
         List<String> files = reportFiles(whole);
         assertEquals(files, reportFiles(merged));
-        assertTrue(files.contains("img/alice__lab__s2.png"), files.toString());
+        assertTrue(files.contains("img/alice__lab__s2.png") && files.contains("pages/alice__lab__s2.html"), files.toString());
         for (String f : files) {
             assertArrayEquals(Files.readAllBytes(whole.resolve(f)), Files.readAllBytes(merged.resolve(f)), f);
         }
