@@ -84,10 +84,13 @@ class ArchitectureTest {
     @Test
     void onlyTheLockstepStepsTheWorld() {
         noClasses().that().doNotHaveFullyQualifiedName("org.kheperasim.sim.host.Lockstep")
+                .and().doNotHaveFullyQualifiedName("org.kheperasim.sim.commandlog.OpenLoopReplay")
                 .and().resideOutsideOfPackage("..sim.engine..")
                 .should().callMethod("org.kheperasim.sim.engine.Engine", "advance")
                 .because("one class decides when the world moves and who runs next (a controller's clock asks it);"
-                        + " an engine without controllers (the protocol server's) runs by Engine.runUntil")
+                        + " an engine without controllers (the protocol server's) runs by Engine.runUntil, and a"
+                        + " graded run's replay (OpenLoopReplay) runs no controller either: it plays the command log"
+                        + " at the ticks the log names, each robot's turn as Engine.advance hands it out")
                 .check(sim);
     }
 
@@ -115,7 +118,10 @@ class ArchitectureTest {
             "org.kheperasim.sim.host.CpuAffinity", "a controller thread claims a core with a lock file, in which nothing is"
                     + " written",
             "org.kheperasim.sim.sandbox.Reexec", "a sandboxed run's trace goes to a file bind-mounted into the box, which"
-                    + " must exist (empty) under its own name before the box starts");
+                    + " must exist (empty) under its own name before the box starts",
+            "org.kheperasim.sim.cli.EvaluateCommand", "evaluate --out writes each job's outcome line as the job ends and"
+                    + " flushes it, so that a killed evaluation keeps every outcome it finished (a learning loop may read"
+                    + " the file as it grows)");
 
     /** A call that writes a file in place: Files.write*, copy, move, an output stream or channel on a file. */
     private static final DescribedPredicate<JavaCall<?>> WRITES_A_FILE = new DescribedPredicate<>(
