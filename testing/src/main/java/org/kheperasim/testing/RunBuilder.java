@@ -123,6 +123,29 @@ public final class RunBuilder {
     }
 
     /**
+     * Run the controller on the robot's own processor, as a program in its flash runs (and as swarms,
+     * Enki and Webots run controllers): it reads the robot's latest 20 ms sensor scan and its
+     * commands act at once, with no serial link between. The default for a {@code StepController};
+     * the same as {@code set("controller.mode", "onboard")}.
+     *
+     * @return this
+     */
+    public RunBuilder onBoard() {
+        return set("controller.mode", "onboard");
+    }
+
+    /**
+     * Run the controller on the host, through the serial link model, as robot-link runs it on the
+     * lab's robot: it sees the values of the poll cycle and its commands act after their wire time.
+     * The default for a thread-style controller; the same as {@code set("controller.mode", "tethered")}.
+     *
+     * @return this
+     */
+    public RunBuilder tethered() {
+        return set("controller.mode", "tethered");
+    }
+
+    /**
      * @param settingsFile a settings file ({@code key = value} lines, as the window saves them); settings
      *     given with {@link #set} before this are replaced, after it are added
      * @return this

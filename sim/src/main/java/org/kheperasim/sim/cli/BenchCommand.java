@@ -63,7 +63,13 @@ final class BenchCommand implements Callable<Integer> {
                     + " controller (default: the arena's own robots)")
     int robots;
 
+    @picocli.CommandLine.Mixin
+    SettingsOptions settingsOptions = new SettingsOptions();
+
     private Arena scenario;
+    private org.kheperasim.sim.engine.Settings settings;
+    /** Where the first run's controllers ran ({@code RunSession.modeLine}), printed with the figures. */
+    private volatile String modeLine;
 
     @Override
     public Integer call() {
@@ -71,6 +77,7 @@ final class BenchCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--robots " + robots + ": at most "
                     + org.kheperasim.sim.arena.ArenaLimits.MAX_ROBOTS + " robots");
         }
+        settings = settingsOptions.settings();
         scenario = withCaps(robots > 0 ? Swarm.arena(robots) : ArenaFormat.resolve(arena), addCaps);
         if (robots > 0) {
             arena = scenario.name();
@@ -90,6 +97,7 @@ final class BenchCommand implements Callable<Integer> {
         } while (System.nanoTime() - warmStart < warmUp * 1e9);
         System.out.printf(Locale.ROOT, "warm-up: %d run%s in %.1f s of wall time%n", warmRuns, warmRuns == 1 ? "" : "s",
                 (System.nanoTime() - warmStart) / 1e9);
+        System.out.println(modeLine + (settings.overrides().isEmpty() ? "" : "; settings " + settings.describe()));
         List<Double> factors = new ArrayList<>();
         for (int i = 0; i < runs; i++) {
             RunResult r = run(seed + i);
@@ -104,6 +112,7 @@ final class BenchCommand implements Callable<Integer> {
         System.out.println(load());
         Swarm.printSetUpAndMemory(() -> run(seed + runs, 0.001),
                 whileRunning -> Simulation.builder().arena(scenario).controller(controller).classpath(classpath).seconds(0.001)
+                        .settings(settings)
                         .seed(seed + runs)
                         .listener(s -> whileRunning.run(), 1).run());
         return 0;
@@ -126,6 +135,11 @@ final class BenchCommand implements Callable<Integer> {
 
     private RunResult run(long runSeed, double runSeconds) {
         return Simulation.builder().arena(scenario).controller(controller).classpath(classpath).seconds(runSeconds)
+                .settings(settings).onStart(session -> {
+                    if (modeLine == null) {
+                        modeLine = session.modeLine();
+                    }
+                })
                 .seed(runSeed).console(line -> {
                     if (collecting && line.kind() == ConsoleLine.Kind.ERROR && errors.size() < 5) {
                         errors.add(line.format());

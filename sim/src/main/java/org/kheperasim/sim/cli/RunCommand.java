@@ -155,6 +155,7 @@ final class RunCommand implements Callable<Integer> {
             page[0] = HtmlPage.attach(html, resolved, editLog, run);
         }
         info.println("seed " + run.seed());
+        run.onStart(session -> info.println(session.modeLine()));
         if (child != null) {
             long endNanos = (long) StrictMath.rint(run.seconds() * 1e9);
             run.record(child.log()).onStart(session -> child.started(session, endNanos, sampleMillis));

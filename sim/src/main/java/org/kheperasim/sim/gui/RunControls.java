@@ -247,7 +247,8 @@ final class RunControls implements SnapshotSource {
         console.note("Run of " + name + (own.isEmpty() ? "" : " (" + own + ")") + " in " + arena.name()
                 + ", seed " + runSeed + (choices.settings.overrides().isEmpty() ? "" : ", settings " + choices.settings.describe())
                 + (limit > 0 ? "; it ends at " + Score.number(limit) + " s (" + (arena.assignment().timeLimitSeconds() > 0
-                        ? "the arena's time limit" : "the arena sets tasks but no time limit") + "), as 'run' ends it" : ""));
+                        ? "the arena's time limit" : "the arena sets tasks but no time limit") + "), as 'run' ends it" : "")
+                + "; " + session.modeLine());
         // The score is run's: the start arena's assignment over the engine's own facts (floor covered,
         // regions entered to the millisecond, caps), taken on the engine's thread at the moment shown.
         LiveScore live = arena.assignment().hasTasks() ? new LiveScore(arena) : null;

@@ -328,6 +328,28 @@ public final class RunSession implements AutoCloseable {
         return arena;
     }
 
+    /** @return where the controllers run, as the trace header's {@code mode} names it ({@link #modes}) */
+    public String mode() {
+        return modes(robots.stream().map(SimRobot::controlMode).toList());
+    }
+
+    /**
+     * @return one line for people saying where the controllers run and what that means, e.g.
+     *     {@code mode tethered: the controller runs on the host ...}
+     */
+    public String modeLine() {
+        String mode = mode();
+        return switch (mode) {
+            case SimRobot.TETHERED -> "mode tethered: the controller runs on the host, as robot-link runs it; it sees the"
+                    + " values of the serial link's poll cycle (" + settings.raw("link.baud") + " baud) and its commands act"
+                    + " after their wire time";
+            case SimRobot.ON_BOARD_STEPS, SimRobot.ON_BOARD -> "mode " + mode + ": the controller runs on the robot's own"
+                    + " processor; it reads the latest 20 ms sensor scan and its commands act at once (no serial link)";
+            default -> "mode, robot by robot: " + mode + " (tethered: through the serial link; onboard: on the robot,"
+                    + " reading the latest 20 ms scan)";
+        };
+    }
+
     /** @return the controller's class name */
     public String controllerClass() {
         return controllerClass;

@@ -259,11 +259,12 @@ public final class Simulation {
         }
 
         /**
-         * @param started told the session once it is set up (its controllers made), before it runs
+         * @param started told the session once it is set up (its controllers made), before it runs, after
+         *     those given before
          * @return this
          */
         public Builder onStart(java.util.function.Consumer<RunSession> started) {
-            this.started = Objects.requireNonNull(started);
+            this.started = this.started.andThen(Objects.requireNonNull(started));
             return this;
         }
 
