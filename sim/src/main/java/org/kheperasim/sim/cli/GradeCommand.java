@@ -14,12 +14,13 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
-/** {@code grade}: every submission in every arena with every seed, each in a child JVM; a report. */
+/** {@code grade}: every submission in every arena with every seed, on warm worker JVMs (one per submission); a report. */
 @Command(name = "grade", mixinStandardHelpOptions = true, sortOptions = false,
         subcommands = GradeCommand.Merge.class,
         description = {"Grade a class: compile every submission (one sub-folder per student, .java or .class), run it in"
-                + " every arena with seeds 1..N, each run in a child JVM with a heap, simulated-time and wall-clock limit"
-                + " under the containment rules, in an operating-system sandbox (bubblewrap), scored by the grader's own"
+                + " every arena with seeds 1..N, each submission's runs one after another in a worker JVM of its own (each"
+                + " run with fresh class loaders and its own heap, simulated-time and wall-clock limit) under the containment"
+                + " rules, in an operating-system sandbox (bubblewrap), scored by the grader's own"
                 + " replay of the run's command log, and write a report (report.txt, results.csv, results.json, index.html"
                 + " with trajectory pictures) ranked per arena by the arenas' tasks. Started again on the same --out, it"
                 + " makes only the runs its journal lacks. See docs/grading.md.",
@@ -36,7 +37,8 @@ final class GradeCommand implements Callable<Integer> {
     @Option(names = "--seeds", paramLabel = "N", defaultValue = "5", converter = CliNumbers.PositiveInt.class, description = "run seeds 1..N (default: ${DEFAULT-VALUE})")
     int seeds;
 
-    @Option(names = "--jobs", paramLabel = "K", defaultValue = "1", converter = CliNumbers.PositiveInt.class, description = "runs at once, each a JVM (default: ${DEFAULT-VALUE})")
+    @Option(names = "--jobs", paramLabel = "K", defaultValue = "1", converter = CliNumbers.PositiveInt.class,
+            description = "runs at once, each in a worker JVM of its own (default: ${DEFAULT-VALUE}; about 1 per core)")
     int jobs;
 
     @Option(names = "--out", paramLabel = "DIR", defaultValue = "grade-report", description = "the report folder (default: ${DEFAULT-VALUE})")
@@ -68,6 +70,11 @@ final class GradeCommand implements Callable<Integer> {
             + " each run was made")
     boolean noSandbox;
 
+    @Option(names = "--worker-runs", paramLabel = "N", converter = CliNumbers.PositiveInt.class,
+            description = "the most runs one worker JVM makes, one after another, each with fresh class loaders (default: all"
+                    + " of a submission's runs); 1 makes every run in a JVM of its own, as before workers")
+    Integer workerRuns;
+
     @Override
     public Integer call() {
         // Not picocli-required: 'grade merge' must not need them.
@@ -80,7 +87,8 @@ final class GradeCommand implements Callable<Integer> {
         }
         GradePlan.Shard s = shard == null ? GradePlan.Shard.ALL : GradePlan.Shard.parse(shard);
         ReportFiles.Report report = Grader.grade(new Grader.Options(submissions, arenas, seeds, jobs, out, s, heapMb, wallLimit,
-                hangTimeout, seconds, keepTraces, System.err, System.console() != null, !noSandbox, false));
+                hangTimeout, seconds, keepTraces, System.err, System.console() != null, !noSandbox, false,
+                workerRuns == null ? Integer.MAX_VALUE : workerRuns));
         print(report, out);
         return ExitCodes.OK;
     }

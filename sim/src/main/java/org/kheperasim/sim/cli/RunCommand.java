@@ -166,7 +166,7 @@ final class RunCommand implements Callable<Integer> {
                 Score score = score(result, resolved);
                 String claim = toJson(result, score, failures);
                 int exit = report(result, score, failures);
-                child.finish(claim, exit);
+                child.finish(claim, exit, result);
                 return exit;
             });
         }

@@ -45,10 +45,52 @@ public final class LogChannel {
      * @throws IOException if the grader is not listening
      */
     public static Writer connect(Path socket) throws IOException {
+        return open(socket).writer();
+    }
+
+    /**
+     * The run's end, for a run that may have to give up its log half-way: connect, and keep the
+     * socket to close it without what the writer still holds ({@link Connection#abort}).
+     *
+     * @param socket the grader's socket
+     * @return the connection
+     * @throws IOException if the grader is not listening
+     */
+    public static Connection open(Path socket) throws IOException {
         SocketChannel ch = SocketChannel.open(StandardProtocolFamily.UNIX);
         ch.connect(UnixDomainSocketAddress.of(socket));
         OutputStream out = new GZIPOutputStream(new BufferedOutputStream(Channels.newOutputStream(ch), 1 << 16), 1 << 13);
-        return new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 14);
+        return new Connection(ch, new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 14));
+    }
+
+    /**
+     * A run's end of the channel. A run in a JVM of its own that ends without finishing its log
+     * (refused at load, out of heap) leaves on the socket only what its buffers had sent: the JVM's
+     * end closes it. A run in a warm worker JVM ends the same way by {@link #abort}, so the grader
+     * receives the same bytes either way.
+     */
+    public static final class Connection {
+        private final SocketChannel channel;
+        private final Writer writer;
+
+        private Connection(SocketChannel channel, Writer writer) {
+            this.channel = channel;
+            this.writer = writer;
+        }
+
+        /** @return the writer of the log (close it to end the log whole) */
+        public Writer writer() {
+            return writer;
+        }
+
+        /** Close the socket at once, dropping what the writer and the compressor still hold, as a JVM's end would. */
+        public void abort() {
+            try {
+                channel.close();
+            } catch (IOException e) {
+                // closed already
+            }
+        }
     }
 
     /**

@@ -25,6 +25,9 @@ import org.kheperasim.sim.web.RunPageRecorder;
  * tells the child its grader is gone. {@link Verdict} judges what came back.
  */
 final class ChildRun {
+    /** The simulator's main class. */
+    static final String MAIN = "org.kheperasim.sim.cli.Main";
+
     /**
      * What every run of a grading shares.
      *
@@ -76,27 +79,9 @@ final class ChildRun {
         Files.deleteIfExists(trace);
         Files.deleteIfExists(logFile);
         Path socket = sockets.resolve(job.index() + ".sock");
-        List<Path> classpath = new ArrayList<>();
-        for (String e : System.getProperty("java.class.path").split(File.pathSeparator)) {
-            if (!e.isEmpty() && Files.exists(Path.of(e))) {
-                classpath.add(Path.of(e).toAbsolutePath());
-            }
-        }
-        Path arenaFile = Files.isRegularFile(Path.of(job.arena())) ? Path.of(job.arena()).toAbsolutePath() : null;
-        // Native access for JNA (the controller threads' core, see host.CpuAffinity): Java 22+ warns without it.
-        List<String> java = new ArrayList<>(List.of("--enable-native-access=ALL-UNNAMED", "-Xmx" + lim.heapMb() + "m",
-                "-XX:+UseSerialGC", "-XX:ActiveProcessorCount=" + lim.processors(), "-Djava.awt.headless=true",
-                "-cp", System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main", "run",
-                "--arena", arenaFile != null ? arenaFile.toString() : job.arena(), "--classpath", sub.classpath().toString(),
-                "--controller", sub.controller(), "--seed", Long.toString(job.seed()), "--json", "--quiet",
-                "--hang-timeout", format(lim.hangSeconds()), "--sample-ms", Long.toString(lim.sampleMillis()),
-                "--command-log", (lim.sandbox() ? Box.CHANNEL : socket).toString(), "--wall-limit", format(lim.wallSeconds())));
-        if (lim.seconds() != null) {
-            java.addAll(List.of("--seconds", format(lim.seconds())));
-        }
-        if (lim.trusted()) {
-            java.add("--trusted");
-        }
+        List<String> java = new ArrayList<>(jvmOptions(lim));
+        java.addAll(List.of(MAIN, "run"));
+        java.addAll(runArgs(job, sub, lim, lim.sandbox() ? Box.CHANNEL : socket));
         long start = System.nanoTime();
         boolean killed = false;
         int exit;
@@ -105,17 +90,10 @@ final class ChildRun {
         try (LogChannel.Receiver receiver = new LogChannel.Receiver(socket, logFile, Verdict.MAX_LOG_BYTES)) {
             List<String> cmd;
             if (lim.sandbox()) {
-                List<Path> read = new ArrayList<>(classpath);
-                read.add(sub.classpath().toAbsolutePath());
-                if (arenaFile != null) {
-                    read.add(arenaFile);
-                }
-                cmd = Box.command(new Box.Spec(read, List.of(), socket, false,
+                cmd = Box.command(new Box.Spec(boxed(sub, List.of(job.arena())), List.of(), socket, false,
                         BoxLimits.forRun(lim.heapMb(), arena.robots().size(), lim.wallSeconds()), slot), java);
             } else {
-                cmd = new ArrayList<>();
-                cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
-                cmd.addAll(java);
+                cmd = unboxed(java);
             }
             // Standard input stays a pipe the grader never writes to: the child ends when it ends (the grader is gone).
             Process p = new ProcessBuilder(cmd).start();
@@ -151,6 +129,75 @@ final class ChildRun {
                 judged.tape());
     }
 
+    /**
+     * @param lim the limits
+     * @return the options of a graded JVM (a run's own, or a warm worker's): heap, collector, cores, the
+     *     simulator's classpath; its main class, {@link #MAIN}, comes next
+     */
+    static List<String> jvmOptions(Limits lim) {
+        // Native access for JNA (the controller threads' core, see host.CpuAffinity): Java 22+ warns without it.
+        return List.of("--enable-native-access=ALL-UNNAMED", "-Xmx" + lim.heapMb() + "m", "-XX:+UseSerialGC",
+                "-XX:ActiveProcessorCount=" + lim.processors(), "-Djava.awt.headless=true", "-cp",
+                System.getProperty("java.class.path"));
+    }
+
+    /**
+     * @param job     the run
+     * @param sub     the submission
+     * @param lim     the limits
+     * @param channel the run's command-log socket as the run sees it
+     * @return {@code run}'s arguments for a graded run
+     */
+    static List<String> runArgs(GradePlan.Job job, Submission sub, Limits lim, Path channel) {
+        Path arenaFile = arenaFile(job.arena());
+        List<String> args = new ArrayList<>(List.of("--arena", arenaFile != null ? arenaFile.toString() : job.arena(),
+                "--classpath", sub.classpath().toString(), "--controller", sub.controller(), "--seed", Long.toString(job.seed()),
+                "--json", "--quiet", "--hang-timeout", format(lim.hangSeconds()), "--sample-ms", Long.toString(lim.sampleMillis()),
+                "--command-log", channel.toString(), "--wall-limit", format(lim.wallSeconds())));
+        if (lim.seconds() != null) {
+            args.addAll(List.of("--seconds", format(lim.seconds())));
+        }
+        if (lim.trusted()) {
+            args.add("--trusted");
+        }
+        return args;
+    }
+
+    /** @return the arena as a file (absolute), or null for a bundled arena */
+    private static Path arenaFile(String arena) {
+        return Files.isRegularFile(Path.of(arena)) ? Path.of(arena).toAbsolutePath() : null;
+    }
+
+    /**
+     * @param sub    the submission
+     * @param arenas the arenas its runs use
+     * @return what a box of its runs shows, read-only: the simulator, the submission's classes, the arena files
+     */
+    static List<Path> boxed(Submission sub, List<String> arenas) {
+        List<Path> read = new ArrayList<>();
+        for (String e : System.getProperty("java.class.path").split(File.pathSeparator)) {
+            if (!e.isEmpty() && Files.exists(Path.of(e))) {
+                read.add(Path.of(e).toAbsolutePath());
+            }
+        }
+        read.add(sub.classpath().toAbsolutePath());
+        for (String a : arenas) {
+            Path f = arenaFile(a);
+            if (f != null && !read.contains(f)) {
+                read.add(f);
+            }
+        }
+        return read;
+    }
+
+    /** @return the command that starts this JVM outside a box */
+    static List<String> unboxed(List<String> java) {
+        List<String> cmd = new ArrayList<>();
+        cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        cmd.addAll(java);
+        return cmd;
+    }
+
     /** Kill a child and everything it started (bubblewrap's own child dies with it too). */
     static void kill(Process p) {
         p.descendants().forEach(ProcessHandle::destroyForcibly);
@@ -162,7 +209,7 @@ final class ChildRun {
         }
     }
 
-    private static String format(double d) {
+    static String format(double d) {
         return String.format(Locale.ROOT, "%s", d == StrictMath.rint(d) ? Long.toString((long) d) : Double.toString(d));
     }
 
@@ -170,7 +217,7 @@ final class ChildRun {
      * The submission's class folder lies under --out: its files are named from there on, so that the
      * report does not depend on where it was written (shards merge byte for byte into it).
      */
-    private static String strip(String text, Submission sub) {
+    static String strip(String text, Submission sub) {
         String classes = sub.classpath().toAbsolutePath().normalize() + File.separator;
         String absolute = sub.classpath().toAbsolutePath() + File.separator;
         String given = sub.classpath() + File.separator;

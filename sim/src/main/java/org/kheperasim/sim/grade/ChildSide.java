@@ -9,6 +9,10 @@ import java.util.Locale;
 import org.kheperasim.sim.commandlog.CommandLogWriter;
 import org.kheperasim.sim.commandlog.LogChannel;
 import org.kheperasim.sim.commandlog.LogHeader;
+import org.kheperasim.sim.grade.worker.WorkerLoop;
+import org.kheperasim.sim.grade.worker.WorkerRun;
+import org.kheperasim.sim.host.ControllerStatus;
+import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.RunSession;
 
 /**
@@ -18,22 +22,27 @@ import org.kheperasim.sim.run.RunSession;
  * controller left running (a thread pool that spins would otherwise keep the JVM alive until the
  * grader's wall limit). It also ends the JVM when the grader goes away (its standard input, a pipe
  * from the grader, reaches its end: even after {@code kill -9} of the grader) and at its own
- * wall-clock limit.
+ * wall-clock limit. In a warm worker JVM ({@link WorkerRun}) the same run hands over the same log and
+ * result, and says where it would have ended its JVM.
  */
 public final class ChildSide {
     /** The exit status of a run that ended itself at its wall-clock limit (as timeout(1)). */
-    public static final int WALL_LIMIT_EXIT = 124;
+    public static final int WALL_LIMIT_EXIT = WorkerLoop.WALL_LIMIT_EXIT;
     /** The exit status of a run whose grader went away. */
-    public static final int ORPHANED_EXIT = 125;
+    public static final int ORPHANED_EXIT = WorkerLoop.ORPHANED_EXIT;
 
     private final CommandLogWriter log;
+    /** The run as a warm worker makes it, or null in a JVM of its own. */
+    private final WorkerRun worker;
 
-    private ChildSide(CommandLogWriter log) {
+    private ChildSide(CommandLogWriter log, WorkerRun worker) {
         this.log = log;
+        this.worker = worker;
     }
 
     /**
-     * Connect to the grader and start watching it and the wall clock.
+     * Connect to the grader and start watching it and the wall clock. In a warm worker JVM
+     * ({@link WorkerRun#current}) the worker watches the grader and the wall clock for all its runs.
      *
      * @param socket      the grader's channel
      * @param wallSeconds the run's wall-clock limit, s (0: none)
@@ -41,8 +50,12 @@ public final class ChildSide {
      * @throws IOException if the grader is not listening
      */
     public static ChildSide start(Path socket, double wallSeconds) throws IOException {
+        WorkerRun run = WorkerRun.current();
+        if (run != null) {
+            return new ChildSide(new CommandLogWriter(run.connect(socket, wallSeconds)), run);
+        }
         Writer w = LogChannel.connect(socket);
-        ChildSide side = new ChildSide(new CommandLogWriter(w));
+        ChildSide side = new ChildSide(new CommandLogWriter(w), null);
         daemon("khepera-grade-lifeline", () -> {
             // The grader never writes to our standard input: its end means the grader is gone.
             try {
@@ -90,12 +103,15 @@ public final class ChildSide {
     }
 
     /**
-     * Hand over the run's own result, then end the JVM with this status once the output is out.
+     * Hand over the run's own result, then end the JVM with this status once the output is out; in
+     * a warm worker, say the run is done with this status instead (the worker then makes its next run,
+     * or is replaced when a controller of this one was stopped against its will).
      *
      * @param claimJson the run's result, one line of JSON
      * @param exit      the exit status
+     * @param result    the run's result
      */
-    public void finish(String claimJson, int exit) {
+    public void finish(String claimJson, int exit, RunResult result) {
         int status = exit;
         try {
             log.finish(claimJson);
@@ -105,7 +121,23 @@ public final class ChildSide {
         }
         System.out.flush();
         System.err.flush();
+        if (worker != null) {
+            worker.done(status, stoppedAgainstItsWill(result));
+            return;
+        }
         Runtime.getRuntime().halt(status);
+    }
+
+    /** @return what makes a warm worker unfit for another run after this one, or null */
+    private static String stoppedAgainstItsWill(RunResult result) {
+        for (RunResult.RobotResult r : result.robots()) {
+            if (r.status() == ControllerStatus.HUNG || r.status() == ControllerStatus.BROKE_RULE
+                    || r.status() == ControllerStatus.EXCEEDED_MEMORY) {
+                return "a controller " + r.status().name().toLowerCase(java.util.Locale.ROOT).replace('_', ' ')
+                        + " and was stopped";
+            }
+        }
+        return null;
     }
 
     private static void daemon(String name, Runnable r) {

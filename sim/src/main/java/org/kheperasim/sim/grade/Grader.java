@@ -67,10 +67,19 @@ public final class Grader {
      * @param trustedForTests true to run the submissions trusted, uncontained in their JVM: only for tests of
      *                     the sandbox and of the score's checks, which need a controller that escapes; no
      *                     command-line option sets it
+     * @param workerRuns   the most runs one worker JVM makes ({@link WorkerSlots}); 1 makes every run in a JVM of its
+     *                     own, as before workers ({@link ChildRun}); {@link Integer#MAX_VALUE}: all of a submission's
      */
     public record Options(Path submissions, List<String> arenas, int seeds, int jobs, Path out, GradePlan.Shard shard,
             int heapMb, double wallSeconds, double hangSeconds, Double seconds, boolean keepTraces, PrintStream progress,
-            boolean terminal, boolean sandbox, boolean trustedForTests) {
+            boolean terminal, boolean sandbox, boolean trustedForTests, int workerRuns) {
+        /** Runs on warm workers, each making all of its submission's runs. */
+        public Options(Path submissions, List<String> arenas, int seeds, int jobs, Path out, GradePlan.Shard shard,
+                int heapMb, double wallSeconds, double hangSeconds, Double seconds, boolean keepTraces, PrintStream progress,
+                boolean terminal, boolean sandbox, boolean trustedForTests) {
+            this(submissions, arenas, seeds, jobs, out, shard, heapMb, wallSeconds, hangSeconds, seconds, keepTraces, progress,
+                    terminal, sandbox, trustedForTests, Integer.MAX_VALUE);
+        }
     }
 
     private Grader() {
@@ -84,6 +93,10 @@ public final class Grader {
     public static ReportFiles.Report grade(Options o) {
         if (o.jobs() < 1) {
             throw new IllegalArgumentException("--jobs " + o.jobs() + ": give at least 1");
+        }
+        if (o.workerRuns() < 1) {
+            throw new IllegalArgumentException("--worker-runs " + o.workerRuns() + ": give at least 1 (1: every run in a JVM"
+                    + " of its own)");
         }
         List<Path> folders = Submissions.folders(o.submissions());
         GradePlan plan = new GradePlan(folders.stream().map(p -> p.getFileName().toString()).toList(), o.arenas(), o.seeds());
@@ -151,23 +164,56 @@ public final class Grader {
         // A signal to the grader (SIGTERM, Ctrl-C): no run outlives it. What finished is in the journal.
         Thread killRuns = new Thread(() -> running.forEach(ChildRun::kill), "grade-stop-runs");
         Runtime.getRuntime().addShutdownHook(killRuns);
+        Progress progress = new Progress(o.progress(), total, o.terminal());
+        progress.skip(alreadyDone);
+        WorkerSlots.Finisher finisher = (job, outcome) -> {
+            Made made = one(job, subs.get(job.student()), arenas.get(job.arena()), o, outcome);
+            journal.add(job, new Journal.Entry(made.outcome().record(), made.outcome().wallSeconds(), made.pageSeconds()));
+            progress.finished(job, made.outcome().record());
+        };
+        try {
+            if (o.workerRuns() == 1) {
+                eachInItsOwnJvm(o, todo, subs, arenas, limits, work, sockets, running, finisher);
+            } else {
+                // Submissions that cannot run need no JVM.
+                for (GradePlan.Job job : todo) {
+                    if (!subs.get(job.student()).runnable()) {
+                        finisher.finish(job, null);
+                    }
+                }
+                WorkerSlots.makeAll(todo.stream().filter(j -> subs.get(j.student()).runnable()).toList(), subs, arenas, limits,
+                        o.jobs(), o.workerRuns(), work.resolve("runs"), sockets, running, finisher);
+            }
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException("a run could not be made: " + e.getMessage(), e);
+        } finally {
+            running.forEach(ChildRun::kill);
+            try {
+                Runtime.getRuntime().removeShutdownHook(killRuns);
+            } catch (IllegalStateException shuttingDown) {
+                // the hook is killing the runs
+            }
+            deleteTree(sockets);
+        }
+    }
+
+    /** Each run in a child JVM of its own ({@code --worker-runs 1}): {@code jobs} at a time. */
+    private static void eachInItsOwnJvm(Options o, List<GradePlan.Job> todo, Map<String, Submission> subs,
+            Map<String, Arena> arenas, ChildRun.Limits limits, Path work, Path sockets, Set<Process> running,
+            WorkerSlots.Finisher finisher) {
         BlockingQueue<Integer> slots = new ArrayBlockingQueue<>(o.jobs());
         for (int i = 0; i < o.jobs(); i++) {
             slots.add(i);
         }
-        Progress progress = new Progress(o.progress(), total, o.terminal());
-        progress.skip(alreadyDone);
         ExecutorService pool = Executors.newFixedThreadPool(o.jobs());
         List<Future<?>> futures = new ArrayList<>();
         for (GradePlan.Job job : todo) {
             futures.add(pool.submit(() -> {
                 int slot = slots.take();
                 try {
-                    Made made = one(job, subs.get(job.student()), limits, arenas.get(job.arena()), o, work, sockets, slot,
-                            running);
-                    journal.add(job, new Journal.Entry(made.outcome().record(), made.outcome().wallSeconds(),
-                            made.pageSeconds()));
-                    progress.finished(job, made.outcome().record());
+                    Submission sub = subs.get(job.student());
+                    finisher.finish(job, sub.runnable() ? ChildRun.run(job, sub, arenas.get(job.arena()), limits,
+                            work.resolve("runs"), sockets, slot, running) : null);
                 } finally {
                     slots.add(slot);
                 }
@@ -185,13 +231,6 @@ public final class Grader {
             throw new IllegalStateException("a run could not be made: " + e.getCause(), e.getCause());
         } finally {
             pool.shutdownNow();
-            running.forEach(ChildRun::kill);
-            try {
-                Runtime.getRuntime().removeShutdownHook(killRuns);
-            } catch (IllegalStateException shuttingDown) {
-                // the hook is killing the runs
-            }
-            deleteTree(sockets);
         }
     }
 
@@ -199,15 +238,18 @@ public final class Grader {
     private record Made(ChildRun.Outcome outcome, double pageSeconds) {
     }
 
-    private static Made one(GradePlan.Job job, Submission sub, ChildRun.Limits limits, Arena arena, Options o,
-            Path work, Path sockets, int slot, Set<Process> running) throws IOException {
+    /**
+     * A run's record, picture and page, from what came back of it (null for a submission that cannot run),
+     * however it was made.
+     */
+    private static Made one(GradePlan.Job job, Submission sub, Arena arena, Options o, ChildRun.Outcome outcome)
+            throws IOException {
         if (!sub.runnable()) {
             RunRecord r = new RunRecord(job.student(), job.arena(), job.seed(),
                     sub.empty() ? RunStatus.NOTHING_HANDED_IN : RunStatus.COMPILE_FAILED, 0,
                     arena.assignment().maxPoints(), 0, 0, sub.controller(), sub.problem(), "", "");
             return new Made(new ChildRun.Outcome(r, 0, null, null, null, null), 0);
         }
-        ChildRun.Outcome outcome = ChildRun.run(job, sub, arena, limits, work.resolve("runs"), sockets, slot, running);
         RunRecord r = outcome.record();
         if (r.max() == 0 && arena.assignment().hasTasks()) {
             r = new RunRecord(r.student(), r.arena(), r.seed(), r.status(), 0, arena.assignment().maxPoints(), 0,

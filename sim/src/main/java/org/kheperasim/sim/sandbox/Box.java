@@ -26,6 +26,8 @@ import java.util.List;
 public final class Box {
     /** Where the box's command-log channel appears inside it. */
     public static final Path CHANNEL = Path.of("/run/khepera/log.sock");
+    /** Where a warm worker's box shows its folder of command-log channels, one socket per run. */
+    public static final Path CHANNELS = Path.of("/run/khepera/runs");
     /** The first uid the boxes of a root grader run as (then one block of 256 per grading process). */
     private static final long UID_BASE = 2_000_000L;
 
@@ -35,15 +37,24 @@ public final class Box {
      * @param readOnly host files and folders shown read-only at their own paths
      * @param writable host files shown writable at their own paths (a trace the run writes)
      * @param channel  a Unix socket shown at {@link #CHANNEL}, or null
+     * @param channels a folder of Unix sockets shown read-only at {@link #CHANNELS} (a warm worker's: the
+     *                 grader makes a socket there for each run; the box can connect to them, make nothing there
+     *                 and see nothing else of the grader's), or null
      * @param network  true to keep the host's network (only {@code serve}, whose clients must reach it)
      * @param limits   the resource limits
      * @param slot     which of the grader's concurrent runs this is, from 0 (picks the uid as root)
      */
-    public record Spec(List<Path> readOnly, List<Path> writable, Path channel, boolean network, BoxLimits limits, int slot) {
+    public record Spec(List<Path> readOnly, List<Path> writable, Path channel, Path channels, boolean network,
+            BoxLimits limits, int slot) {
         /** Copies the lists. */
         public Spec {
             readOnly = List.copyOf(readOnly);
             writable = List.copyOf(writable);
+        }
+
+        /** A box without a folder of channels. */
+        public Spec(List<Path> readOnly, List<Path> writable, Path channel, boolean network, BoxLimits limits, int slot) {
+            this(readOnly, writable, channel, null, network, limits, slot);
         }
     }
 
@@ -83,6 +94,10 @@ public final class Box {
         }
         if (spec.channel() != null) {
             plan.bind(spec.channel(), CHANNEL, true);
+        }
+        if (spec.channels() != null) {
+            // Read-only: connecting to a socket needs no write access to its file system, making a file there would.
+            plan.bind(spec.channels(), CHANNELS, false);
         }
         cmd.addAll(plan.args());
         cmd.add("--");

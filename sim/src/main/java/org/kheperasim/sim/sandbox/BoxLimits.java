@@ -20,6 +20,8 @@ import java.util.List;
 public record BoxLimits(int processes, int openFiles, long cpuSeconds, long memoryBytes, long fileBytes, long scratchBytes) {
     /** A JVM's own threads and the tools that start it, with room for a few controller threads each robot. */
     static final int BASE_PROCESSES = 48;
+    /** The threads a warm worker JVM has besides a run's own JVM's. */
+    static final int WORKER_THREADS = 2;
     private static final long MIB = 1L << 20;
 
     /**
@@ -34,6 +36,26 @@ public record BoxLimits(int processes, int openFiles, long cpuSeconds, long memo
     public static BoxLimits forRun(int heapMb, int robots, double wallSeconds) {
         return new BoxLimits(BASE_PROCESSES + 4 * StrictMath.max(1, robots), 256, (long) StrictMath.ceil(2 * wallSeconds) + 30,
                 (heapMb + 768L) * MIB, 64 * MIB, 64 * MIB);
+    }
+
+    /**
+     * The limits of a warm worker's box, which makes several graded runs one after another: those of
+     * one run ({@link #forRun}), with room for the worker's own two threads, but for the CPU time, which
+     * RLIMIT_CPU counts for the whole process, so it is the runs' together (each run's own wall-clock
+     * limit still ends it).
+     *
+     * @param heapMb      each run's heap, MiB (the worker holds one run at a time)
+     * @param robots      the most robots of the arenas it runs in
+     * @param wallSeconds each run's wall-clock limit, s
+     * @param runs        the most runs it makes
+     * @return the limits
+     */
+    public static BoxLimits forWorker(int heapMb, int robots, double wallSeconds, int runs) {
+        BoxLimits one = forRun(heapMb, robots, wallSeconds);
+        long cpu = (long) StrictMath.min(Long.MAX_VALUE / 4, StrictMath.ceil(2 * wallSeconds) * (double) StrictMath.max(1, runs) + 30);
+        // The worker's own two threads (its requests, its wall-clock watch): a run has as many threads to spare as in its own JVM.
+        return new BoxLimits(one.processes() + WORKER_THREADS, one.openFiles(), cpu, one.memoryBytes(), one.fileBytes(),
+                one.scratchBytes());
     }
 
     /**

@@ -68,6 +68,15 @@ public final class SharedControllers {
     }
 
     /**
+     * Forget every shared definition: the next load of each controller defines its classes anew, as
+     * in a fresh JVM. A graded run in a warm worker JVM starts so (grade.worker.WorkerLoop): each run
+     * gets its own class loaders, as the run in a JVM of its own did.
+     */
+    public static void forget() {
+        SHARED.clear();
+    }
+
+    /**
      * @param type a controller class
      * @return why it is not stateless (what {@link #offer} found), or null when it is; for messages and tests
      */
