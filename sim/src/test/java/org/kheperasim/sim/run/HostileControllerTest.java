@@ -214,10 +214,11 @@ class HostileControllerTest {
 
     /**
      * Daemon threads that live as long as the JVM once started, whichever test starts them first: the
-     * simulator's watchdog of constructions and steps, JNA's cleaner, the JDK's process reaper.
+     * simulator's watchdog of constructions and steps, JNA's cleaner, the JDK's process reaper, and
+     * (virtual controller threads, Java 21+) the JDK's unblocker of timed virtual-thread waits.
      */
     private static final java.util.Set<String> SERVICE_THREADS = java.util.Set.of("khepera-step-watchdog", "JNA Cleaner",
-            "process reaper");
+            "process reaper", "VirtualThread-unblocker");
 
     /** Every thread started since {@code before} has ended, but the JVM's service threads (generous: threads take a moment to end). */
     private static void assertThreadsBackTo(java.util.Set<Thread> before, String when) throws InterruptedException {
