@@ -51,8 +51,9 @@ class SameAsRunCommandTest {
     private static String runCommand(Run api, Path dir) throws IOException, InterruptedException {
         String line = api.commandLine();
         assertTrue(line.startsWith("java -jar khepera-sim.jar run "), line);
+        // The quick compiler only: the JVM lives a second or two, and C2 would spend most of its processor time.
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("surefire.test.class.path", System.getProperty("java.class.path")),
+                "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("surefire.test.class.path", System.getProperty("java.class.path")),
                 "org.kheperasim.sim.cli.Main"));
         for (String word : line.substring("java -jar khepera-sim.jar ".length()).split(" ")) {
             cmd.add(word.startsWith("'") ? word.substring(1, word.length() - 1) : word);

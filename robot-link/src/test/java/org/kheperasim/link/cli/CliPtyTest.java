@@ -12,6 +12,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -19,7 +20,13 @@ import org.kheperasim.link.fake.FakeRobotOnPty;
 import org.kheperasim.link.robot.RobotRun;
 import org.kheperasim.link.session.Session;
 
-/** The commands a lab user types, against the fake robot on a pty pair. */
+/**
+ * The commands a lab user types, against the fake robot on a pty pair.
+ *
+ * <p>Tagged {@code timing}: real time over a serial line (a pty pair); {@code .ci/run} runs it again
+ * with both cores busy.
+ */
+@Tag("timing")
 @Timeout(value = 90, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class CliPtyTest {
     @TempDir
@@ -113,8 +120,9 @@ class CliPtyTest {
     void theShutdownHookStopsTheRobotWhenTheProgramIsKilled() throws Exception {
         try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null)) {
             String cp = System.getProperty("surefire.test.class.path", System.getProperty("java.class.path"));
+            // The quick compiler only: the JVM lives a second or two, and C2 would spend most of its processor time.
             List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                    "-cp", cp, Main.class.getName(), "run", "--port", fake.hostPath(), "--controller",
+                    "-XX:TieredStopAtLevel=1", "-cp", cp, Main.class.getName(), "run", "--port", fake.hostPath(), "--controller",
                     "org.kheperasim.link.testcontrollers.Forward"));
             Process p = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(dir.resolve("out.txt").toFile())
                     .start();

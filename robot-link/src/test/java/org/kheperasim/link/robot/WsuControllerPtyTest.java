@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
 import javax.tools.ToolProvider;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -26,7 +27,11 @@ import org.kheperasim.link.timing.LinkTiming;
  * Controllers written for the WSU Khepera Simulator (default package, {@code extends RobotController})
  * compiled from source, found by robot-link's own controller loading, and run on the fake robot over a
  * socat pty pair. Every run ends with {@code D,0,0} the last line the robot received.
+ *
+ * <p>Tagged {@code timing}: real time over a serial line (a pty pair); {@code .ci/run} runs it again
+ * with both cores busy.
  */
+@Tag("timing")
 @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class WsuControllerPtyTest {
     @TempDir
@@ -110,17 +115,12 @@ class WsuControllerPtyTest {
     }
 
     private RobotRun.Result run(FakeRobotOnPty fake, Class<?> controller, RobotSettings settings, long millis,
-            Consumer<FakeKhepera> during) throws Exception {
+            RobotScript script) throws Exception {
         SerialLink link = SerialLink.open(SerialSettings.khepera(fake.hostPath(), 38400));
         try (Session s = new Session(link, LinkTiming.atBaud(38400), new Session.Options(150, 3, 100, 2000))) {
             s.open();
             RobotRun run = new RobotRun(new RobotBackend(s, settings, out), controller, out);
-            Thread faults = new Thread(() -> during.accept(fake.robot()));
-            faults.setDaemon(true);
-            faults.start();
-            RobotRun.Result r = run.run(millis);
-            faults.join(5000);
-            return r;
+            return RobotScript.play(script, fake.robot(), run, millis);
         }
     }
 
@@ -130,14 +130,6 @@ class WsuControllerPtyTest {
                 + got.subList(Math.max(0, got.size() - 12), got.size()));
     }
 
-    private static void pause(long millis) {
-        try {
-            Thread.sleep(millis);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-    }
-
     @Test
     void aReactiveWsuAvoiderDrivesTheRobotUnchanged() throws Exception {
         Path classes = compile(Map.of("Avoider", AVOIDER));
@@ -145,13 +137,15 @@ class WsuControllerPtyTest {
         assertEquals("Avoider", avoider.getName());
         try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null)) {
             FakeKhepera robot = fake.robot();
-            RobotRun.Result r = run(fake, avoider, RobotSettings.defaults(), 2500, rb -> {
-                pause(600);                                   // open floor: ahead at (5, 5)
+            RobotRun.Result r = run(fake, avoider, RobotSettings.defaults(), 30_000, (rb, run) -> {
+                RobotScript.awaitReceived(rb, "D,5,5", 0);    // open floor: ahead at (5, 5)
                 rb.setProximity(0, 0, 800, 800, 0, 0, 0, 0);
-                pause(600);                                   // wall ahead: turn on the spot (3, -3)
+                RobotScript.awaitReceived(rb, "D,3,-3", 0);   // wall ahead: turn on the spot (3, -3)
                 rb.setProximity(0, 0, 0, 0, 0, 0, 0, 0);      // clear again: ahead
+                RobotScript.awaitReceived(rb, "D,5,5", 1);
+                run.requestStop("the moves were seen");
             });
-            assertEquals(RobotRun.End.TIME_UP, r.end(), r.detail());
+            assertEquals(RobotRun.End.STOPPED, r.end(), r.detail());
             List<String> d = robot.received().stream().filter(l -> l.startsWith("D")).toList();
             int ahead = d.indexOf("D,5,5");
             int turn = d.indexOf("D,3,-3");
@@ -168,7 +162,7 @@ class WsuControllerPtyTest {
         Path classes = compile(Map.of("Crasher", CRASHER));
         Class<?> crasher = new ControllerLoader(List.of(classes)).load("Crasher");
         try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null)) {
-            RobotRun.Result r = run(fake, crasher, RobotSettings.defaults(), 10_000, rb -> { });
+            RobotRun.Result r = run(fake, crasher, RobotSettings.defaults(), 10_000, RobotScript.NOTHING);
             assertEquals(RobotRun.End.FAILED, r.end());
             assertTrue(r.detail().contains("java.io.IOException: student bug"), r.detail());
             assertTrue(fake.robot().received().contains("D,6,6"));
@@ -182,7 +176,7 @@ class WsuControllerPtyTest {
         Class<?> grabber = new ControllerLoader(List.of(classes)).load("Grabber");
         try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null)) {
             RobotRun.Result r = run(fake, grabber, RobotSettings.defaults().withGripper(true, false), 10_000,
-                    rb -> { });
+                    RobotScript.NOTHING);
             assertEquals(RobotRun.End.FINISHED, r.end(), r.detail());
             List<String> got = fake.robot().received();
             assertTrue(got.contains("T,1,E,249") && got.contains("T,1,D,1"), "arm down, fingers closed: " + got);

@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
 import javax.tools.ToolProvider;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -26,7 +27,11 @@ import org.kheperasim.link.timing.LinkTiming;
  * overridden to set speeds at time 0, KSuite 1.1.2's K213 vision turret read through the turret's own
  * commands, the original's wheel counts ({@code wsu.positionUnits=legacy}) for a count-tuned turn, and
  * the later fork's pose API answered from odometry with a note.
+ *
+ * <p>Tagged {@code timing}: real time over a serial line (a pty pair); {@code .ci/run} runs it again
+ * with both cores busy.
  */
+@Tag("timing")
 @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class WsuLaterApisPtyTest {
     @TempDir

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -16,7 +17,11 @@ import org.kheperasim.link.protocol.Command;
 import org.kheperasim.link.protocol.Reply;
 import org.kheperasim.link.timing.LinkTiming;
 
-/** The session over a real pty pair, opened through jSerialComm, against the fake robot. */
+/** The session over a real pty pair, opened through jSerialComm, against the fake robot. *
+ * <p>Tagged {@code timing}: real time over a serial line (a pty pair); {@code .ci/run} runs it again
+ * with both cores busy.
+ */
+@Tag("timing")
 @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class SessionPtyTest {
     @TempDir

@@ -63,8 +63,15 @@ final class BenchCommand implements Callable<Integer> {
                     + " controller (default: the arena's own robots)")
     int robots;
 
+    @Option(names = "--engine-threads", paramLabel = "N", converter = CliNumbers.PositiveInt.class,
+            description = "threads the world's step may use for a swarm of 64 robots or more: 1 or 2 (default: 2 on a"
+                    + " machine with two cores or more); a run is the same either way")
+    Integer engineThreads;
+
     @picocli.CommandLine.Mixin
     SettingsOptions settingsOptions = new SettingsOptions();
+
+    private org.kheperasim.sim.host.HostOptions hostOptions;
 
     private Arena scenario;
     private org.kheperasim.sim.engine.Settings settings;
@@ -78,6 +85,8 @@ final class BenchCommand implements Callable<Integer> {
                     + org.kheperasim.sim.arena.ArenaLimits.MAX_ROBOTS + " robots");
         }
         settings = settingsOptions.settings();
+        hostOptions = engineThreads == null ? org.kheperasim.sim.host.HostOptions.defaults()
+                : org.kheperasim.sim.host.HostOptions.defaults().withEngineThreads(engineThreads);
         scenario = withCaps(robots > 0 ? Swarm.arena(robots) : ArenaFormat.resolve(arena), addCaps);
         if (robots > 0) {
             arena = scenario.name();
@@ -97,7 +106,9 @@ final class BenchCommand implements Callable<Integer> {
         } while (System.nanoTime() - warmStart < warmUp * 1e9);
         System.out.printf(Locale.ROOT, "warm-up: %d run%s in %.1f s of wall time%n", warmRuns, warmRuns == 1 ? "" : "s",
                 (System.nanoTime() - warmStart) / 1e9);
-        System.out.println(modeLine + (settings.overrides().isEmpty() ? "" : "; settings " + settings.describe()));
+        System.out.println(modeLine + (settings.overrides().isEmpty() ? "" : "; settings " + settings.describe())
+                + (scenario.robots().size() >= 64 ? "; world step on " + hostOptions.engineThreads() + " thread"
+                        + (hostOptions.engineThreads() == 1 ? "" : "s") : ""));
         List<Double> factors = new ArrayList<>();
         for (int i = 0; i < runs; i++) {
             RunResult r = run(seed + i);
@@ -135,7 +146,7 @@ final class BenchCommand implements Callable<Integer> {
 
     private RunResult run(long runSeed, double runSeconds) {
         return Simulation.builder().arena(scenario).controller(controller).classpath(classpath).seconds(runSeconds)
-                .settings(settings).onStart(session -> {
+                .settings(settings).hostOptions(hostOptions).onStart(session -> {
                     if (modeLine == null) {
                         modeLine = session.modeLine();
                     }

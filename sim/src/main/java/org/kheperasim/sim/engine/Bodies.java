@@ -22,6 +22,9 @@ final class Bodies {
     private double[] x = new double[0];
     private double[] y = new double[0];
     private int count;
+    /** While robots move on two threads: their buckets are put right afterwards ({@link #relinkDeferred}). */
+    private boolean deferring;
+    private boolean[] pending = new boolean[0];
 
     /** @param width the arena's width, mm @param height its height, mm */
     Bodies(double width, double height) {
@@ -50,28 +53,78 @@ final class Bodies {
             throw new IllegalArgumentException("robots join in order: expected " + count + ", got " + i);
         }
         count++;
-        x = Arrays.copyOf(x, count);
-        y = Arrays.copyOf(y, count);
-        next = Arrays.copyOf(next, count);
-        cellOf = Arrays.copyOf(cellOf, count);
+        if (count > x.length) {
+            // Grown by half again, not by one: a swarm of 1,000 robots joined one by one copied 16 MB.
+            int room = StrictMath.max(8, x.length + (x.length >> 1));
+            x = Arrays.copyOf(x, room);
+            y = Arrays.copyOf(y, room);
+            next = Arrays.copyOf(next, room);
+            cellOf = Arrays.copyOf(cellOf, room);
+        }
         cellOf[i] = -1;
         moved(i, px, py);
     }
 
-    /** Robot {@code i} is now at (px, py). */
+    /**
+     * Robot {@code i} is now at (px, py). While {@link #deferring}, only its own slots change: its
+     * bucket follows at {@link #relinkDeferred}, so robots moved on two threads at once touch
+     * nothing shared.
+     */
     void moved(int i, double px, double py) {
         x[i] = px;
         y[i] = py;
-        int cell = cell(px, py);
+        if (deferring) {
+            pending[i] = true;
+            return;
+        }
+        relink(i);
+    }
+
+    private void relink(int i) {
+        int cell = cell(x[i], y[i]);
         if (cell == cellOf[i]) {
             return;
         }
         if (cellOf[i] >= 0) {
             unlink(i);
         }
-        next[i] = head[cell];
-        head[cell] = i;
+        // Each bucket lists its robots by number, whatever order they came in: what a visit finds,
+        // and in which order, depends only on where the robots are.
+        int prev = -1;
+        int k = head[cell];
+        while (k >= 0 && k < i) {
+            prev = k;
+            k = next[k];
+        }
+        next[i] = k;
+        if (prev < 0) {
+            head[cell] = i;
+        } else {
+            next[prev] = i;
+        }
         cellOf[i] = cell;
+    }
+
+    /**
+     * From now until {@link #relinkDeferred}, {@link #moved} keeps the buckets as they are: the
+     * robots that move meanwhile must not look for others through them (robots on their own).
+     */
+    void deferRelinks() {
+        if (pending.length < count) {
+            pending = new boolean[x.length];
+        }
+        deferring = true;
+    }
+
+    /** Put every robot moved since {@link #deferRelinks} into its bucket, and move on as usual. */
+    void relinkDeferred() {
+        deferring = false;
+        for (int i = 0; i < count; i++) {
+            if (pending[i]) {
+                pending[i] = false;
+                relink(i);
+            }
+        }
     }
 
     private void unlink(int i) {

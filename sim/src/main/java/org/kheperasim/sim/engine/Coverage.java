@@ -32,9 +32,9 @@ final class Coverage {
     private final World world;
     private final OccupancyGrid grid;
     private final int tilesAcross;
-    private long[][] tiles;
+    private final Tiles tiles;
     /** The centre cells the chain has met, in the same tiles: their whole footprints are covered. */
-    private final long[][] centres;
+    private final Tiles centres;
     private int lastCol = Integer.MIN_VALUE;
     private int lastRow;
     private List<Region> regions;
@@ -51,8 +51,9 @@ final class Coverage {
         this.world = world;
         this.grid = world.grid();
         this.tilesAcross = (grid.cols() + TILE - 1) >> TILE_SHIFT;
-        this.tiles = new long[tilesAcross * ((grid.rows() + TILE - 1) >> TILE_SHIFT)][];
-        this.centres = new long[tiles.length][];
+        int tilesDown = (grid.rows() + TILE - 1) >> TILE_SHIFT;
+        this.tiles = new Tiles(tilesAcross, tilesDown);
+        this.centres = new Tiles(tilesAcross, tilesDown);
         this.regions = world.arena().regions();
         this.entered = new long[regions.size()];
         Arrays.fill(entered, -1);
@@ -97,12 +98,7 @@ final class Coverage {
         if (col < 0 || row < 0 || col >= grid.cols() || row >= grid.rows()) {
             return true;
         }
-        int t = (row >> TILE_SHIFT) * tilesAcross + (col >> TILE_SHIFT);
-        long[] tile = centres[t];
-        if (tile == null) {
-            tile = new long[TILE * TILE / 64];
-            centres[t] = tile;
-        }
+        long[] tile = centres.make(col >> TILE_SHIFT, row >> TILE_SHIFT);
         int bit = ((row & (TILE - 1)) << TILE_SHIFT) | (col & (TILE - 1));
         long mask = 1L << bit;
         if ((tile[bit >> 6] & mask) != 0) {
@@ -125,11 +121,7 @@ final class Coverage {
             if (inside || c >= 0 && r >= 0 && c < cols && r < rows) {
                 int t = (r >> TILE_SHIFT) * tilesAcross + (c >> TILE_SHIFT);
                 if (t != lastT) {
-                    tile = tiles[t];
-                    if (tile == null) {
-                        tile = new long[TILE * TILE / 64];
-                        tiles[t] = tile;
-                    }
+                    tile = tiles.make(c >> TILE_SHIFT, r >> TILE_SHIFT);
                     lastT = t;
                 }
                 int bit = ((r & (TILE - 1)) << TILE_SHIFT) | (c & (TILE - 1));
@@ -194,11 +186,8 @@ final class Coverage {
             return 0;
         }
         int visitedFree = 0;
-        for (int t = 0; t < tiles.length; t++) {
-            long[] tile = tiles[t];
-            if (tile == null) {
-                continue;
-            }
+        for (int t = tiles.next(0); t >= 0; t = tiles.next(t + 1)) {
+            long[] tile = tiles.at(t);
             int col0 = (t % tilesAcross) << TILE_SHIFT;
             int row0 = (t / tilesAcross) << TILE_SHIFT;
             for (int w = 0; w < tile.length; w++) {
@@ -224,6 +213,70 @@ final class Coverage {
             }
         }
         return out;
+    }
+
+    /**
+     * A bitmap's tiles, allocated on first use, behind a directory of blocks of 8 x 8 tiles, also
+     * allocated on first use: a robot of a large arena (a swarm's, 6.4 m a side: 83 x 83 tiles) pays
+     * for the blocks it has been in, not a reference per tile of the whole floor (55 KB a robot).
+     */
+    private static final class Tiles {
+        private static final int BLOCK_SHIFT = 3;
+        private static final int BLOCK = 1 << BLOCK_SHIFT;
+        private final int across;
+        private final int down;
+        private final int blocksAcross;
+        private final long[][][] blocks;
+
+        Tiles(int across, int down) {
+            this.across = across;
+            this.down = down;
+            this.blocksAcross = (across + BLOCK - 1) >> BLOCK_SHIFT;
+            this.blocks = new long[blocksAcross * ((down + BLOCK - 1) >> BLOCK_SHIFT)][][];
+        }
+
+        /** @return tile (tc, tr), made empty if it was not there */
+        long[] make(int tc, int tr) {
+            int b = (tr >> BLOCK_SHIFT) * blocksAcross + (tc >> BLOCK_SHIFT);
+            long[][] block = blocks[b];
+            if (block == null) {
+                block = new long[BLOCK * BLOCK][];
+                blocks[b] = block;
+            }
+            int k = ((tr & (BLOCK - 1)) << BLOCK_SHIFT) | (tc & (BLOCK - 1));
+            long[] tile = block[k];
+            if (tile == null) {
+                tile = new long[TILE * TILE / 64];
+                block[k] = tile;
+            }
+            return tile;
+        }
+
+        /** @param t a tile's index (row-major over the tiles) @return the tile, or null when never made */
+        long[] at(int t) {
+            int tc = t % across;
+            int tr = t / across;
+            long[][] block = blocks[(tr >> BLOCK_SHIFT) * blocksAcross + (tc >> BLOCK_SHIFT)];
+            return block == null ? null : block[((tr & (BLOCK - 1)) << BLOCK_SHIFT) | (tc & (BLOCK - 1))];
+        }
+
+        /** @return the index of the first tile made at index {@code from} or after it, -1 when none */
+        int next(int from) {
+            int count = across * down;
+            for (int t = from; t < count; t++) {
+                int tc = t % across;
+                int tr = t / across;
+                if (blocks[(tr >> BLOCK_SHIFT) * blocksAcross + (tc >> BLOCK_SHIFT)] == null) {
+                    // Skip the rest of this block's row of tiles.
+                    t = tr * across + StrictMath.min(across, ((tc >> BLOCK_SHIFT) + 1) << BLOCK_SHIFT) - 1;
+                    continue;
+                }
+                if (at(t) != null) {
+                    return t;
+                }
+            }
+            return -1;
+        }
     }
 
     private static int[] footprint(double cell) {

@@ -198,10 +198,46 @@ final class Crowd implements Bodies.Visitor {
             }
             unit[members++] = id;
         }
-        for (; t < tick; t++) {
-            for (int id = root; id >= 0; id = nextMember[id]) {
-                robots.get(id).move(1, (t + 1) * Engine.TICK_NANOS, false, unit, members);
+        while (t < tick) {
+            long k = glideTogether(members, tick - t);
+            if (k > 1) {
+                // Too far apart to touch for k ticks: each glides along its arc as it would on its own.
+                for (int id = root; id >= 0; id = nextMember[id]) {
+                    robots.get(id).move(k, (t + k) * Engine.TICK_NANOS, true, unit, members);
+                }
+                t += k;
+            } else {
+                for (int id = root; id >= 0; id = nextMember[id]) {
+                    robots.get(id).move(1, (t + 1) * Engine.TICK_NANOS, false, unit, members);
+                }
+                t++;
             }
         }
+    }
+
+    /**
+     * @param members how many robots of {@link #unit} count
+     * @param wanted ticks up to the next event
+     * @return how many ticks every robot of the unit may glide at once: no two of them can come
+     *     within touching distance meanwhile (each moves at most its travel per tick), and none meets a
+     *     wall, lamp, cap or region on the way ({@link SimRobot#glideTicks}); 1 or less: step a tick
+     */
+    private long glideTogether(int members, long wanted) {
+        long k = wanted;
+        for (int a = 0; a < members && k > 1; a++) {
+            SimRobot ra = robots.get(unit[a]);
+            for (int b = a + 1; b < members && k > 1; b++) {
+                SimRobot rb = robots.get(unit[b]);
+                double closing = ra.travelPerTickMm() + rb.travelPerTickMm();
+                if (closing > 0) {
+                    double gap = StrictMath.hypot(ra.x() - rb.x(), ra.y() - rb.y()) - TOUCH_MM - 1e-6;
+                    k = gap <= 0 ? 0 : (long) StrictMath.min(k, StrictMath.floor(gap / closing));
+                }
+            }
+        }
+        for (int a = 0; a < members && k > 1; a++) {
+            k = StrictMath.min(k, robots.get(unit[a]).glideTicks(k));
+        }
+        return k;
     }
 }

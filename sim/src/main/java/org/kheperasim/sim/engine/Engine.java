@@ -43,6 +43,8 @@ public final class Engine {
     private int granted = -1;
     private long grantedTick;
     private boolean wakesTold;
+    /** Splits each stop's per-robot work over two threads (a large swarm), or null: the turn holder does it all. */
+    private SplitWork split;
 
     private record Subscription(SnapshotListener listener, long periodTicks) {
     }
@@ -88,6 +90,31 @@ public final class Engine {
         drivers.set(robot.id(), driver);
         hasDrivers = true;
         driverStatus.set(robot.id(), status);
+    }
+
+    /**
+     * Let the world's step use two threads, for a swarm of {@link SplitWork#MIN_ROBOTS} robots or
+     * more (call after adding the robots; fewer are not worth it): the run is the same with one
+     * thread or two. {@link #close} ends the second thread.
+     *
+     * @param threads 1 or 2
+     */
+    public void threads(int threads) {
+        if (threads > 1 && split == null && robots.size() >= SplitWork.MIN_ROBOTS) {
+            split = new SplitWork("khepera-sim world step, second thread");
+            motion.split(split);
+        } else if (threads <= 1 && split != null) {
+            close();
+        }
+    }
+
+    /** Ends the engine's second thread, if it has one (the engine runs on with one). */
+    public void close() {
+        if (split != null) {
+            split.close();
+            split = null;
+            motion.split(null);
+        }
     }
 
     /**
@@ -191,8 +218,13 @@ public final class Engine {
                     return null;
                 }
                 long t = tick * TICK_NANOS;
-                for (int i = 0; i < robots.size(); i++) {
-                    robots.get(i).beginTick(t);
+                if (split != null) {
+                    // Each robot's commands, scan and poll at the stop are its own; the world stands still meanwhile.
+                    split.forEach(robots.size(), i -> robots.get(i).beginTick(t));
+                } else {
+                    for (int i = 0; i < robots.size(); i++) {
+                        robots.get(i).beginTick(t);
+                    }
                 }
                 inTick = true;
                 driverCursor = 0;

@@ -25,12 +25,24 @@ import java.util.List;
  */
 final class Motion {
     private final List<SimRobot> robots;
+    private final Bodies bodies;
     private final List<SimRobot> together = new ArrayList<>();
+    private final List<SimRobot> lone = new ArrayList<>();
     private final Crowd crowd;
+    /** Moves the robots on their own on two threads, or null: on the turn holder's alone. */
+    private SplitWork split;
+    private long stretchStart;
+    private long stretchTicks;
 
     Motion(List<SimRobot> robots, Bodies bodies) {
         this.robots = robots;
+        this.bodies = bodies;
         this.crowd = new Crowd(robots, bodies);
+    }
+
+    /** @param split splits the moves of robots on their own over two threads; null for one */
+    void split(SplitWork split) {
+        this.split = split;
     }
 
     /**
@@ -50,15 +62,32 @@ final class Motion {
             crowd.look(n);
         }
         together.clear();
+        lone.clear();
         for (int i = 0; i < robots.size(); i++) {
             SimRobot r = robots.get(i);
             if (!capsMove && crowd.unseen(r)) {
-                alone(r, start, n);
+                lone.add(r);
             } else {
                 // Values of its last scan left for a later read were those of a robot alone: computed now,
                 // before others may come within its sensors' reach.
                 r.settleScan();
                 together.add(r);
+            }
+        }
+        // No robot can reach one on its own during the stretch, nor it them: they move in any order,
+        // on two threads for a large swarm, each touching only what is its own (its bucket follows).
+        if (split != null && lone.size() >= SplitWork.MIN_ROBOTS) {
+            stretchStart = start;
+            stretchTicks = n;
+            bodies.deferRelinks();
+            try {
+                split.forEach(lone.size(), this::moveLone);
+            } finally {
+                bodies.relinkDeferred();
+            }
+        } else {
+            for (int i = 0; i < lone.size(); i++) {
+                alone(lone.get(i), start, n);
             }
         }
         if (together.isEmpty()) {
@@ -80,6 +109,10 @@ final class Motion {
                 r.move(1, (t + 1) * Engine.TICK_NANOS, false, null, 0);
             }
         }
+    }
+
+    private void moveLone(int k) {
+        alone(lone.get(k), stretchStart, stretchTicks);
     }
 
     /** No robot: a robot on its own can touch none during the stretch. */

@@ -15,6 +15,7 @@ import java.util.function.Consumer;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
 import org.kheperasim.sim.task.RunFacts;
@@ -37,6 +38,9 @@ public final class Evaluator implements AutoCloseable {
     private final ExecutorService pool;
     private final Map<String, Arena> arenas = new ConcurrentHashMap<>();
 
+    /** The engine keeps to one thread per job when jobs run on several threads. */
+    private final HostOptions hostOptions;
+
     /**
      * @param classpath folders and jars with the controllers' classes
      * @param trusted run the controllers unchecked (the user's own code), or checked against the allowlist
@@ -56,6 +60,8 @@ public final class Evaluator implements AutoCloseable {
             return t;
         };
         this.pool = Executors.newFixedThreadPool(threads, named);
+        // Jobs on every core already: a swarm's step keeps to its job's thread (the same outcome either way).
+        this.hostOptions = threads > 1 ? HostOptions.defaults().withEngineThreads(1) : HostOptions.defaults();
     }
 
     /**
@@ -115,7 +121,7 @@ public final class Evaluator implements AutoCloseable {
         try {
             Simulation.Builder run = Simulation.builder().arena(arena).classpath(classpath).trusted(trusted)
                     .controller(job.controller()).seed(job.seed()).seconds(job.seconds()).settings(settings)
-                    .parameters(job.parameters());
+                    .parameters(job.parameters()).hostOptions(hostOptions);
             if (job.trace() != null) {
                 run.trace(job.trace());
             }

@@ -71,11 +71,15 @@ final class HeapWatch {
     }
 
     private static void setUpPools() {
+        // The pools that hold what lives on: the old generation (or a collector's single heap pool).
+        // The young pools are left out: a survivor space is often full after a collection and an
+        // eden space fills between any two, however little a controller keeps; neither supports a
+        // usage threshold, which is how the JVM itself tells them apart.
         List<MemoryPoolMXBean> heap = ManagementFactory.getMemoryPoolMXBeans().stream()
-                .filter(p -> p.getType() == MemoryType.HEAP).toList();
+                .filter(p -> p.getType() == MemoryType.HEAP && p.isUsageThresholdSupported()).toList();
         for (MemoryPoolMXBean pool : heap) {
             long max = pool.getUsage().getMax();
-            if (pool.isUsageThresholdSupported() && max > 0) {
+            if (max > 0) {
                 pool.setUsageThreshold(max / 100 * THRESHOLD_PERCENT);
             }
         }

@@ -159,6 +159,8 @@ public final class RunSession implements AutoCloseable {
         }
         this.controllerClass = cls;
         this.lockstep = new Lockstep(engine, threadHosts, stepHosts, hostOptions.hangTimeoutNanos());
+        // Last: a second thread for the world's step (a large swarm) is ended by close().
+        engine.threads(hostOptions.engineThreads());
     }
 
     /**
@@ -375,6 +377,7 @@ public final class RunSession implements AutoCloseable {
                 trace.onSnapshot(engine.snapshot());
             }
         } finally {
+            engine.close();
             lockstep.stopAll();
             windows.closeSince(windowsMark);
             if (trace != null) {

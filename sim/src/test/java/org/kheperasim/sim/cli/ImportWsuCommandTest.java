@@ -81,7 +81,7 @@ class ImportWsuCommandTest {
     @Test
     void itSavesAsEveryFileIsSavedKeepingALinkAndTheFilesMode() throws Exception {
         org.junit.jupiter.api.Assumptions.assumeTrue(java.nio.file.FileSystems.getDefault().supportedFileAttributeViews()
-                .contains("posix"), "POSIX permissions only");
+                .contains("posix"), "this file system has no POSIX permissions (not Linux or macOS)");
         Path map = dir.resolve("course-map");
         Files.write(map, world());
         // A new file gets the usual mode (the process's umask), not a temporary file's 0600.

@@ -13,6 +13,9 @@ import org.kheperasim.sim.arena.OccupancyGrid;
 class CoverageTest {
     private static final World WORLD = new World(ArenaFormat.parse(
             "khepera-arena 1\nname t\nsize 600 600\nrobot 100 100 0\nwall 200 200 260 400 20\n", "t.arena"));
+    /** A swarm-sized floor: its coverage bitmap spans several blocks of tiles (624 mm each way). */
+    private static final World LARGE = new World(ArenaFormat.parse(
+            "khepera-arena 1\nname big\nsize 4000 3000\nrobot 100 100 0\nwall 1900 700 1960 2300 20\n", "big.arena"));
 
     @Test
     void aRobotGoingRoundTheSameLoopAgainCoversNothingMore() {
@@ -28,7 +31,7 @@ class CoverageTest {
             }
         }
         assertEquals(once, c.visitedPercent(), 0.0);
-        assertEquals(reference(path), once, 1e-9);
+        assertEquals(reference(WORLD, path), once, 1e-9);
     }
 
     /** Random walks that come back on themselves, some running off the arena's edge. */
@@ -36,23 +39,35 @@ class CoverageTest {
     void coverageIsTheUnionOfTheFootprintsAlongThePath() {
         for (long seed = 0; seed < 60; seed++) {
             java.util.SplittableRandom random = new java.util.SplittableRandom(seed);
-            assertEquals(reference(walk(random)), covered(walk(new java.util.SplittableRandom(seed))), 1e-9, "seed " + seed);
+            assertEquals(reference(WORLD, walk(random, 600, 600)), covered(WORLD, walk(new java.util.SplittableRandom(seed), 600, 600)), 1e-9,
+                    "seed " + seed);
         }
     }
 
-    private static double covered(double[][] path) {
-        Coverage c = new Coverage(WORLD, path[0][0], path[0][1]);
+    /** The same on a floor of several blocks of tiles, the walks crossing blocks and the edges. */
+    @Test
+    void onALargeFloorToo() {
+        for (long seed = 0; seed < 30; seed++) {
+            java.util.SplittableRandom random = new java.util.SplittableRandom(seed);
+            assertEquals(reference(LARGE, walk(random, 4000, 3000)), covered(LARGE, walk(new java.util.SplittableRandom(seed), 4000, 3000)), 1e-9,
+                    "seed " + seed);
+        }
+    }
+
+    private static double covered(World world, double[][] path) {
+        Coverage c = new Coverage(world, path[0][0], path[0][1]);
         for (double[] p : path) {
             c.mark(p[0], p[1]);
         }
         return c.visitedPercent();
     }
 
-    private static double[][] walk(java.util.SplittableRandom random) {
+    /** A walk over a floor of width x height mm, running up to 40 mm off its edges; long moves a third of the width. */
+    private static double[][] walk(java.util.SplittableRandom random, double width, double height) {
         int steps = 1 + random.nextInt(120);
         double[][] path = new double[steps][];
-        double x = 20 + random.nextDouble(560);
-        double y = 20 + random.nextDouble(560);
+        double x = 20 + random.nextDouble(width - 40);
+        double y = 20 + random.nextDouble(height - 40);
         for (int k = 0; k < steps; k++) {
             // Short and long moves, sometimes back to an earlier point.
             if (k > 2 && random.nextInt(5) == 0) {
@@ -60,9 +75,9 @@ class CoverageTest {
                 x = back[0];
                 y = back[1];
             } else {
-                double reach = random.nextInt(4) == 0 ? 200 : 12;
-                x = StrictMath.min(640, StrictMath.max(-40, x + random.nextDouble(-reach, reach)));
-                y = StrictMath.min(640, StrictMath.max(-40, y + random.nextDouble(-reach, reach)));
+                double reach = random.nextInt(4) == 0 ? width / 3 : 12;
+                x = StrictMath.min(width + 40, StrictMath.max(-40, x + random.nextDouble(-reach, reach)));
+                y = StrictMath.min(height + 40, StrictMath.max(-40, y + random.nextDouble(-reach, reach)));
             }
             path[k] = new double[] {x, y};
         }
@@ -75,8 +90,8 @@ class CoverageTest {
      * one), every cell of the grid whose centre lies within the body's radius of a chain cell's
      * centre, counted where it is floor.
      */
-    private static double reference(double[][] path) {
-        OccupancyGrid g = WORLD.grid();
+    private static double reference(World world, double[][] path) {
+        OccupancyGrid g = world.grid();
         boolean[] covered = new boolean[g.cols() * g.rows()];
         int reach = (int) StrictMath.ceil(Khepera.BODY_RADIUS_MM / OccupancyGrid.CELL_MM);
         int col = g.col(path[0][0]);

@@ -36,7 +36,7 @@ class AtomicFilesTest {
 
     @Test
     void replacesTheContentAndKeepsTheFilesMode(@TempDir Path dir) throws IOException {
-        assumeTrue(posix(), "POSIX permissions");
+        assumeTrue(posix(), "this file system has no POSIX permissions (not Linux or macOS)");
         Path file = dir.resolve("lab.arena");
         Files.writeString(file, "old");
         Files.setPosixFilePermissions(file, PosixFilePermissions.fromString("rw-r-----"));
@@ -60,7 +60,7 @@ class AtomicFilesTest {
 
     @Test
     void aNewFileGetsTheUsualPermissionsNotPrivateOnes(@TempDir Path dir) throws IOException {
-        assumeTrue(posix(), "POSIX permissions");
+        assumeTrue(posix(), "this file system has no POSIX permissions (not Linux or macOS)");
         Path plain = dir.resolve("plain");
         Files.writeString(plain, "x");
         Path saved = dir.resolve("saved");

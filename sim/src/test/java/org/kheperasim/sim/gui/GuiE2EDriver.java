@@ -6,7 +6,6 @@ import java.awt.Point;
 import java.awt.Rectangle;
 import java.awt.Robot;
 import java.awt.Toolkit;
-import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.io.File;
 import java.nio.file.Path;
@@ -45,19 +44,18 @@ public final class GuiE2EDriver {
         System.out.printf(Locale.ROOT, "window showing after %.2f s%n", (System.nanoTime() - t0) / 1e9);
         Robot robot = new Robot();
         robot.setAutoDelay(15);
-        robot.waitForIdle();
-        Thread.sleep(500);
+        RobotInput input = new RobotInput(robot);
+        input.settle();
 
-        click(robot, find(w.frame(), "tool.WALL"));
+        click(input, find(w.frame(), "tool.WALL"));
         Point a = screen(w, WALL_X1, WALL_Y);
         Point b = screen(w, WALL_X2, WALL_Y);
-        robot.mouseMove(a.x, a.y);
-        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
+        input.move(a);
+        input.press();
         for (int i = 1; i <= 20; i++) {
-            robot.mouseMove(a.x + (b.x - a.x) * i / 20, a.y + (b.y - a.y) * i / 20);
+            input.move(new Point(a.x + (b.x - a.x) * i / 20, a.y + (b.y - a.y) * i / 20));
         }
-        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        robot.waitForIdle();
+        input.release();
         int walls = onEdt(() -> w.model().arena().walls().size());
         if (walls != 5) {
             fail("dragging with the wall tool should add a fifth wall; the arena has " + walls);
@@ -66,16 +64,16 @@ public final class GuiE2EDriver {
         shot(robot, w, out.resolve("e2e-1-wall-drawn.png"));
 
         // Choose Braitenberg in the controller box, with the keyboard as a user may.
-        click(robot, find(w.frame(), "controller"));
-        robot.waitForIdle();
-        key(robot, KeyEvent.VK_B);
-        key(robot, KeyEvent.VK_ENTER);
-        robot.waitForIdle();
+        click(input, find(w.frame(), "controller"));
+        input.keys(KeyEvent.VK_B);
+        input.keys(KeyEvent.VK_ENTER);
         String chosen = onEdt(w::controllerName);
         if (!chosen.equals("Braitenberg")) {
             fail("choosing Braitenberg in the controller box gave " + chosen);
         }
-        click(robot, find(w.frame(), "start"));
+        // x4: the 12 simulated seconds take 3 s of wall time; the speed never changes what is computed.
+        SwingUtilities.invokeAndWait(() -> w.chooseSpeed(4));
+        click(input, find(w.frame(), "start"));
         long start = System.nanoTime();
         double maxY = 0;
         double minHeadingOff = 0;
@@ -173,20 +171,11 @@ public final class GuiE2EDriver {
         return null;
     }
 
-    private static void click(Robot robot, Component c) throws Exception {
-        Point p = onEdt(() -> {
+    private static void click(RobotInput input, Component c) throws Exception {
+        input.click(onEdt(() -> {
             Point o = c.getLocationOnScreen();
             return new Point(o.x + c.getWidth() / 2, o.y + c.getHeight() / 2);
-        });
-        robot.mouseMove(p.x, p.y);
-        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
-        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        robot.waitForIdle();
-    }
-
-    private static void key(Robot robot, int code) {
-        robot.keyPress(code);
-        robot.keyRelease(code);
+        }));
     }
 
     static void shot(Robot robot, MainWindow w, Path file) throws Exception {

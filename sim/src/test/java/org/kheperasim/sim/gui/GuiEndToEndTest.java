@@ -2,12 +2,19 @@ package org.kheperasim.sim.gui;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.BufferedReader;
 import java.io.File;
 import java.io.IOException;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
@@ -33,34 +40,55 @@ class GuiEndToEndTest {
         return startXvfb(xvfb, display, "1280x1024x24");
     }
 
-    /** Starts Xvfb with a screen of {@code screen} (e.g. 1366x768x24) on a free display; the caller destroys it. */
+    /**
+     * Starts Xvfb with a screen of {@code screen} (e.g. 1366x768x24) on a display it picks itself
+     * ({@code -displayfd}: the server takes the first free number and prints it once it accepts
+     * clients, so window tests in parallel test JVMs never share or race for a display); the caller
+     * destroys it.
+     */
     static Process startXvfb(Path xvfb, int[] display, String screen) throws IOException, InterruptedException {
-        for (int n = 91; n < 200; n++) {
-            if (Files.exists(Path.of("/tmp/.X11-unix/X" + n)) || Files.exists(Path.of("/tmp/.X" + n + "-lock"))) {
-                continue;
+        Process p = new ProcessBuilder(xvfb.toString(), "-displayfd", "1", "-screen", "0", screen, "-nolisten", "tcp")
+                .redirectError(ProcessBuilder.Redirect.DISCARD).start();
+        CompletableFuture<String> line = CompletableFuture.supplyAsync(() -> {
+            try {
+                return new BufferedReader(new InputStreamReader(p.getInputStream(),
+                        StandardCharsets.US_ASCII)).readLine();
+            } catch (IOException e) {
+                return null;
             }
-            Process p = new ProcessBuilder(xvfb.toString(), ":" + n, "-screen", "0", screen, "-nolisten", "tcp")
-                    .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
-            long until = System.nanoTime() + 10_000_000_000L;
-            while (System.nanoTime() < until && p.isAlive() && !Files.exists(Path.of("/tmp/.X11-unix/X" + n))) {
-                Thread.sleep(50);
-            }
-            if (p.isAlive() && Files.exists(Path.of("/tmp/.X11-unix/X" + n))) {
-                display[0] = n;
-                return p;
-            }
-            p.destroy();
+        });
+        String n;
+        try {
+            n = line.get(30, TimeUnit.SECONDS);
+        } catch (ExecutionException | TimeoutException e) {
+            n = null;
         }
-        throw new IllegalStateException("could not start Xvfb on any display :91..:199");
+        if (n == null || !n.strip().matches("\\d+")) {
+            p.destroyForcibly();
+            throw new IllegalStateException("Xvfb did not report a display within 30 s (it printed " + n + ")");
+        }
+        display[0] = Integer.parseInt(n.strip());
+        return p;
+    }
+
+    /**
+     * @return the home folder of a driver's child JVM: one per driver, so that window tests in
+     *     parallel test JVMs never share preferences (RunStatusTest starts from none)
+     */
+    static Path home(String mainClass) {
+        return Path.of("target", "e2e-home", mainClass.substring(mainClass.lastIndexOf('.') + 1));
     }
 
     static Process childJvm(int display, String mainClass, Path log, String... args) throws IOException {
         List<String> cmd = new ArrayList<>();
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        // The quick compiler only: a window test's JVM lives seconds, and the optimising compiler spent
+        // half of its processor time (7 s of 11 in KeyBindingsDriver); what it checks does not depend on it.
+        cmd.add("-XX:TieredStopAtLevel=1");
         cmd.add("-cp");
         cmd.add(System.getProperty("java.class.path"));
         cmd.add("-Djava.awt.headless=false");
-        cmd.add("-Duser.home=" + Path.of("target", "e2e-home").toAbsolutePath());
+        cmd.add("-Duser.home=" + home(mainClass).toAbsolutePath());
         cmd.add(mainClass);
         cmd.addAll(List.of(args));
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(log.toFile());

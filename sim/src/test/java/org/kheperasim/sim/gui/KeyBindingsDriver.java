@@ -4,7 +4,6 @@ import java.awt.Component;
 import java.awt.Container;
 import java.awt.Point;
 import java.awt.Robot;
-import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
@@ -18,6 +17,7 @@ import org.kheperasim.sim.run.PacedRunner;
  */
 public final class KeyBindingsDriver {
     private static Robot robot;
+    private static RobotInput input;
     private static MainWindow w;
 
     private KeyBindingsDriver() {
@@ -31,6 +31,7 @@ public final class KeyBindingsDriver {
         w = GuiLauncher.lastLaunched().get(20, TimeUnit.SECONDS);
         robot = new Robot();
         robot.setAutoDelay(20);
+        input = new RobotInput(robot);
         robot.waitForIdle();
         Thread.sleep(500);
         for (String focus : new String[] {"arena", "consoleText"}) {
@@ -62,7 +63,11 @@ public final class KeyBindingsDriver {
             w.chooseSpeed(org.kheperasim.sim.run.PacedRunner.MAX_SPEED);
             w.action("start").actionPerformed(null);
         });
-        Thread.sleep(1500);
+        // Well under way at full speed (a simulated minute), then stopped.
+        long runUntil = System.nanoTime() + 60_000_000_000L;
+        while (w.runner().latest().timeNanos() < 60_000_000_000L && System.nanoTime() < runUntil) {
+            Thread.sleep(20);
+        }
         // The F8 press above left a note of its own: wait for the next one.
         int before = onEdt(w::consoleText).split("Stopped at t = ", -1).length;
         SwingUtilities.invokeAndWait(() -> w.action("stop").actionPerformed(null));
@@ -85,19 +90,11 @@ public final class KeyBindingsDriver {
         SwingUtilities.invokeAndWait(() -> w.model().apply(org.kheperasim.sim.edit.ArenaEdits.addCap(w.model().arena(), 900, 900)));
         for (String answer : new String[] {"Cancel", "Discard"}) {
             // The focus back in the window (after a dialog, without a window manager it may be nowhere).
-            Point corner = onEdt(() -> {
+            input.click(onEdt(() -> {
                 Point o = w.arenaComponent().getLocationOnScreen();
                 return new Point(o.x + 8, o.y + 8);
-            });
-            robot.mouseMove(corner.x, corner.y);
-            robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
-            robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-            robot.waitForIdle();
-            robot.keyPress(KeyEvent.VK_CONTROL);
-            robot.keyPress(KeyEvent.VK_Q);
-            robot.keyRelease(KeyEvent.VK_Q);
-            robot.keyRelease(KeyEvent.VK_CONTROL);
-            robot.waitForIdle();
+            }));
+            input.keys(KeyEvent.VK_CONTROL, KeyEvent.VK_Q);
             Component button = null;
             long until = System.nanoTime() + 20_000_000_000L;
             while (button == null && System.nanoTime() < until) {
@@ -117,7 +114,12 @@ public final class KeyBindingsDriver {
             Component b = button;
             GuiE2EDriver.shot(robot, w, java.nio.file.Path.of(args.length > 0 ? args[0] : "target").resolve("keys-save-prompt.png"));
             SwingUtilities.invokeLater(() -> ((javax.swing.AbstractButton) b).doClick());
-            Thread.sleep(500);
+            // The prompt answered: its dialog gone, and with Discard the window too.
+            long answered = System.nanoTime() + 20_000_000_000L;
+            while (System.nanoTime() < answered && onEdt(() -> b.isShowing() || answer.equals("Discard") && w.frame().isDisplayable())) {
+                Thread.sleep(20);
+            }
+            input.settle();
             boolean open = onEdt(() -> w.frame().isDisplayable());
             if (answer.equals("Cancel") && !open) {
                 fail("Cancel in the save prompt closed the window");

@@ -4,7 +4,6 @@ import java.awt.Color;
 import java.awt.Point;
 import java.awt.Rectangle;
 import java.awt.Robot;
-import java.awt.event.InputEvent;
 import java.awt.image.BufferedImage;
 import java.io.BufferedReader;
 import java.nio.file.Files;
@@ -51,7 +50,8 @@ public final class ReplayWindowDriver {
         MainWindow w = GuiLauncher.lastLaunched().get(20, TimeUnit.SECONDS);
         Robot robot = new Robot();
         robot.setAutoDelay(15);
-        robot.waitForIdle();
+        RobotInput input = new RobotInput(robot);
+        input.settle();
         // An edit not saved yet: opening a recording keeps it (a Discard asked for here once lost it, see the end).
         SwingUtilities.invokeAndWait(() -> w.model().apply(org.kheperasim.sim.edit.ArenaEdits.addCap(w.model().arena(), 300, 900)));
         org.kheperasim.sim.arena.Arena edited = onEdt(() -> w.model().arena());
@@ -75,8 +75,7 @@ public final class ReplayWindowDriver {
         System.out.printf(Locale.ROOT, "FIGURE opening the one-hour recording took %.0f ms (read, parse, show)%n",
                 (System.nanoTime() - open0) / 1e6);
         check(onEdt(() -> w.player().open()), "the recording did not open:\n" + w.consoleText());
-        Thread.sleep(500);
-        robot.waitForIdle();
+        input.settle();
 
         // Scrub: drag the timeline's thumb from the start to the middle with the mouse.
         JSlider timeline = (JSlider) KeyBindingsDriverSupport.find(w.frame(), "replay.timeline");
@@ -98,16 +97,14 @@ public final class ReplayWindowDriver {
             }
             return new Point[] {new Point(o.x + x0, y), new Point(o.x + xm, y)};
         });
-        robot.mouseMove(ends[0].x, ends[0].y);
-        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
-        robot.waitForIdle();
+        input.move(ends[0]);
+        input.press();
         System.out.println("timeline " + onEdt(() -> timeline.getBounds() + " on screen at " + timeline.getLocationOnScreen()
                 + " ui " + timeline.getUI().getClass().getName()) + "; press at " + ends[0] + ", value " + onEdt(timeline::getValue)
                 + ", adjusting " + onEdt(timeline::getValueIsAdjusting) + "; drag to " + ends[1]);
         for (int k = 1; k <= 10; k++) {
-            robot.mouseMove(ends[0].x + (ends[1].x - ends[0].x) * k / 10, ends[0].y);
+            input.move(new Point(ends[0].x + (ends[1].x - ends[0].x) * k / 10, ends[0].y));
         }
-        robot.waitForIdle();
         // As a person scrubs: look where the thumb went and move on until it shows the middle.
         int x = ends[1].x;
         int width = onEdt(timeline::getWidth);
@@ -118,13 +115,12 @@ public final class ReplayWindowDriver {
             }
             int dx = (int) StrictMath.round((ReplayBar.TICKS / 2.0 - v) * width / ReplayBar.TICKS);
             x += dx == 0 ? Integer.signum(ReplayBar.TICKS / 2 - v) : dx;
-            robot.mouseMove(x, ends[0].y);
-            robot.waitForIdle();
+            input.move(new Point(x, ends[0].y));
         }
         System.out.println("thumb released at value " + onEdt(timeline::getValue) + " of " + ReplayBar.TICKS);
-        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        robot.waitForIdle();
-        Thread.sleep(300);
+        input.release();
+        waitUntil("the cursor follows the timeline's thumb", () -> StrictMath.abs(w.player().cursor()
+                - timeline.getValue() * SECONDS / ReplayBar.TICKS) < SECONDS / ReplayBar.TICKS);
         double middle = onEdt(() -> w.player().cursor());
         double bySlider = onEdt(timeline::getValue) * SECONDS / ReplayBar.TICKS;
         check(StrictMath.abs(middle - bySlider) < SECONDS / ReplayBar.TICKS, "the cursor " + middle
@@ -135,28 +131,27 @@ public final class ReplayWindowDriver {
         System.out.printf(Locale.ROOT, "scrubbed to %.2f s%n", middle);
 
         // Play at x1 for a while: time moves on, the frame rate is measured.
-        click(robot, (JButton) KeyBindingsDriverSupport.find(w.frame(), "replay.play"));
-        Thread.sleep(2500);
+        click(input, (JButton) KeyBindingsDriverSupport.find(w.frame(), "replay.play"));
+        Thread.sleep(2000);
         double fps1 = onEdt(w::fps);
         double played = onEdt(() -> w.player().cursor());
         check(onEdt(() -> w.player().playing()), "Play should play");
-        check(played > middle + 1 && played < middle + 60, "after 2.5 s at x1 the cursor should be about 2.5 s on: "
+        check(played > middle + 1 && played < middle + 60, "after 2 s at x1 the cursor should be about 2 s on: "
                 + middle + " -> " + played);
         GuiE2EDriver.shot(robot, w, out.resolve("replay-2-playing.png"));
         SwingUtilities.invokeAndWait(() -> ((JComboBox<?>) KeyBindingsDriverSupport.find(w.frame(), "replay.speed"))
                 .setSelectedIndex(ReplayPlayer.SPEEDS.length - 1));
-        Thread.sleep(2500);
+        Thread.sleep(1500);
         double fpsFast = onEdt(w::fps);
         double fast = onEdt(() -> w.player().cursor());
         check(fast > played + 30, "at x64 the cursor should race: " + played + " -> " + fast);
         System.out.printf(Locale.ROOT, "FIGURE replay frame rate: %.0f fps at x1, %.0f fps at x64%n", fps1, fpsFast);
 
         // Rewind: back to the start, the robot at its first sample.
-        click(robot, (JButton) KeyBindingsDriverSupport.find(w.frame(), "replay.play"));
+        click(input, (JButton) KeyBindingsDriverSupport.find(w.frame(), "replay.play"));
         check(!onEdt(() -> w.player().playing()), "the second press of Play pauses");
-        click(robot, (JButton) KeyBindingsDriverSupport.find(w.frame(), "replay.rewind"));
-        robot.waitForIdle();
-        Thread.sleep(300);
+        click(input, (JButton) KeyBindingsDriverSupport.find(w.frame(), "replay.rewind"));
+        waitUntil("Rewind takes the cursor to the start", () -> w.player().cursor() == 0);
         double rewound = onEdt(() -> w.player().cursor());
         check(rewound == 0, "Pause, then Rewind, should leave the cursor at the start: " + rewound);
         checkDrawnRobot(robot, w, rec.resolve("run.trace"), out.resolve("replay-3-rewound.png"));
@@ -177,12 +172,11 @@ public final class ReplayWindowDriver {
         check(onEdt(() -> w.model().arena()).equals(edited), "Close replay brings back the edited arena");
         check(onEdt(() -> w.model().dirty()), "the edit is still marked unsaved after Close replay");
         check(onEdt(() -> w.frame().getTitle()).contains(" *"), "the title marks it unsaved: " + onEdt(() -> w.frame().getTitle()));
-        KeyBindingsDriverSupport.clickCorner(robot, w.arenaComponent());
-        robot.keyPress(java.awt.event.KeyEvent.VK_CONTROL);
-        robot.keyPress(java.awt.event.KeyEvent.VK_Q);
-        robot.keyRelease(java.awt.event.KeyEvent.VK_Q);
-        robot.keyRelease(java.awt.event.KeyEvent.VK_CONTROL);
-        robot.waitForIdle();
+        input.click(onEdt(() -> {
+            Point o = w.arenaComponent().getLocationOnScreen();
+            return new Point(o.x + 8, o.y + 8);
+        }));
+        input.keys(java.awt.event.KeyEvent.VK_CONTROL, java.awt.event.KeyEvent.VK_Q);
         java.awt.Component cancel = null;
         long until = System.nanoTime() + 20_000_000_000L;
         while (cancel == null && System.nanoTime() < until && onEdt(() -> w.frame().isDisplayable())) {
@@ -233,6 +227,9 @@ public final class ReplayWindowDriver {
         double y = Double.parseDouble(line[3]);
         check(StrictMath.abs(shown.x() - x) < 1e-3 && StrictMath.abs(shown.y() - y) < 1e-3, "at " + cursor
                 + " s the trace has the robot at (" + x + ", " + y + "), the view at (" + shown.x() + ", " + shown.y() + ")");
+        // Two frames painted since: the screen shows this moment.
+        long frames = onEdt(() -> ((ArenaView) w.arenaComponent()).frames());
+        waitUntil("the view paints", () -> ((ArenaView) w.arenaComponent()).frames() >= frames + 2);
         GuiE2EDriver.shot(robot, w, shot);
         Point p = onEdt(() -> {
             Point o = w.arenaComponent().getLocationOnScreen();
@@ -275,16 +272,21 @@ public final class ReplayWindowDriver {
         return best;
     }
 
-    private static void click(Robot robot, JButton b) throws Exception {
+    private static void click(RobotInput input, JButton b) throws Exception {
         check(b != null, "a replay button is missing");
-        Point p = onEdt(() -> {
+        input.click(onEdt(() -> {
             Point o = b.getLocationOnScreen();
             return new Point(o.x + b.getWidth() / 2, o.y + b.getHeight() / 2);
-        });
-        robot.mouseMove(p.x, p.y);
-        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
-        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        robot.waitForIdle();
+        }));
+    }
+
+    /** Waits, asking on the event thread, until {@code done}; the check fails after 30 s. */
+    private static void waitUntil(String what, java.util.function.BooleanSupplier done) throws Exception {
+        long until = System.nanoTime() + 30_000_000_000L;
+        while (!onEdt(done::getAsBoolean) && System.nanoTime() < until) {
+            Thread.sleep(10);
+        }
+        check(onEdt(done::getAsBoolean), what + ": not within 30 s");
     }
 
     private static <T> T onEdt(java.util.function.Supplier<T> s) throws Exception {

@@ -21,7 +21,7 @@ class RunStatusTest {
     @Timeout(value = 240, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void theWindowScoresEndsAndReportsARunAsRunDoes() throws Exception {
         // A first launch: no preferences yet (the JDK logged a line about creating their folder).
-        Path prefs = Path.of("target", "e2e-home", ".java");
+        Path prefs = GuiEndToEndTest.home(RunStatusDriver.class.getName()).resolve(".java");
         if (Files.exists(prefs)) {
             try (var files = Files.walk(prefs)) {
                 files.sorted(java.util.Comparator.reverseOrder()).forEach(f -> f.toFile().delete());

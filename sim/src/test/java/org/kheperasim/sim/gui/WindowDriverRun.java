@@ -30,9 +30,9 @@ final class WindowDriverRun {
         Path xvfb = GuiEndToEndTest.xvfb();
         if (xvfb == null) {
             if ("true".equals(System.getenv("CI"))) {
-                fail("Xvfb is not installed, and CI=true requires the window tests to run: apt-get install xvfb xauth");
+                fail("Xvfb is not installed, and CI=true requires " + what + " to run: apt-get install -y xvfb xauth");
             }
-            Assumptions.assumeTrue(false, "Xvfb is not installed; " + what + " needs it");
+            Assumptions.assumeTrue(false, "Xvfb is not installed (apt-get install -y xvfb xauth): the window tests need it");
         }
         return xvfb;
     }

@@ -107,9 +107,13 @@ class HostileControllerTest {
     }
 
     private static Outcome run(String controller, double seconds) {
+        return run(controller, seconds, org.kheperasim.sim.host.HostOptions.defaults());
+    }
+
+    private static Outcome run(String controller, double seconds, org.kheperasim.sim.host.HostOptions options) {
         List<String> console = new ArrayList<>();
         RunResult r = Simulation.builder().arena("lab").classpath(List.of(classes)).controller(controller).seed(1)
-                .seconds(seconds).console((ConsoleLine line) -> {
+                .seconds(seconds).hostOptions(options).console((ConsoleLine line) -> {
                     synchronized (console) {
                         console.add(line.text());
                     }
@@ -201,7 +205,8 @@ class HostileControllerTest {
     @Test
     void threadsAControllerStartsEndWithTheRunAndCatchAllLoopsStop() throws InterruptedException {
         java.util.Set<Thread> before = Thread.getAllStackTraces().keySet();
-        Outcome spinner = run("Spinner", 5);
+        // A hang is declared after a timeout of real time: 1 s, not the default 5 s, for the one expected to hang.
+        Outcome spinner = run("Spinner", 5, SPINNER_HANG);
         Outcome swallower = run("Swallower", 5);
         assertEquals(ControllerStatus.STOPPED, swallower.result.first().status(), swallower.text());
         assertFalse(swallower.text().contains("left behind"), swallower.text());
@@ -214,10 +219,15 @@ class HostileControllerTest {
 
     /**
      * Daemon threads that live as long as the JVM once started, whichever test starts them first: the
-     * simulator's watchdog of constructions and steps, JNA's cleaner, the JDK's process reaper.
+     * simulator's watchdog of constructions and steps, JNA's cleaner, the JDK's process reaper, and
+     * (virtual controller threads, Java 21+) the JDK's unblocker of timed virtual-thread waits.
      */
+    /** The Spinner hangs by design: it is declared hung after 1 s of real time, not the default 5 s. */
+    private static final org.kheperasim.sim.host.HostOptions SPINNER_HANG = org.kheperasim.sim.host.HostOptions.defaults()
+            .withHangTimeout(TimeUnit.SECONDS.toNanos(1));
+
     private static final java.util.Set<String> SERVICE_THREADS = java.util.Set.of("khepera-step-watchdog", "JNA Cleaner",
-            "process reaper");
+            "process reaper", "VirtualThread-unblocker");
 
     /** Every thread started since {@code before} has ended, but the JVM's service threads (generous: threads take a moment to end). */
     private static void assertThreadsBackTo(java.util.Set<Thread> before, String when) throws InterruptedException {
@@ -250,7 +260,7 @@ class HostileControllerTest {
                         synchronized (console) {
                             console.add(line.text());
                         }
-                    }, org.kheperasim.sim.host.HostOptions.defaults());
+                    }, c[0].equals("Spinner") ? SPINNER_HANG : org.kheperasim.sim.host.HostOptions.defaults());
             PacedRunner runner = new PacedRunner(s, null);
             runner.setSpeed(PacedRunner.MAX_SPEED);
             runner.pauseAt(3_000_000_000L);
@@ -312,7 +322,9 @@ class HostileControllerTest {
         // the collector's timing, and either way the run must still print its result line.
         String[] hogCase = {"Hog", "allocated without bound"};
         for (String[] c : new String[][] {{"Exiter", "System.exit"}, hogCase, hogCase, hogCase}) {
+            // The quick compiler only: the JVM lives a second or two (see gui/GuiEndToEndTest.childJvm).
             Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx64m",
+                    "-XX:TieredStopAtLevel=1",
                     "-cp", System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main", "run", "--arena", "lab",
                     "--classpath", classes.toString(), "--controller", c[0], "--seconds", "60")
                     .redirectErrorStream(true).start();

@@ -36,30 +36,33 @@ import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
 
 /**
- * The end-to-end twin: the paper's wall follower in the maze, (a) run by the simulator directly
+ * The end-to-end twin: the paper's wall follower in {@code maze-hard}, (a) run by the simulator directly
  * (lockstep, deterministic) and (b) run by robot-link, unchanged, through the protocol server's pseudo-terminal
  * to the simulator's protocol server, in real time. For its first {@link #SERVED_S} simulated
  * seconds, (b) follows (a): the same corridors in the same order, and the same path within a few
- * millimetres over the first minute. (That (a) goes on to cover the whole maze is
- * AppendixControllerTest's; the point here is the wire, and more of it would only cost wall time.)
+ * millimetres over the first minute. (That the wall follower covers a whole maze is
+ * AppendixControllerTest's; the point here is the wire, and more of it would only cost wall time.
+ * In {@code maze-hard} it turns from corridor to corridor every 15 s or so, seven of them in two
+ * minutes, where in {@code maze} it spends 170 s in one dead end: the same test in half the time.)
  *
  * <p>The served robot runs at {@link #SPEED}× real time (simulated seconds per wall second; the
- * server divides its reply pacing by the same factor), so its 300 simulated seconds take 30 wall
+ * server divides its reply pacing by the same factor), so its 140 simulated seconds take 14 wall
  * seconds. The controller's own {@code Thread.sleep(100)} stays 100 ms of wall time, i.e. 1 s of
  * the served robot's time: one reason the two runs drift apart (see the report it prints, and
  * docs/protocol-server.md).
  *
- * <p>Tagged {@code twin}, not {@code timing}: robot-link's controller sleeps on the wall clock, and
- * at 10x a sleep that overshoots under heavy load is a second of the served robot's time, so with
- * every core saturated the served run can differ (it passed once and failed once under CI's two
- * busy loops). The served robot follows a starved poll loop ({@link ServedRobot#followClient}),
- * which keeps it right on a moderately busy machine; the plain build runs it.
+ * <p>Tagged {@code timing}: its point is real time over a wire, and {@code .ci/run} runs it again
+ * with both cores kept busy. It asserts what holds there, over many samples: robot-link's controller
+ * sleeps on the wall clock, and at 10x a sleep that overshoots under load is a second of the served
+ * robot's time, so a starved served robot may graze a corridor's corner that (a) passed by (allowed:
+ * two such); it still enters (a)'s corridors in (a)'s order and keeps to its path. The served robot
+ * follows a starved poll loop ({@link ServedRobot#followClient}).
  */
-@Tag("twin")
+@Tag("timing")
 class TwinTest {
     static final double SPEED = Double.parseDouble(System.getProperty("twin.speed", "10"));
     /** Simulated seconds each run is compared over, from its start. */
-    static final double SERVED_S = 300;
+    static final double SERVED_S = 140;
     /** Corridors (a) entered this close to the end may be entered by (b) just after it: not required. */
     static final double MARGIN_S = 20;
     static final long SAMPLE_NANOS = 100 * Engine.TICK_NANOS;
@@ -74,7 +77,7 @@ class TwinTest {
     @Test
     @Timeout(value = 300, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
     void theWallFollowerCoversTheMazeDirectlyAndThroughTheProtocolServer() throws Exception {
-        Arena maze = ArenaFormat.loadBundled("maze");
+        Arena maze = ArenaFormat.loadBundled("maze-hard");
         Settings settings = Settings.defaults();
         List<String> corridors = maze.regions().stream().map(Region::name).collect(Collectors.toList());
 
@@ -130,7 +133,9 @@ class TwinTest {
                 }, "twin-watch");
                 watch.setDaemon(true);
                 watch.start();
-                result = run.run((long) (SERVED_S / SPEED * 1000) + 10_000);
+                // A wall-clock budget only against a hang: the watch stops the run at SERVED_S of robot time, which
+                // a starved client holds back (followClient), so a busy machine may need three times the plain figure.
+                result = run.run((long) (SERVED_S / SPEED * 1000) * 3 + 10_000);
                 watch.interrupt();
             }
             simEnd = robot.timeNanos() / 1e9;
@@ -163,13 +168,36 @@ class TwinTest {
         List<String> wantA = orderBefore(enteredA, 0, SERVED_S - MARGIN_S);
         List<String> gotB = orderBefore(enteredB, simStart, SERVED_S);
         assertTrue(wantA.size() >= 6, "(a) enters several corridors in " + SERVED_S + " s: " + wantA);
-        assertTrue(gotB.size() >= wantA.size() && gotB.subList(0, wantA.size()).equals(wantA),
-                "(b) through robot-link and the protocol server enters the corridors (a) does, in its order: (a) " + wantA
-                        + ", (b) " + gotB);
+        // (a)'s corridors, in (a)'s order, with at most two more on the way: on a busy machine the served
+        // robot, whose controller sleeps on the wall clock, may graze a corridor's corner that (a) passed by.
+        int extra = extraBefore(wantA, gotB);
+        assertTrue(extra >= 0 && extra <= 2,
+                "(b) through robot-link and the protocol server enters the corridors (a) does, in its order, at most two"
+                        + " others on the way: (a) " + wantA + ", (b) " + gotB);
         assertTrue(first[0] < 25, "(b) follows (a)'s path over the first " + COMPARE_S + " s: mean distance " + first[0]
                 + " mm");
         assertTrue(result.stopAcknowledged(), "robot-link's D,0,0 was acknowledged");
         assertTrue(n > COMPARE_S * 5, "enough samples to compare: " + n);
+    }
+
+    /**
+     * @return how many corridors {@code got} has that {@code want} has not, up to {@code want}'s last, when
+     *     {@code want} is in {@code got} in its order; else -1
+     */
+    static int extraBefore(List<String> want, List<String> got) {
+        int i = 0;
+        int extra = 0;
+        for (String g : got) {
+            if (i == want.size()) {
+                break;
+            }
+            if (g.equals(want.get(i))) {
+                i++;
+            } else {
+                extra++;
+            }
+        }
+        return i == want.size() ? extra : -1;
     }
 
     /** @return mean and max distance, mm, and the number of samples compared, over {@code span} s after each run's start */

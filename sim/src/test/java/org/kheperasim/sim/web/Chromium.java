@@ -52,9 +52,9 @@ final class Chromium {
         Path exe = find();
         if (exe == null) {
             if ("true".equals(System.getenv("CI"))) {
-                fail("Chromium is not installed, and CI=true requires the web page tests to run: apt-get install -y chromium");
+                fail("Chromium is not installed, and CI=true requires " + what + " to run: apt-get install -y chromium");
             }
-            Assumptions.assumeTrue(false, "Chromium is not installed (apt-get install -y chromium); " + what + " needs it");
+            Assumptions.assumeTrue(false, "Chromium is not installed (apt-get install -y chromium): the web page tests need it");
         }
         return new Chromium(exe, scratch);
     }

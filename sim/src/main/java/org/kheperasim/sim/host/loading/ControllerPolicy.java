@@ -141,9 +141,28 @@ final class ControllerPolicy {
     }
 
     /** A class the controller's loader defines, or one found nowhere (its use fails on its own when it runs). */
+    /**
+     * The controller's own classes, and a class found nowhere outside the Java platform's packages
+     * (a class of its own it left out: using it fails on its own). A platform class this JVM lacks
+     * (one a newer JDK removed, such as {@code javax.management.loading.MLet}) is judged by the
+     * allowlist like any other, so that a controller is refused alike on every JDK.
+     */
     private boolean isOwn(String internalName) {
-        return hierarchy.isLocal(internalName) || !hierarchy.exists(internalName) && !internalName.contains(".");
+        return hierarchy.isLocal(internalName) || !hierarchy.exists(internalName) && !isPlatform(internalName);
     }
+
+    private static boolean isPlatform(String internalName) {
+        for (String p : PLATFORM_PACKAGES) {
+            if (internalName.startsWith(p)) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** The packages of the Java SE and JDK modules (internal names). */
+    private static final List<String> PLATFORM_PACKAGES = List.of("java/", "javax/", "jdk/", "sun/", "com/sun/",
+            "org/w3c/", "org/xml/", "org/ietf/", "netscape/");
 
     private String why(String binary, String member, List<String> parameters) {
         String reason = list.refusalReason(binary, member, parameters, isSubclass);

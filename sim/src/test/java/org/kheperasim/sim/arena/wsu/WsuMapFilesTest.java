@@ -40,7 +40,8 @@ class WsuMapFilesTest {
                 fail("the real WSU world files are not at " + folder.toAbsolutePath() + ", and CI=true requires"
                         + " these tests to run: check out shared/ beside the repository");
             }
-            Assumptions.assumeTrue(false, "no real WSU world files at " + folder.toAbsolutePath());
+            Assumptions.assumeTrue(false, "no real WSU world files at " + folder.toAbsolutePath()
+                    + " (the folder shared/wsu-maps/ beside the repository; CI has it)");
         }
         return folder;
     }
