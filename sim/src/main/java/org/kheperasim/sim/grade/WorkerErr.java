@@ -90,10 +90,12 @@ final class WorkerErr {
      * @return the run's standard error: its last {@link #KEEP} bytes as UTF-8 text
      */
     String runText(long waitMillis, boolean withStart) {
-        try {
-            thread.join(waitMillis);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+        if (waitMillis > 0) { // join(0) would wait for ever, and a worker that goes on never ends its stream
+            try {
+                thread.join(waitMillis);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
         }
         synchronized (this) {
             if (withStart && !inRun && done == null) {
