@@ -181,8 +181,9 @@ public final class Grader {
                         finisher.finish(job, null);
                     }
                 }
-                WorkerSlots.makeAll(todo.stream().filter(j -> subs.get(j.student()).runnable()).toList(), subs, arenas, limits,
-                        o.jobs(), o.workerRuns(), work.resolve("runs"), sockets, running, finisher);
+                WorkerSlots.Summary made = WorkerSlots.makeAll(todo.stream().filter(j -> subs.get(j.student()).runnable()).toList(),
+                        subs, arenas, limits, o.jobs(), o.workerRuns(), work.resolve("runs"), sockets, running, finisher);
+                o.progress().println(made.line());
             }
         } catch (IOException e) {
             throw new java.io.UncheckedIOException("a run could not be made: " + e.getMessage(), e);

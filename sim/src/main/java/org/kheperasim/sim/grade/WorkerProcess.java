@@ -97,6 +97,8 @@ final class WorkerProcess implements AutoCloseable {
         }
         Path scratch = Files.createDirectories(folder.resolve("scratch"));
         List<String> java = new ArrayList<>(ChildRun.jvmOptions(lim));
+        // For the worker's own code only (grade.worker.ThreadNumbering): controllers cannot reflect, the allowlist refuses it.
+        java.add(0, "--add-opens=java.base/java.lang=ALL-UNNAMED");
         if (!lim.sandbox()) {
             java.add("-Djava.io.tmpdir=" + scratch.toAbsolutePath());
         }

@@ -39,6 +39,23 @@ final class WorkerSlots {
     private final Map<String, Deque<GradePlan.Job>> pending = new LinkedHashMap<>();
     private final Map<String, Integer> workersOn = new HashMap<>();
     private final AtomicInteger folders = new AtomicInteger();
+    private final AtomicInteger replaced = new AtomicInteger();
+
+    /**
+     * How the runs were made, for the grader's progress (never the report: it depends on the machine).
+     *
+     * @param runs     runs made
+     * @param workers  worker JVMs started
+     * @param replaced workers that could not take their submission's next run (a run ended, or was found to
+     *                 have left something behind) and were replaced
+     */
+    record Summary(int runs, int workers, int replaced) {
+        /** @return one line for the progress stream */
+        String line() {
+            return String.format(java.util.Locale.ROOT, "made %d runs on %d worker JVMs (%d replaced after a run that ended"
+                    + " its worker or left something behind)", runs, workers, replaced);
+        }
+    }
 
     private WorkerSlots(List<GradePlan.Job> todo) {
         for (GradePlan.Job j : todo) {
@@ -57,8 +74,9 @@ final class WorkerSlots {
      * @param sockets    a folder of the grader's own, for the workers' sockets and scratch folders
      * @param running    the processes going now (a signal to the grader kills them)
      * @param finisher   what is done with each run made
+     * @return how they were made
      */
-    static void makeAll(List<GradePlan.Job> todo, Map<String, Submission> subs, Map<String, Arena> arenas, ChildRun.Limits lim,
+    static Summary makeAll(List<GradePlan.Job> todo, Map<String, Submission> subs, Map<String, Arena> arenas, ChildRun.Limits lim,
             int jobs, int workerRuns, Path runs, Path sockets, Set<Process> running, Finisher finisher) {
         WorkerSlots slots = new WorkerSlots(todo);
         List<String> arenaNames = todo.stream().map(GradePlan.Job::arena).distinct().toList();
@@ -92,6 +110,7 @@ final class WorkerSlots {
         } finally {
             pool.shutdownNow();
         }
+        return new Summary(todo.size(), slots.folders.get(), slots.replaced.get());
     }
 
     /** Make a submission's runs (those this slot takes) on a worker, replaced as need be. */
@@ -103,6 +122,9 @@ final class WorkerSlots {
             GradePlan.Job job;
             while ((job = poll(student)) != null) {
                 if (w != null && (w.runs() >= workerRuns || !w.ready(READY_MILLIS))) {
+                    if (w.restartReason() != null) {
+                        replaced.incrementAndGet();
+                    }
                     w.close();
                     w = null;
                 }

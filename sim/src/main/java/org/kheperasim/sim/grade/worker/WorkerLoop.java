@@ -62,12 +62,17 @@ public final class WorkerLoop {
     private Set<Thread> ownThreads;
     private Set<Path> ownFiles;
     private long heapAfterWarmUp;
+    /** The JVM's numbering of unnamed threads, or null where it cannot be reset (then each run ends the worker). */
+    private final ThreadNumbering numbering = ThreadNumbering.at();
+    /** Where that numbering stands when a graded JVM starts its run. */
+    private final int firstThreadNumber;
 
     private WorkerLoop(Launcher launcher, Path scratch, String classpath) {
         this.launcher = launcher;
         this.err = System.err;
         this.scratch = scratch;
         this.classpath = classpath;
+        this.firstThreadNumber = numbering == null ? 0 : numbering.next();
     }
 
     /**
@@ -112,7 +117,8 @@ public final class WorkerLoop {
                 return;
             }
             WorkerRun run = make(req);
-            String why = run.restartReason() != null ? run.restartReason() : leftovers();
+            String why = run.restartReason() != null ? run.restartReason()
+                    : numbering == null ? "this JDK's numbering of unnamed threads cannot be put back" : leftovers();
             WorkerProtocol.Mark next = why == null ? new WorkerProtocol.Mark(WorkerProtocol.Kind.READY, req.token(), -1, 0, "")
                     : new WorkerProtocol.Mark(WorkerProtocol.Kind.RESTART, req.token(), -1, 0, why);
             err.println(next.line());
@@ -132,8 +138,11 @@ public final class WorkerLoop {
             err.flush();
             Runtime.getRuntime().halt(2);
         }
-        // A fresh JVM has shared no stateless controller class yet: neither does this run.
+        // A fresh JVM has shared no stateless controller class yet, nor numbered an unnamed thread of a run.
         SharedControllers.forget();
+        if (numbering != null) {
+            numbering.set(firstThreadNumber);
+        }
         int[] exit = {1};
         boolean[] returned = {false};
         err.println(new WorkerProtocol.Mark(WorkerProtocol.Kind.START, req.token(), req.index(), 0, "").line());
