@@ -1,8 +1,10 @@
 /**
  * Grading a class: every submission (one folder per student, {@code .java} or {@code .class}) is
- * compiled, then run in every arena with every seed, each run in a child JVM with a heap limit, a
- * simulated-time limit and a wall-clock limit, under the containment rules and inside the
- * operating-system sandbox ({@code sim.sandbox}); each run hands over its command log, which the
+ * compiled, then run in every arena with every seed, each submission's runs one after another on a warm
+ * worker JVM of its own ({@link org.kheperasim.sim.grade.WorkerSlots}, {@code grade.worker}; with
+ * {@code --worker-runs 1} each run in a child JVM of its own, {@link org.kheperasim.sim.grade.ChildRun}),
+ * each run with fresh class loaders, a heap limit, a simulated-time limit and a wall-clock limit, under
+ * the containment rules and inside the operating-system sandbox ({@code sim.sandbox}); each run hands over its command log, which the
  * grader replays and scores by the arena's assignment ({@link org.kheperasim.sim.task.Score}), the
  * run's own result only compared with it ({@link org.kheperasim.sim.grade.Verdict}); each finished run
  * goes to a journal ({@link org.kheperasim.sim.grade.Journal}), so a grading goes on where it stopped.
