@@ -19,8 +19,8 @@ import picocli.CommandLine.Parameters;
         subcommands = GradeCommand.Merge.class,
         description = {"Grade a class: compile every submission (one sub-folder per student, .java or .class), run it in"
                 + " every arena with seeds 1..N, each submission's runs one after another in a worker JVM of its own (each"
-                + " run with fresh class loaders and its own heap, simulated-time and wall-clock limit) under the containment"
-                + " rules, in an operating-system sandbox (bubblewrap), scored by the grader's own"
+                + " run with fresh class loaders, the same result as in a JVM of its own, a heap, simulated-time and"
+                + " wall-clock limit; --worker-runs 1: each run in a JVM of its own) under the containment rules, in an operating-system sandbox (bubblewrap), scored by the grader's own"
                 + " replay of the run's command log, and write a report (report.txt, results.csv, results.json, index.html"
                 + " with trajectory pictures) ranked per arena by the arenas' tasks. Started again on the same --out, it"
                 + " makes only the runs its journal lacks. See docs/grading.md.",
