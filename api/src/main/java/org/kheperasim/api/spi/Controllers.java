@@ -221,19 +221,29 @@ public final class Controllers {
                 + String.join("; ", broken) + ")"));
     }
 
-    private static Constructor<?> classicConstructor(Class<?> type) {
-        try {
-            Constructor<?> c = type.getDeclaredConstructor(CurrentRobotState.class, MessagePasser.class);
-            c.setAccessible(true);
-            return c;
-        } catch (NoSuchMethodException | RuntimeException e) {
-            return null;
+    /**
+     * A class's two kinds of controller constructor, {classic, no parameters} (null where it has none),
+     * looked up once per class: an evaluation constructs the same class thousands of times, and a
+     * lookup that finds nothing costs an exception.
+     */
+    private static final ClassValue<Constructor<?>[]> CONSTRUCTORS = new ClassValue<>() {
+        @Override
+        protected Constructor<?>[] computeValue(Class<?> type) {
+            return new Constructor<?>[] {accessible(type, CurrentRobotState.class, MessagePasser.class), accessible(type)};
         }
+    };
+
+    private static Constructor<?> classicConstructor(Class<?> type) {
+        return CONSTRUCTORS.get(type)[0];
     }
 
     private static Constructor<?> noArgConstructor(Class<?> type) {
+        return CONSTRUCTORS.get(type)[1];
+    }
+
+    private static Constructor<?> accessible(Class<?> type, Class<?>... parameters) {
         try {
-            Constructor<?> c = type.getDeclaredConstructor();
+            Constructor<?> c = type.getDeclaredConstructor(parameters);
             c.setAccessible(true);
             return c;
         } catch (NoSuchMethodException | RuntimeException e) {

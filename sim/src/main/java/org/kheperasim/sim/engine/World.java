@@ -40,10 +40,23 @@ public final class World {
                 }
             });
 
+    /**
+     * @param arena an arena
+     * @return true when a world of it is quick to build: its raster (grid, distance field) is kept from
+     *     an earlier run of the same walls, lights and caps
+     */
+    public static boolean quickToBuild(Arena arena) {
+        return RASTERS.containsKey(layout(arena));
+    }
+
+    private static Layout layout(Arena arena) {
+        return new Layout(arena.width(), arena.height(), arena.walls(), arena.lights(), arena.caps());
+    }
+
     /** @param arena the arena to build the world from */
     public World(Arena arena) {
         this.arena = arena;
-        Layout layout = new Layout(arena.width(), arena.height(), arena.walls(), arena.lights(), arena.caps());
+        Layout layout = layout(arena);
         Raster raster = RASTERS.get(layout);
         if (raster == null) {
             OccupancyGrid g = OccupancyGrid.of(arena);

@@ -35,9 +35,20 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
     private final ControllerLife life = new ControllerLife();
     private long wake;
     private long now;
-    /** {@link System#nanoTime()} when the step running now began, or {@link #NOT_STEPPING}; read by the watchdog. */
-    private volatile long stepStartedAt = NOT_STEPPING;
-    private static final long NOT_STEPPING = Long.MIN_VALUE;
+    /**
+     * The number of the step running now, or {@link #NOT_STEPPING}; read by the watchdog. A number, not
+     * the real time it began: reading the clock at each of a swarm's many thousand steps a second cost
+     * more than the step of a simple controller. The watchdog times a step itself, from when it first
+     * saw that number ({@link #seenStep}, {@link #seenSince}), so a hang is found within the hang timeout
+     * and one or two of its looks (100 ms each).
+     */
+    private volatile long stepRunning = NOT_STEPPING;
+    private static final long NOT_STEPPING = -1;
+    /** Steps begun. */
+    private long stepsBegun;
+    /** The watchdog's own: the step it saw running at its last look, and the real time it first saw it (ns). */
+    private long seenStep = NOT_STEPPING;
+    private long seenSince;
     /** The run's stop request, asked by the watchdog while a step runs long (null: none). */
     private volatile java.util.function.BooleanSupplier runStop;
     /** While the run is being stopped, how long a step may run before it is stopped, ns. */
@@ -115,7 +126,7 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
         now = StrictMath.max(now, wake);
         SimClock.Clock outer = SimClock.current();
         SimClock.bind(clock);
-        stepStartedAt = System.nanoTime();
+        stepRunning = stepsBegun++;
         // Watched from its first step to its end, not registered at every step.
         boolean first = life.on(ControllerLife.Event.START);
         if (first) {
@@ -129,9 +140,10 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
             }
             controller.stepOnce();
             wake = now + periodNanos;
-            // After every fourth step (a step makes few API calls, where a thread-style controller's are counted
-            // for this look): a few native reads, unless the heap is past its threshold.
-            String full = (++steps & 3) == 0 ? HeapWatch.pressed() : null;
+            // After every 16th step (a step makes few API calls, where a thread-style controller's are counted
+            // for this look): a few native reads, unless the heap is past its threshold. A step that allocates
+            // without bound between two looks is caught by the JVM's own threshold notification (HeapWatch).
+            String full = (++steps & 15) == 0 ? HeapWatch.pressed() : null;
             if (full != null) {
                 say(ConsoleLine.Kind.ERROR, "controller " + name + " allocated without bound (" + full + "); the"
                         + " controller was stopped and the robot's motors set to 0. Does it keep adding to a list or map"
@@ -152,7 +164,7 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
             say(ConsoleLine.Kind.ERROR, "threw " + e + " in " + part + "; the robot was stopped.\n" + ControllerFailures.studentTrace(e));
             end(ControllerStatus.FAILED);
         } finally {
-            stepStartedAt = NOT_STEPPING;
+            stepRunning = NOT_STEPPING;
             if (outer == null) {
                 SimClock.unbind();
             } else {
@@ -164,10 +176,17 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
     /** The watchdog's look: a step running for the hang timeout is stopped at its next loop checkpoint. */
     @Override
     public boolean overdue(long nowNanos) {
-        long started = stepStartedAt;
-        if (started == NOT_STEPPING || life.state().phase() != ControllerLife.Phase.RUNNING) {
+        long running = stepRunning;
+        if (running == NOT_STEPPING || life.state().phase() != ControllerLife.Phase.RUNNING) {
+            seenStep = NOT_STEPPING;
             return false;
         }
+        if (running != seenStep) {
+            seenStep = running;
+            seenSince = nowNanos;
+            return false;
+        }
+        long started = seenSince;
         java.util.function.BooleanSupplier stop = runStop;
         if (stop != null && nowNanos - started > STOP_PATIENCE_NANOS && stop.getAsBoolean()) {
             // The run is being stopped (a signal, the window's Stop) while a step loops: it ends at its next loop.
@@ -234,7 +253,7 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
 
     @Override
     public void enter() {
-        boolean stepping = stepStartedAt != NOT_STEPPING;
+        boolean stepping = stepRunning != NOT_STEPPING;
         if (!stepping && life.state().phase() == ControllerLife.Phase.NOT_STARTED) {
             return; // the constructor looking around: free, no time passes
         }

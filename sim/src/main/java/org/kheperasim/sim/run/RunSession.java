@@ -109,9 +109,12 @@ public final class RunSession implements AutoCloseable {
         this.settings = setups.get(0).settings();
         // The controllers' classes are read and rewritten on another core while the world (its
         // grid's distance field above all) is built: both take a few hundredths of a second at a
-        // cold start. Loading runs no code of theirs (their classes are not initialised).
+        // cold start. Loading runs no code of theirs (their classes are not initialised). When the
+        // arena's raster is kept from an earlier run (an evaluation's thousands of episodes), the
+        // world takes well under a millisecond, less than starting that thread: load here.
+        java.util.concurrent.Executor loader = World.quickToBuild(arena) ? Runnable::run : RunSession::onItsOwnThread;
         java.util.concurrent.CompletableFuture<List<Class<?>>> loading =
-                java.util.concurrent.CompletableFuture.supplyAsync(() -> load(catalog, this.setups), RunSession::onItsOwnThread);
+                java.util.concurrent.CompletableFuture.supplyAsync(() -> load(catalog, this.setups), loader);
         World world;
         try {
             world = new World(arena);

@@ -150,6 +150,37 @@ class RefusedAtLoadTest {
         assertEquals(before, System.getProperties(), "no system property changed");
     }
 
+    /**
+     * A class of the Java platform's packages that this JVM lacks (as Java 23 and later lack
+     * javax.management.loading.MLet) is refused by the allowlist like any other, not let through as
+     * a class of the controller's own that happens to be missing: the refusal is the same on every JDK.
+     */
+    @Test
+    void aPlatformClassThisJvmLacksIsRefusedAsOnAJdkThatHasIt() throws Exception {
+        Path src = Files.createDirectories(dir.resolve("gone-src"));
+        Path out = Files.createDirectories(dir.resolve("gone-classes"));
+        Path door = Files.createDirectories(src.resolve("javax/gone")).resolve("Door.java");
+        Files.writeString(door, "package javax.gone;\npublic class Door {\n    public static void open() {\n    }\n}\n");
+        Path bot = src.resolve("GoneBot.java");
+        Files.writeString(bot, """
+                import org.kheperasim.api.*;
+
+                public class GoneBot extends Controller {
+                    @Override
+                    protected void doWork() {
+                        javax.gone.Door.open();
+                        sleepMillis(100);
+                    }
+                }
+                """);
+        assertEquals(0, ToolProvider.getSystemJavaCompiler().run(null, null, null, "-cp", System.getProperty("java.class.path"),
+                "-d", out.toString(), "-g", "--release", "17", "-proc:none", "-nowarn", door.toString(), bot.toString()));
+        Files.delete(out.resolve("javax/gone/Door.class")); // at load, no such class exists anywhere
+        String message = assertThrows(ControllerException.class, () -> Simulation.builder().arena("lab")
+                .classpath(List.of(out)).controller("GoneBot").seed(1).seconds(1).run()).getMessage();
+        assertTrue(message.contains("GoneBot.java:6: uses javax.gone.Door.open(): "), message);
+    }
+
     /** From the command line: exit status 2 (a controller that cannot be used at all), one error line, nothing run. */
     @Test
     void theCommandLineRefusesItWithStatus2AndOneLine() throws Exception {

@@ -160,9 +160,9 @@ final class ControllerPolicy {
         return false;
     }
 
-    /** The packages of the Java SE and JDK modules (internal names). */
+    /** The packages of the Java SE and JDK modules, and JavaFX (internal names). */
     private static final List<String> PLATFORM_PACKAGES = List.of("java/", "javax/", "jdk/", "sun/", "com/sun/",
-            "org/w3c/", "org/xml/", "org/ietf/", "netscape/");
+            "org/w3c/", "org/xml/", "org/ietf/", "netscape/", "javafx/");
 
     private String why(String binary, String member, List<String> parameters) {
         String reason = list.refusalReason(binary, member, parameters, isSubclass);
