@@ -161,13 +161,24 @@ public final class Grader {
             throw new UncheckedIOException("cannot make " + work + ": " + e.getMessage(), e);
         }
         Set<Process> running = ConcurrentHashMap.newKeySet();
-        // A signal to the grader (SIGTERM, Ctrl-C): no run outlives it. What finished is in the journal.
-        Thread killRuns = new Thread(() -> running.forEach(ChildRun::kill), "grade-stop-runs");
+        // A signal to the grader (SIGTERM, Ctrl-C): no run outlives it. What finished is in the journal; a run the
+        // grader's own stop killed is no result of the student's and goes to no journal (a resumed grading makes it).
+        java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
+        Thread killRuns = new Thread(() -> {
+            stopping.set(true);
+            running.forEach(ChildRun::kill);
+        }, "grade-stop-runs");
         Runtime.getRuntime().addShutdownHook(killRuns);
         Progress progress = new Progress(o.progress(), total, o.terminal());
         progress.skip(alreadyDone);
         WorkerSlots.Finisher finisher = (job, outcome) -> {
+            if (stopping.get()) {
+                return;
+            }
             Made made = one(job, subs.get(job.student()), arenas.get(job.arena()), o, outcome);
+            if (stopping.get()) {
+                return;
+            }
             journal.add(job, new Journal.Entry(made.outcome().record(), made.outcome().wallSeconds(), made.pageSeconds()));
             progress.finished(job, made.outcome().record());
         };
