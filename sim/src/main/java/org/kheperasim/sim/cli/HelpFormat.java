@@ -19,6 +19,8 @@ import picocli.CommandLine.Model.UsageMessageSpec;
  * footer (verify's exit status differs from the others') keeps it, and only it.
  */
 final class HelpFormat {
+    /** Characters: more than any command's synopsis takes on one line. */
+    private static final int SYNOPSIS_ON_ONE_LINE = 4096;
     /** How far picocli indents a description's wrapped lines. */
     private static final int WRAPPED_INDENT = 2;
 
@@ -108,7 +110,9 @@ final class HelpFormat {
         UsageMessageSpec usage = h.commandSpec().usageMessage();
         int width = usage.width();
         String oneLine;
-        usage.width(Integer.MAX_VALUE / 2);
+        // Wide enough for any synopsis on one line; picocli lays a line out in a buffer of this width,
+        // so a near-infinite one (Integer.MAX_VALUE / 2) took seconds per help text.
+        usage.width(SYNOPSIS_ON_ONE_LINE);
         try {
             oneLine = h.synopsis(h.synopsisHeadingLength()).stripTrailing();
         } finally {
