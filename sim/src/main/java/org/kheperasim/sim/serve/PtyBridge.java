@@ -181,7 +181,10 @@ public final class PtyBridge implements AutoCloseable {
     /** The client closed the pty: its connection closes, and what either side left unread goes. */
     private void leave(byte[] buffer) {
         boolean had = connection != null;
-        drop();
+        // First stop the replies (nothing more is written to the pty), then empty the pty, and only then close the
+        // connection: the server sees the client go after its last replies are gone, so a client that comes once the
+        // server has seen the last one go never reads what was meant for it (a reply written just before it closed).
+        stopReplies();
         // Only while nobody has it open: a client that opened it meanwhile keeps its first bytes and its settings.
         while (pty.poll(0) == (PtyDevice.POLLIN | PtyDevice.POLLHUP) && pty.read(buffer) > 0) {
             // Bytes of a client that has gone: for nobody.
@@ -190,8 +193,29 @@ public final class PtyBridge implements AutoCloseable {
             pty.discardPending();
             pty.makeRaw();
         }
+        drop();
         if (had) {
             log.accept("the program on " + link + " closed it; the pty is ready for the next");
+        }
+    }
+
+    /** Stop relaying the server's replies, without closing the connection (the server does not see it go yet). */
+    private void stopReplies() {
+        Socket s = connection;
+        if (s != null) {
+            try {
+                s.shutdownInput(); // a read blocked on it ends
+            } catch (IOException ignored) {
+                // Closed already: the relay ends anyway.
+            }
+        }
+        Thread r = replies;
+        if (r != null) {
+            try {
+                r.join(2000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
         }
     }
 
