@@ -232,6 +232,11 @@ public final class Grader {
                 return null;
             }));
         }
+        awaitAll(pool, futures);
+    }
+
+    /** Wait for every job of {@code pool}, then shut it down; a job's failure is the grading's. */
+    static void awaitAll(ExecutorService pool, List<Future<?>> futures) {
         try {
             for (Future<?> f : futures) {
                 f.get();

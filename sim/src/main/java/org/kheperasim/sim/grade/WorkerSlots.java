@@ -11,7 +11,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
@@ -98,18 +97,7 @@ final class WorkerSlots {
                 return null;
             }));
         }
-        try {
-            for (Future<?> f : futures) {
-                f.get();
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("grading was interrupted", e);
-        } catch (ExecutionException e) {
-            throw new IllegalStateException("a run could not be made: " + e.getCause(), e.getCause());
-        } finally {
-            pool.shutdownNow();
-        }
+        Grader.awaitAll(pool, futures);
         return new Summary(todo.size(), slots.folders.get(), slots.replaced.get());
     }
 

@@ -221,6 +221,8 @@ public final class PtyBridge implements AutoCloseable {
 
     /** Close the connection and wait for its replies to stop, so none is written after. */
     private void drop() {
+        stopReplies();
+        replies = null;
         Socket s = connection;
         connection = null;
         if (s != null) {
@@ -228,15 +230,6 @@ public final class PtyBridge implements AutoCloseable {
                 s.close();
             } catch (IOException ignored) {
                 // Closing anyway.
-            }
-        }
-        Thread r = replies;
-        replies = null;
-        if (r != null) {
-            try {
-                r.join(2000);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
             }
         }
     }

@@ -116,16 +116,16 @@ class GradeCommandTest {
         String[] common = {"--submissions", subs.toString(), "--arenas", "maze", "lab", "--seeds", "2", "--seconds", "10",
             "--wall-limit", "90", "--heap-mb", "128"};
         Path whole = dir.resolve("whole");
-        grade(concat(common, "--jobs", "2", "--out", whole.toString()));
+        grade(ReportFolder.concat(common, "--jobs", "2", "--out", whole.toString()));
         Path s1 = dir.resolve("shard1");
         Path s2 = dir.resolve("shard2");
-        grade(concat(common, "--shard", "2/2", "--out", s2.toString()));
-        grade(concat(common, "--shard", "1/2", "--out", s1.toString()));
+        grade(ReportFolder.concat(common, "--shard", "2/2", "--out", s2.toString()));
+        grade(ReportFolder.concat(common, "--shard", "1/2", "--out", s1.toString()));
         Path merged = dir.resolve("merged");
         grade("merge", "--out", merged.toString(), s2.toString(), s1.toString());
 
-        List<String> files = reportFiles(whole);
-        assertEquals(files, reportFiles(merged));
+        List<String> files = ReportFolder.files(whole);
+        assertEquals(files, ReportFolder.files(merged));
         assertTrue(files.contains("img/alice__lab__s2.png") && files.contains("pages/alice__lab__s2.html"), files.toString());
         for (String f : files) {
             assertArrayEquals(Files.readAllBytes(whole.resolve(f)), Files.readAllBytes(merged.resolve(f)), f);
@@ -167,16 +167,6 @@ class GradeCommandTest {
         Files.delete(src.getParent());
     }
 
-    private static List<String> reportFiles(Path folder) throws IOException {
-        try (Stream<Path> s = Files.walk(folder)) {
-            return s.filter(Files::isRegularFile).map(p -> folder.relativize(p).toString().replace('\\', '/'))
-                    .filter(p -> !p.startsWith("work/") && !p.equals("timings.csv") && !p.equals("journal.jsonl")).sorted().toList();
-        }
-    }
-
-    private static String[] concat(String[] a, String... b) {
-        return Stream.concat(Stream.of(a), Stream.of(b)).toArray(String[]::new);
-    }
 
     /** Grades in the sandbox where there is one (CI has it), else without it: the statuses are the same either way. */
     private static String grade(String... args) {

@@ -59,8 +59,8 @@ class GradeResumeTest {
 
         List<String> lines = Files.readAllLines(resumed.resolve(Journal.FILE));
         assertEquals(1 + 12, lines.size(), "the journal holds each run once: " + lines);
-        List<String> files = reportFiles(whole);
-        assertEquals(files, reportFiles(resumed));
+        List<String> files = ReportFolder.files(whole);
+        assertEquals(files, ReportFolder.files(resumed));
         assertTrue(files.contains("img/dave__maze__s3.png"), files.toString());
         for (String f : files) {
             assertArrayEquals(Files.readAllBytes(whole.resolve(f)), Files.readAllBytes(resumed.resolve(f)), f);
@@ -199,10 +199,4 @@ class GradeResumeTest {
         return Files.exists(journal) ? (int) Files.readAllLines(journal).stream().filter(l -> l.startsWith("{\"index\"")).count() : 0;
     }
 
-    private static List<String> reportFiles(Path folder) throws IOException {
-        try (Stream<Path> s = Files.walk(folder)) {
-            return s.filter(Files::isRegularFile).map(p -> folder.relativize(p).toString().replace('\\', '/'))
-                    .filter(p -> !p.startsWith("work/") && !p.equals("timings.csv") && !p.equals(Journal.FILE)).sorted().toList();
-        }
-    }
 }

@@ -78,8 +78,8 @@ class SlurmGradeTest {
         Path whole = dir.resolve("whole");
         assertEquals(0, Main.commandLine().execute("grade", "--submissions", subs.toString(), "--arenas", arena.toString(),
                 "--seeds", "2", "--out", whole.toString(), "--jobs", "2"));
-        List<String> files = reportFiles(whole);
-        assertEquals(files, reportFiles(merged));
+        List<String> files = ReportFolder.files(whole);
+        assertEquals(files, ReportFolder.files(merged));
         assertEquals(8, ReportFiles.read(merged.resolve("results.json")).runs().size());
         for (String f : files) {
             assertArrayEquals(Files.readAllBytes(whole.resolve(f)), Files.readAllBytes(merged.resolve(f)), f);
@@ -104,10 +104,4 @@ class SlurmGradeTest {
         return sb.toString();
     }
 
-    private static List<String> reportFiles(Path folder) throws IOException {
-        try (Stream<Path> s = Files.walk(folder)) {
-            return s.filter(Files::isRegularFile).map(p -> folder.relativize(p).toString().replace('\\', '/'))
-                    .filter(p -> !p.startsWith("work/") && !p.equals("timings.csv") && !p.equals("journal.jsonl")).sorted().toList();
-        }
-    }
 }

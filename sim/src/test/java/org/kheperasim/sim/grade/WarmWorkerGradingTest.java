@@ -48,9 +48,9 @@ class WarmWorkerGradingTest {
         String[] common = {"--submissions", subs.toString(), "--arenas", "maze", "lab", "--seeds", "1", "--seconds", "20",
             "--jobs", "2", "--hang-timeout", "3", "--wall-limit", "120", "--heap-mb", "128"};
         Path warm = dir.resolve("warm");
-        String printed = grade(concat(common, "--out", warm.toString()));
+        String printed = grade(ReportFolder.concat(common, "--out", warm.toString()));
         Path one = dir.resolve("one");
-        grade(concat(common, "--out", one.toString(), "--worker-runs", "1"));
+        grade(ReportFolder.concat(common, "--out", one.toString(), "--worker-runs", "1"));
 
         Map<String, String> status = ReportFiles.readCsv(warm.resolve("results.csv")).stream().collect(Collectors.toMap(
                 RunRecord::student, r -> r.status().word(), (a, b) -> a.equals(b) ? a : a + "/" + b, TreeMap::new));
@@ -75,9 +75,9 @@ class WarmWorkerGradingTest {
         String[] common = {"--submissions", subs.toString(), "--arenas", "lab", "--seeds", "2", "--seconds", "20", "--jobs", "1",
             "--hang-timeout", "3", "--wall-limit", "120", "--heap-mb", "128"};
         Path warm = dir.resolve("warm");
-        String printed = grade(concat(common, "--out", warm.toString()));
+        String printed = grade(ReportFolder.concat(common, "--out", warm.toString()));
         Path one = dir.resolve("one");
-        grade(concat(common, "--out", one.toString(), "--worker-runs", "1"));
+        grade(ReportFolder.concat(common, "--out", one.toString(), "--worker-runs", "1"));
 
         sameReport(one, warm);
         Map<String, List<String>> status = ReportFiles.readCsv(warm.resolve("results.csv")).stream().collect(Collectors.groupingBy(
@@ -109,9 +109,9 @@ class WarmWorkerGradingTest {
         String[] common = {"--submissions", subs.toString(), "--arenas", near.toString(), "lab", "--seeds", "1", "--seconds",
             "20", "--jobs", "1", "--hang-timeout", "5", "--wall-limit", "15", "--heap-mb", "128"};
         Path warm = dir.resolve("warm");
-        String printed = grade(concat(common, "--out", warm.toString()));
+        String printed = grade(ReportFolder.concat(common, "--out", warm.toString()));
         Path one = dir.resolve("one");
-        grade(concat(common, "--out", one.toString(), "--worker-runs", "1"));
+        grade(ReportFolder.concat(common, "--out", one.toString(), "--worker-runs", "1"));
 
         List<RunRecord> runs = ReportFiles.readCsv(warm.resolve("results.csv"));
         assertEquals(RunStatus.HUNG, runs.get(0).status(), runs.toString());
@@ -129,8 +129,8 @@ class WarmWorkerGradingTest {
      * simulated seconds (and its page) may differ; its status, points and detail may not.
      */
     private static void sameReport(Path expected, Path actual) throws IOException {
-        List<String> files = reportFiles(expected);
-        assertEquals(files, reportFiles(actual));
+        List<String> files = ReportFolder.files(expected);
+        assertEquals(files, ReportFolder.files(actual));
         List<RunRecord> e = ReportFiles.readCsv(expected.resolve("results.csv"));
         List<RunRecord> a = ReportFiles.readCsv(actual.resolve("results.csv"));
         assertEquals(e.size(), a.size());
@@ -308,16 +308,6 @@ class WarmWorkerGradingTest {
         return subs;
     }
 
-    private static List<String> reportFiles(Path folder) throws IOException {
-        try (Stream<Path> s = Files.walk(folder)) {
-            return s.filter(Files::isRegularFile).map(p -> folder.relativize(p).toString().replace('\\', '/'))
-                    .filter(p -> !p.startsWith("work/") && !p.equals("timings.csv") && !p.equals("journal.jsonl")).sorted().toList();
-        }
-    }
-
-    private static String[] concat(String[] a, String... b) {
-        return Stream.concat(Stream.of(a), Stream.of(b)).toArray(String[]::new);
-    }
 
     /** Grades (in the sandbox where there is one) through the command line; returns what it printed, progress included. */
     private static String grade(String... args) {
