@@ -1,5 +1,7 @@
 package org.kheperasim.sim.gui;
 
+import static org.kheperasim.sim.gui.KeyBindingsDriverSupport.onEdtQuiet;
+
 import java.awt.Robot;
 import java.awt.event.KeyEvent;
 import java.nio.file.Files;
@@ -139,14 +141,6 @@ public final class FirstControllerLoopDriver {
 
     private static <T> T onEdt(Supplier<T> s) throws Exception {
         return KeyBindingsDriverSupport.onEdt(s);
-    }
-
-    private static <T> T onEdtQuiet(Supplier<T> s) {
-        try {
-            return onEdt(s);
-        } catch (Exception e) {
-            throw new IllegalStateException(e);
-        }
     }
 
     private static void check(boolean ok, String why) {

@@ -6,10 +6,14 @@ import java.awt.Point;
 import java.awt.Robot;
 import java.awt.event.InputEvent;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
 import javax.swing.SwingUtilities;
 
-/** What the window drivers share: finding components by name, clicking one, asking the event thread. */
+/**
+ * What the window drivers share: finding components by name, clicking one, asking the event thread,
+ * waiting for what the window shows, and failing the driver (its JVM) with the reason.
+ */
 final class KeyBindingsDriverSupport {
     private KeyBindingsDriverSupport() {
     }
@@ -46,5 +50,32 @@ final class KeyBindingsDriverSupport {
         AtomicReference<T> ref = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> ref.set(s.get()));
         return ref.get();
+    }
+
+    /** @return what the supplier gives, asked on the event thread; a failure there is unchecked */
+    static <T> T onEdtQuiet(Supplier<T> s) {
+        try {
+            return onEdt(s);
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    /** Wait up to 60 s of real time until {@code done}; else fail, saying {@code what}. */
+    static void waitFor(String what, BooleanSupplier done) throws InterruptedException {
+        long until = System.nanoTime() + 60_000_000_000L;
+        while (!done.getAsBoolean() && System.nanoTime() < until) {
+            Thread.sleep(20);
+        }
+        check(done.getAsBoolean(), what + ": not within 60 s");
+    }
+
+    /** Unless {@code ok}: print the reason and end the driver's JVM with status 1 (its test reads both). */
+    static void check(boolean ok, String why) {
+        if (!ok) {
+            System.out.println("FAIL: " + why);
+            System.out.flush();
+            System.exit(1);
+        }
     }
 }

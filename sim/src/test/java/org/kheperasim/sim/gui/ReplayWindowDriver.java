@@ -1,5 +1,7 @@
 package org.kheperasim.sim.gui;
 
+import static org.kheperasim.sim.gui.KeyBindingsDriverSupport.check;
+
 import java.awt.Color;
 import java.awt.Point;
 import java.awt.Rectangle;
@@ -295,11 +297,4 @@ public final class ReplayWindowDriver {
         return ref.get();
     }
 
-    private static void check(boolean ok, String why) {
-        if (!ok) {
-            System.out.println("FAIL: " + why);
-            System.out.flush();
-            System.exit(1);
-        }
-    }
 }

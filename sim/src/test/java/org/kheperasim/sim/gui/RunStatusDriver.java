@@ -1,5 +1,10 @@
 package org.kheperasim.sim.gui;
 
+import static org.kheperasim.sim.gui.KeyBindingsDriverSupport.check;
+import static org.kheperasim.sim.gui.KeyBindingsDriverSupport.onEdt;
+import static org.kheperasim.sim.gui.KeyBindingsDriverSupport.onEdtQuiet;
+import static org.kheperasim.sim.gui.KeyBindingsDriverSupport.waitFor;
+
 import java.awt.Component;
 import java.awt.Robot;
 import java.awt.Window;
@@ -9,7 +14,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
-import java.util.function.Supplier;
 import javax.swing.JDialog;
 import javax.swing.JFileChooser;
 import javax.swing.JList;
@@ -207,34 +211,6 @@ public final class RunStatusDriver {
         robot.waitForIdle();
         waitFor(what, done);
         System.out.println(what + ": ok");
-    }
-
-    private static void waitFor(String what, BooleanSupplier done) throws InterruptedException {
-        long until = System.nanoTime() + 60_000_000_000L;
-        while (!done.getAsBoolean() && System.nanoTime() < until) {
-            Thread.sleep(20);
-        }
-        check(done.getAsBoolean(), what + ": not within 60 s");
-    }
-
-    private static <T> T onEdt(Supplier<T> s) throws Exception {
-        return KeyBindingsDriverSupport.onEdt(s);
-    }
-
-    private static <T> T onEdtQuiet(Supplier<T> s) {
-        try {
-            return onEdt(s);
-        } catch (Exception e) {
-            throw new IllegalStateException(e);
-        }
-    }
-
-    private static void check(boolean ok, String why) {
-        if (!ok) {
-            System.out.println("FAIL: " + why);
-            System.out.flush();
-            System.exit(1);
-        }
     }
 
 }

@@ -1,13 +1,16 @@
 package org.kheperasim.sim.gui;
 
+import static org.kheperasim.sim.gui.KeyBindingsDriverSupport.check;
+import static org.kheperasim.sim.gui.KeyBindingsDriverSupport.onEdt;
+import static org.kheperasim.sim.gui.KeyBindingsDriverSupport.onEdtQuiet;
+import static org.kheperasim.sim.gui.KeyBindingsDriverSupport.waitFor;
+
 import java.awt.Component;
 import java.awt.Container;
 import java.awt.Window;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
-import java.util.function.BooleanSupplier;
-import java.util.function.Supplier;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import javax.swing.JDialog;
@@ -154,31 +157,4 @@ public final class WebExportDriver {
         return null;
     }
 
-    private static void waitFor(String what, BooleanSupplier done) throws InterruptedException {
-        long until = System.nanoTime() + 60_000_000_000L;
-        while (!done.getAsBoolean() && System.nanoTime() < until) {
-            Thread.sleep(20);
-        }
-        check(done.getAsBoolean(), what + ": not within 60 s");
-    }
-
-    private static <T> T onEdt(Supplier<T> s) throws Exception {
-        return KeyBindingsDriverSupport.onEdt(s);
-    }
-
-    private static <T> T onEdtQuiet(Supplier<T> s) {
-        try {
-            return onEdt(s);
-        } catch (Exception e) {
-            throw new IllegalStateException(e);
-        }
-    }
-
-    private static void check(boolean ok, String why) {
-        if (!ok) {
-            System.out.println("FAIL: " + why);
-            System.out.flush();
-            System.exit(1);
-        }
-    }
 }
