@@ -32,7 +32,7 @@ import org.kheperasim.sim.run.Simulation;
  */
 @Timeout(value = 900, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class ReplayExactnessTest {
-    private static final double SECONDS = 300;
+    private static final double SECONDS = 150;
     private static final long SAMPLE_MS = 20;
 
     static Stream<Arguments> bundled() {

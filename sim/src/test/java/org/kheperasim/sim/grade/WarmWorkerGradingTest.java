@@ -107,7 +107,7 @@ class WarmWorkerGradingTest {
                 "wall 0 4 1219.2 4 8", "wall 0 1215.2 1219.2 1215.2 8", "wall 4 0 4 1219.2 8", "wall 1215.2 0 1215.2 1219.2 8",
                 "region all 0 0 1219.2 1219.2", "time-limit 600", "task cover 50", ""));
         String[] common = {"--submissions", subs.toString(), "--arenas", near.toString(), "lab", "--seeds", "1", "--seconds",
-            "20", "--jobs", "1", "--hang-timeout", "5", "--wall-limit", "15", "--heap-mb", "128"};
+            "20", "--jobs", "1", "--hang-timeout", "5", "--wall-limit", "8", "--heap-mb", "128"};
         Path warm = dir.resolve("warm");
         String printed = grade(ReportFolder.concat(common, "--out", warm.toString()));
         Path one = dir.resolve("one");
@@ -115,7 +115,7 @@ class WarmWorkerGradingTest {
 
         List<RunRecord> runs = ReportFiles.readCsv(warm.resolve("results.csv"));
         assertEquals(RunStatus.HUNG, runs.get(0).status(), runs.toString());
-        assertEquals("no result within the wall-clock limit of 15 s; the run was killed", runs.get(0).detail());
+        assertEquals("no result within the wall-clock limit of 8 s; the run was killed", runs.get(0).detail());
         assertEquals(RunStatus.OK, runs.get(1).status(), runs.toString());
         assertEquals(20, runs.get(1).simulatedSeconds(), 1e-9);
         sameReport(one, warm);

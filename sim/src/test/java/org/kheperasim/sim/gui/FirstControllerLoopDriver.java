@@ -120,7 +120,7 @@ public final class FirstControllerLoopDriver {
     }
 
     private static void focusArena() throws Exception {
-        KeyBindingsDriverSupport.clickCorner(robot, w.arenaComponent());
+        KeyBindingsDriverSupport.clickCorner(new RobotInput(robot), w.arenaComponent());
     }
 
     private static int lineOf(String text, String what) {

@@ -36,7 +36,7 @@ public final class KeyBindingsDriver {
         Thread.sleep(500);
         for (String focus : new String[] {"arena", "consoleText"}) {
             Component target = focus.equals("arena") ? w.arenaComponent() : onEdt(() -> find(w.frame(), focus));
-            KeyBindingsDriverSupport.clickCorner(robot, target);
+            KeyBindingsDriverSupport.clickCorner(input, target);
             String owner = onEdt(() -> {
                 Component c = java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner();
                 return c == null ? "nothing" : c.getClass().getSimpleName() + "/" + c.getName();

@@ -3,8 +3,6 @@ package org.kheperasim.sim.gui;
 import java.awt.Component;
 import java.awt.Container;
 import java.awt.Point;
-import java.awt.Robot;
-import java.awt.event.InputEvent;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
@@ -33,16 +31,14 @@ final class KeyBindingsDriverSupport {
         return null;
     }
 
-    /** A click near the component's top-left corner, which puts the focus there. */
-    static void clickCorner(Robot robot, Component target) throws Exception {
+    /** A click near the top-left corner of what is shown of the component (scrolled or not), which puts the focus there. */
+    static void clickCorner(RobotInput input, Component target) throws Exception {
         Point p = onEdt(() -> {
             Point o = target.getLocationOnScreen();
-            return new Point(o.x + 8, o.y + 8);
+            java.awt.Rectangle shown = target instanceof javax.swing.JComponent j ? j.getVisibleRect() : new java.awt.Rectangle();
+            return new Point(o.x + shown.x + 8, o.y + shown.y + 8);
         });
-        robot.mouseMove(p.x, p.y);
-        robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
-        robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        robot.waitForIdle();
+        input.click(p);
     }
 
     /** @return what the supplier gives, asked on the event thread */

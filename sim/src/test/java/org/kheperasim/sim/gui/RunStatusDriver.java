@@ -39,6 +39,7 @@ import org.kheperasim.sim.task.Score;
 public final class RunStatusDriver {
     private static final long SEED = 7;
     private static Robot robot;
+    private static RobotInput input;
     private static MainWindow w;
 
     private RunStatusDriver() {
@@ -51,6 +52,7 @@ public final class RunStatusDriver {
         w = GuiLauncher.lastLaunched().get(20, TimeUnit.SECONDS);
         robot = new Robot();
         robot.setAutoDelay(20);
+        input = new RobotInput(robot);
         robot.waitForIdle();
         Arena lab = ArenaFormat.loadBundled("lab");
 
@@ -103,7 +105,7 @@ public final class RunStatusDriver {
         check(onEdt(() -> w.compileAndUse(src)), "Thrower compiles:\n" + onEdt(w::consoleText));
         check(onEdt(() -> w.status().message()).contains("Thrower loaded"), "loaded: " + onEdt(() -> w.status().message()));
         SwingUtilities.invokeAndWait(() -> {
-            w.chooseSpeed(0.25);
+            w.chooseSpeed(1);
             w.action("start").actionPerformed(null);
         });
         waitFor("the status bar says Thrower runs", () -> onEdtQuiet(() -> w.status().message()).startsWith("Running Thrower in lab"));
@@ -128,7 +130,11 @@ public final class RunStatusDriver {
         System.out.println("REFUSAL OK: " + reason);
 
         // The palette's letters with the focus in the console.
-        KeyBindingsDriverSupport.clickCorner(robot, onEdt(() -> KeyBindingsDriverSupport.find(w.frame(), "consoleText")));
+        KeyBindingsDriverSupport.clickCorner(input, onEdt(() -> KeyBindingsDriverSupport.find(w.frame(), "consoleText")));
+        waitFor("the click puts the focus in the console", () -> onEdtQuiet(() -> {
+            Component f = java.awt.KeyboardFocusManager.getCurrentKeyboardFocusManager().getFocusOwner();
+            return f != null && "consoleText".equals(f.getName());
+        }));
         press(KeyEvent.VK_W, "W chooses the wall tool", () -> onEdtQuiet(() -> w.status().message()).startsWith("Wall:"));
         press(KeyEvent.VK_C, "C chooses the cap tool", () -> onEdtQuiet(() -> w.status().message()).startsWith("Cap:"));
         press(KeyEvent.VK_S, "S chooses select", () -> onEdtQuiet(() -> w.status().message()).startsWith("Select:"));
@@ -143,7 +149,7 @@ public final class RunStatusDriver {
         });
         check(first.equals("Getting started: a first controller in 15 minutes | The window"), "the pages by title: " + first);
         GuiE2EDriver.shot(robot, w, out.resolve("status-3-help.png"));
-        robot.waitForIdle();
+        input.settle();
         press(KeyEvent.VK_ESCAPE, "Esc closes the manual", () -> helpDialog() == null);
         System.out.println("HELP OK: " + first);
 
@@ -205,10 +211,14 @@ public final class RunStatusDriver {
         return null;
     }
 
+    /**
+     * Press a key and wait until it took effect. Not through {@code robot.waitForIdle()}, which waited
+     * seconds for a quiet moment in an event queue the window's frame timer keeps busy, nor through
+     * {@link RobotInput#keys}: the palette's letters are taken before any component sees them.
+     */
     private static void press(int key, String what, BooleanSupplier done) throws Exception {
         robot.keyPress(key);
         robot.keyRelease(key);
-        robot.waitForIdle();
         waitFor(what, done);
         System.out.println(what + ": ok");
     }
