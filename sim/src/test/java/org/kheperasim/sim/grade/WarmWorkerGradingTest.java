@@ -72,7 +72,7 @@ class WarmWorkerGradingTest {
         counter(subs.resolve("cole"));
         keeper(subs.resolve("kim"));
         namer(subs.resolve("nora"));
-        String[] common = {"--submissions", subs.toString(), "--arenas", "lab", "--seeds", "2", "--seconds", "20", "--jobs", "1",
+        String[] common = {"--submissions", subs.toString(), "--arenas", "lab", "--seeds", "2", "--seconds", "20", "--jobs", "2",
             "--hang-timeout", "3", "--wall-limit", "120", "--heap-mb", "128"};
         Path warm = dir.resolve("warm");
         String printed = grade(ReportFolder.concat(common, "--out", warm.toString()));
