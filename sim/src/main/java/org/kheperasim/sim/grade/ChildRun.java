@@ -137,6 +137,7 @@ final class ChildRun {
     static List<String> jvmOptions(Limits lim) {
         // Native access for JNA (the controller threads' core, see host.CpuAffinity): Java 22+ warns without it.
         return List.of("--enable-native-access=ALL-UNNAMED", "-Xmx" + lim.heapMb() + "m", "-XX:+UseSerialGC",
+                "-XX:TieredStopAtLevel=1",
                 "-XX:ActiveProcessorCount=" + lim.processors(), "-Djava.awt.headless=true", "-cp",
                 System.getProperty("java.class.path"));
     }

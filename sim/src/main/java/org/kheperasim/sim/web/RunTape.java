@@ -1,8 +1,10 @@
 package org.kheperasim.sim.web;
 
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.engine.CapView;
 import org.kheperasim.sim.engine.GripperView;
@@ -206,11 +208,19 @@ final class RunTape {
         return (int) StrictMath.round(v * 10);
     }
 
-    private static ControllerStatus status(String word) {
-        try {
-            return ControllerStatus.valueOf(word.toUpperCase(Locale.ROOT));
-        } catch (IllegalArgumentException e) {
-            return null;   // "replay", "served" and the like: not a controller's state
+    /** Each state by its word in either case; {@code valueOf} threw for every other word, every sample. */
+    private static final Map<String, ControllerStatus> STATUS_WORDS = new HashMap<>();
+
+    static {
+        for (ControllerStatus s : ControllerStatus.values()) {
+            STATUS_WORDS.put(s.name(), s);
+            STATUS_WORDS.put(s.name().toLowerCase(Locale.ROOT), s);
         }
+    }
+
+    private static ControllerStatus status(String word) {
+        ControllerStatus s = STATUS_WORDS.get(word);
+        // "replay", "served" and the like are not a controller's state: null
+        return s != null ? s : STATUS_WORDS.get(word.toUpperCase(Locale.ROOT));
     }
 }
