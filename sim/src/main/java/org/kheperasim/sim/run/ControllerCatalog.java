@@ -21,7 +21,13 @@ public final class ControllerCatalog {
     private final List<Path> classpath;
     private final boolean trusted;
     /** The bundled controllers' names, read once (a run loads one class per robot). */
-    private final List<String> bundledNames = List.copyOf(bundled());
+    /**
+     * The bundled controllers' names, read from the jar once: every run makes a catalog, and reading
+     * the index each time (a jar entry inflated under the jar's lock) was a point where an evaluation's
+     * threads waited on each other.
+     */
+    private static final List<String> BUNDLED = List.copyOf(ControllerNames.bundled(ControllerCatalog.class.getClassLoader()));
+    private final List<String> bundledNames = BUNDLED;
     /** The shared (stateless) controllers this catalog has served, by name: checked once per catalog (a run's). */
     private final java.util.Map<String, Class<?>> loaded = new java.util.concurrent.ConcurrentHashMap<>();
 
@@ -50,7 +56,7 @@ public final class ControllerCatalog {
 
     /** @return the simple names of the bundled controllers */
     public static List<String> bundled() {
-        return ControllerNames.bundled(ControllerCatalog.class.getClassLoader());
+        return BUNDLED;
     }
 
     /**
