@@ -21,6 +21,7 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.stream.Stream;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
@@ -163,7 +164,7 @@ public final class Grader {
         Set<Process> running = ConcurrentHashMap.newKeySet();
         // A signal to the grader (SIGTERM, Ctrl-C): no run outlives it. What finished is in the journal; a run the
         // grader's own stop killed is no result of the student's and goes to no journal (a resumed grading makes it).
-        java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
+        AtomicBoolean stopping = new AtomicBoolean();
         Thread killRuns = new Thread(() -> {
             stopping.set(true);
             running.forEach(ChildRun::kill);

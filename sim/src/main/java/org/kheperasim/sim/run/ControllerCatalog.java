@@ -20,14 +20,12 @@ public final class ControllerCatalog {
 
     private final List<Path> classpath;
     private final boolean trusted;
-    /** The bundled controllers' names, read once (a run loads one class per robot). */
     /**
-     * The bundled controllers' names, read from the jar once: every run makes a catalog, and reading
-     * the index each time (a jar entry inflated under the jar's lock) was a point where an evaluation's
-     * threads waited on each other.
+     * The bundled controllers' names, read from the jar once per process: every run makes a catalog, and
+     * reading the index each time (a jar entry inflated under the jar's lock) was a point where an
+     * evaluation's threads waited on each other.
      */
     private static final List<String> BUNDLED = List.copyOf(ControllerNames.bundled(ControllerCatalog.class.getClassLoader()));
-    private final List<String> bundledNames = BUNDLED;
     /** The shared (stateless) controllers this catalog has served, by name: checked once per catalog (a run's). */
     private final java.util.Map<String, Class<?>> loaded = new java.util.concurrent.ConcurrentHashMap<>();
 
@@ -82,11 +80,11 @@ public final class ControllerCatalog {
         try {
             if (!anyLoads(name, loader)) {
                 // A wrong name: say what was most likely meant and what to type, or else where it was looked for.
-                String hint = ControllerHints.hint(name, bundledNames, classpath);
+                String hint = ControllerHints.hint(name, BUNDLED, classpath);
                 throw hint != null ? new ControllerException("no controller named '" + name + "': " + hint)
-                        : ControllerNames.notFound(name, bundledNames, classpath, "khepera-sim.jar");
+                        : ControllerNames.notFound(name, BUNDLED, classpath, "khepera-sim.jar");
             }
-            Class<?> type = ControllerNames.resolve(name, loader, bundledNames, classpath, "khepera-sim.jar");
+            Class<?> type = ControllerNames.resolve(name, loader, BUNDLED, classpath, "khepera-sim.jar");
             if (SharedControllers.offer(classpath, name, type, loader)) {
                 loaded.put(name, type);
             }

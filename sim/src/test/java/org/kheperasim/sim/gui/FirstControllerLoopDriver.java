@@ -23,6 +23,8 @@ import org.kheperasim.sim.run.PacedRunner;
  */
 public final class FirstControllerLoopDriver {
     private static Robot robot;
+    /** One for the driver: each registers a listener for the window's input events. */
+    private static RobotInput input;
     private static MainWindow w;
 
     private FirstControllerLoopDriver() {
@@ -37,6 +39,7 @@ public final class FirstControllerLoopDriver {
         w = GuiLauncher.lastLaunched().get(20, TimeUnit.SECONDS);
         robot = new Robot();
         robot.setAutoDelay(20);
+        input = new RobotInput(robot);
         robot.waitForIdle();
 
         // Compile and run.
@@ -120,7 +123,7 @@ public final class FirstControllerLoopDriver {
     }
 
     private static void focusArena() throws Exception {
-        KeyBindingsDriverSupport.clickCorner(new RobotInput(robot), w.arenaComponent());
+        KeyBindingsDriverSupport.clickCorner(input, w.arenaComponent());
     }
 
     private static int lineOf(String text, String what) {

@@ -3,9 +3,11 @@ package org.kheperasim.sim.gui;
 import java.awt.Component;
 import java.awt.Container;
 import java.awt.Point;
+import java.awt.Rectangle;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
+import javax.swing.JComponent;
 import javax.swing.SwingUtilities;
 
 /**
@@ -35,7 +37,7 @@ final class KeyBindingsDriverSupport {
     static void clickCorner(RobotInput input, Component target) throws Exception {
         Point p = onEdt(() -> {
             Point o = target.getLocationOnScreen();
-            java.awt.Rectangle shown = target instanceof javax.swing.JComponent j ? j.getVisibleRect() : new java.awt.Rectangle();
+            Rectangle shown = target instanceof JComponent j ? j.getVisibleRect() : new Rectangle();
             return new Point(o.x + shown.x + 8, o.y + shown.y + 8);
         });
         input.click(p);
