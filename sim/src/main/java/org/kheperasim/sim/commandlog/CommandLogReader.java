@@ -31,7 +31,8 @@ public final class CommandLogReader implements AutoCloseable {
      * A command that reached a robot's link.
      *
      * @param kind  {@code v} speeds, {@code p} position counters, {@code a} arm, {@code f} fingers, {@code r} a
-     *              read that brought poll reply {@code a} in early
+     *              read that brought poll reply {@code a} in early, {@code i} a read that made the
+     *              vision turret take an image
      * @param robot the robot
      * @param now   the controller's simulated time, ns
      * @param a     left speed or counter, the arm's position, 1 for closed fingers
@@ -147,6 +148,10 @@ public final class CommandLogReader implements AutoCloseable {
                 case 'a', 'f', 'r' -> {
                     count(f, 4);
                     yield new Command(kind, robot, Long.parseLong(f[2]), Integer.parseInt(f[3]), 0);
+                }
+                case 'i' -> {
+                    count(f, 3);
+                    yield new Command(kind, robot, Long.parseLong(f[2]), 0, 0);
                 }
                 case 'e' -> {
                     count(f, 2);

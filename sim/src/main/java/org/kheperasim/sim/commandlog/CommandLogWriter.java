@@ -19,6 +19,7 @@ import org.kheperasim.sim.engine.Engine;
  * p 0 … 0 0        position counters set;  a 0 … 200  arm moved;  f 0 … 1  fingers closed
  * e 0              emergency stop (the controller ended, failed or was stopped)
  * r 0 … 0          a read at … brought poll reply 0 (PollStep's order) in before the engine's tick did
+ * i 0 …            a read at … made the vision turret take its image of that period (the trace shows it)
  * w 0 100          after a turn at tick S, the driver wakes at tick S + 100 (x: it has ended)
  * claim {…}        the run's own result, as {@code run --json} prints it
  * end 12345        the number of event lines, so a torn log is told from a whole one
@@ -102,6 +103,12 @@ public final class CommandLogWriter implements DriverRecorder {
     @Override
     public void delivered(int robot, long now, org.kheperasim.link.timing.PollStep step) {
         command('r', robot, now).append(' ').append(step.ordinal());
+        event();
+    }
+
+    @Override
+    public void image(int robot, long now) {
+        command('i', robot, now);
         event();
     }
 

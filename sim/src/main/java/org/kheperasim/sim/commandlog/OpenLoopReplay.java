@@ -322,6 +322,7 @@ public final class OpenLoopReplay {
                     case 'a' -> r.controls().commandArm(c.now(), c.a());
                     case 'f' -> r.controls().commandFingers(c.now(), c.a() == 1 ? GripperState.CLOSED : GripperState.OPEN);
                     case 'r' -> read(r, c.now(), c.a());
+                    case 'i' -> r.vision().image(c.now()); // the same image, at the same moment: the trace shows it
                     default -> throw new IllegalStateException("command " + c.kind());
                 }
             } else {

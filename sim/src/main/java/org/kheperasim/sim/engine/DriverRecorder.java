@@ -2,7 +2,8 @@ package org.kheperasim.sim.engine;
 
 /**
  * Hears everything a run's drivers (its controllers) do to the world, in the order the engine sees
- * it: the commands that reach a robot's link, the emergency stops, and each driver's wake time as the
+ * it: the commands that reach a robot's link, the reads that change what a listener sees (a poll reply
+ * brought in early, a vision turret's image taken), the emergency stops, and each driver's wake time as the
  * engine reads it at the start and after every turn. That is all that makes one run differ from
  * another with the same arena, seed and settings, so a run replayed from it, open loop and without
  * the controllers, computes the same world (see {@code org.kheperasim.sim.commandlog}).
@@ -40,6 +41,16 @@ public interface DriverRecorder {
      * @param step  which reply
      */
     void delivered(int robot, long now, org.kheperasim.link.timing.PollStep step);
+
+    /**
+     * A controller's read at {@code now} made the robot's K213 vision turret take the image of that
+     * period (the first read in it): the image, from the world as it stands then, is what the trace's
+     * vision line shows from then on. Later reads in the same period change nothing and are not told.
+     *
+     * @param robot the robot
+     * @param now   the controller's simulated time, ns
+     */
+    void image(int robot, long now);
 
     /** The robot's wheels were stopped at once and its link cleared: its controller ended, failed or was stopped. */
     void emergencyStop(int robot);

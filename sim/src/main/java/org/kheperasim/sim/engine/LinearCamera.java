@@ -22,7 +22,10 @@ import org.kheperasim.sim.engine.noise.CounterNoise;
  * image of the present period. An image is computed only when somebody reads it, at the first read
  * in its period, from the robot where it is then; its noise is draw {@code 64 k + i} of the
  * turret's own stream for pixel {@code i} of period {@code k}, so reading or not never shifts another
- * draw, and a run that never reads the turret computes nothing.
+ * draw, and a run that never reads the turret computes nothing. Taking an image moves nothing (the
+ * robots stand where the tick began), but the image is shown in the trace (its vision line), so each
+ * image taken is told to the engine's {@link DriverRecorder}: the command log's open-loop replay, which
+ * runs no controller, takes the same images at the same moments.
  */
 public final class LinearCamera {
     /** A lamp's signal: far above what the sensor can count, so it reads 255 whatever the noise. */
@@ -39,6 +42,8 @@ public final class LinearCamera {
     private final int[] image = new int[VisionModel.PIXELS];
     private long period = -1;
     private VisionView last;
+    /** Hears each image taken (a command log), or null. */
+    private DriverRecorder recorder;
 
     LinearCamera(World world, int self, DriveBody body, VisionModel model, CounterNoise noise) {
         this.world = world;
@@ -85,6 +90,11 @@ public final class LinearCamera {
         return best;
     }
 
+    /** @param recorder hears each image the turret takes from now on (see {@link Engine#record}) */
+    void record(DriverRecorder recorder) {
+        this.recorder = recorder;
+    }
+
     /** @return the image last taken, or null when the turret has not been read */
     public VisionView lastView() {
         return last;
@@ -93,6 +103,10 @@ public final class LinearCamera {
     private int[] take(long now) {
         long k = now / model.refreshNanos();
         if (k != period) {
+            if (recorder != null) {
+                // What the image shows reaches the trace: a replay of the run must take it at the same moment.
+                recorder.image(self, now);
+            }
             period = k;
             render(k);
             last = new VisionView(self, now, image);

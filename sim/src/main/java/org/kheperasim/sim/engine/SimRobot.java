@@ -405,6 +405,7 @@ public final class SimRobot {
     void record(DriverRecorder recorder) {
         this.recorder = recorder;
         controls.record(recorder);
+        camera.record(recorder);
     }
 
     /** Stop the wheels at once: the controller has ended, failed or been stopped (robot-link sends D,0,0). */

@@ -12,6 +12,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -72,6 +73,26 @@ class ReplayExactnessTest {
         assertReplayIsTheRun(run);
     }
 
+    static Stream<Arguments> turretReaders() {
+        List<Arguments> out = new ArrayList<>();
+        for (String controller : List.of("VisionSteerer", "VisionStepper", "WsuTurretReader")) {
+            for (String arena : List.of("two-rooms", "beacon-maze", "lab")) {
+                out.add(Arguments.of(controller, arena));
+            }
+        }
+        return out.stream();
+    }
+
+    /** Controllers that read the K213 turret (the student API, a step controller, WSU KSuite 1.1.2's readLvtImage). */
+    @ParameterizedTest(name = "{0} in {1}")
+    @MethodSource("turretReaders")
+    @Tag("timing")
+    void theReplayOfARunThatReadsTheVisionTurretIsTheRun(String controller, String arena) throws IOException {
+        Simulation.Builder run = Simulation.builder().arena(arena).controller("org.kheperasim.testcontrollers." + controller)
+                .seed(5).seconds(60);
+        assertTrue(assertReplayIsTheRun(run).trace.contains("\n# vision "), "the run's trace shows the turret's images");
+    }
+
     @Test
     void aLogOfAnotherRunIsRefused() throws IOException {
         Simulation.Builder run = Simulation.builder().arena("lab").controller("Braitenberg").seed(3).seconds(5);
@@ -89,7 +110,7 @@ class ReplayExactnessTest {
     private record Recorded(String log, String trace, RunResult result) {
     }
 
-    static void assertReplayIsTheRun(Simulation.Builder run) throws IOException {
+    static Recorded assertReplayIsTheRun(Simulation.Builder run) throws IOException {
         Recorded r = record(run);
         StringWriter replayed = new StringWriter();
         OpenLoopReplay.Outcome o = OpenLoopReplay.replay(new OpenLoopReplay.Run(run.arena(), run.seed(), nanos(run.seconds()),
@@ -107,6 +128,7 @@ class ReplayExactnessTest {
                     b.collisions(), b.visitedPercent(), b.regionsEntered()), "robot " + i + " ends the same");
         }
         assertEquals("{\"test\": 1}", o.claim());
+        return r;
     }
 
     private static Recorded record(Simulation.Builder run) throws IOException {
@@ -117,6 +139,20 @@ class ReplayExactnessTest {
                 .onStart(s -> writer.start(LogHeader.of(s, nanos(run.seconds()), SAMPLE_MS))).run();
         writer.finish("{\"test\": 1}");
         return new Recorded(log.toString(), trace.toString(), result);
+    }
+
+    /** @return the first line where two traces differ, both versions, or "" when they are the same */
+    static String firstDifference(String a, String b) {
+        String[] x = a.split("\n", -1);
+        String[] y = b.split("\n", -1);
+        for (int i = 0; i < StrictMath.max(x.length, y.length); i++) {
+            String l = i < x.length ? x[i] : "(end)";
+            String m = i < y.length ? y[i] : "(end)";
+            if (!l.equals(m)) {
+                return "line " + (i + 1) + ": run '" + l + "', replay '" + m + "'";
+            }
+        }
+        return "";
     }
 
     private static CommandLogReader reader(String log) {
