@@ -45,6 +45,10 @@ public final class CommandLogReader implements AutoCloseable {
     public record Stop(int robot) implements Event {
     }
 
+    /** @param nanos where the run, stopped early (a signal, a Stop), ends, simulated ns */
+    public record EarlyEnd(long nanos) implements Event {
+    }
+
     /** @param json the run's own result, one line of JSON */
     public record Claim(String json) implements Event {
     }
@@ -134,6 +138,10 @@ public final class CommandLogReader implements AutoCloseable {
             events++;
             String[] f = l.split(" ");
             char kind = f[0].length() == 1 ? f[0].charAt(0) : '?';
+            if (kind == 'q') {
+                count(f, 2);
+                return new EarlyEnd(Long.parseLong(f[1]));
+            }
             int robot = robot(f);
             return switch (kind) {
                 case 'W', 'w' -> {

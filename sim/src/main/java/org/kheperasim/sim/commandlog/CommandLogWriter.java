@@ -18,6 +18,7 @@ import org.kheperasim.sim.engine.Engine;
  * v 0 20000 5 5    speeds asked at 20000 ns: left 5, right 5
  * p 0 … 0 0        position counters set;  a 0 … 200  arm moved;  f 0 … 1  fingers closed
  * e 0              emergency stop (the controller ended, failed or was stopped)
+ * q 5000000        the run was stopped early (a signal, the window's Stop): it ends at 5000000 ns
  * r 0 … 0          a read at … brought poll reply 0 (PollStep's order) in before the engine's tick did
  * i 0 …            a read at … made the vision turret take its image of that period (the trace shows it)
  * w 0 100          after a turn at tick S, the driver wakes at tick S + 100 (x: it has ended)
@@ -109,6 +110,13 @@ public final class CommandLogWriter implements DriverRecorder {
     @Override
     public void image(int robot, long now) {
         command('i', robot, now);
+        event();
+    }
+
+    @Override
+    public void stoppedAt(long nanos) {
+        line.setLength(0);
+        line.append("q ").append(nanos);
         event();
     }
 

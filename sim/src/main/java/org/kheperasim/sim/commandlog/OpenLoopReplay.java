@@ -125,7 +125,7 @@ public final class OpenLoopReplay {
             engine.addListener(listener, periodMillis * Engine.TICK_NANOS);
         }
         engine.setEnd(run.endNanos());
-        Player player = new Player(log, robots, drivers);
+        Player player = new Player(log, engine, robots, drivers);
         String claim;
         try {
             player.start();
@@ -228,12 +228,14 @@ public final class OpenLoopReplay {
     /** Walks the log in step with the engine, applying each command to its robot. */
     private static final class Player {
         private final CommandLogReader log;
+        private final Engine engine;
         private final List<SimRobot> robots;
         private final List<Driver> drivers;
         long events;
 
-        Player(CommandLogReader log, List<SimRobot> robots, List<Driver> drivers) {
+        Player(CommandLogReader log, Engine engine, List<SimRobot> robots, List<Driver> drivers) {
             this.log = log;
+            this.engine = engine;
             this.robots = robots;
             this.drivers = drivers;
         }
@@ -314,6 +316,9 @@ public final class OpenLoopReplay {
         private void act(CommandLogReader.Event e) {
             if (e instanceof CommandLogReader.Stop s) {
                 robots.get(s.robot()).emergencyStop();
+            } else if (e instanceof CommandLogReader.EarlyEnd q) {
+                // The run was stopped where the wall clock decided: it ended there, and so does its replay.
+                engine.stopAt(q.nanos());
             } else if (e instanceof CommandLogReader.Command c) {
                 SimRobot r = robots.get(c.robot());
                 switch (c.kind()) {

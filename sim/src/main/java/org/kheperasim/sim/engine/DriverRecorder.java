@@ -52,6 +52,14 @@ public interface DriverRecorder {
      */
     void image(int robot, long now);
 
+    /**
+     * The run was stopped early (a signal, the window's Stop: the wall clock decides when): it ends at
+     * {@code nanos}, not where it was set to end.
+     *
+     * @param nanos simulated time, ns
+     */
+    void stoppedAt(long nanos);
+
     /** The robot's wheels were stopped at once and its link cleared: its controller ended, failed or was stopped. */
     void emergencyStop(int robot);
 }

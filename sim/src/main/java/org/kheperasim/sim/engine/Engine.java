@@ -190,6 +190,22 @@ public final class Engine {
         this.endNanos = endNanos;
     }
 
+    /**
+     * End the run early, at {@code nanos} or where it is set to end if that comes first: a stop that
+     * the wall clock decides (a signal, the window's Stop). The recorder hears it, so that a replay of
+     * the run ends where the run did.
+     *
+     * @param nanos simulated time, ns
+     */
+    public void stopAt(long nanos) {
+        if (nanos < endNanos) {
+            endNanos = nanos;
+            if (recorder != null) {
+                recorder.stoppedAt(nanos);
+            }
+        }
+    }
+
     /** @return where {@link #advance()} stops, ns (set by {@link #setEnd}) */
     public long endNanos() {
         return endNanos;

@@ -99,13 +99,34 @@ final class ControllerClock implements SimClock.Clock, PortClock {
                     + "', which the controller's code did not start; in the simulator only the controller's"
                     + " thread and the threads it starts may use it (that keeps runs deterministic)");
         }
-        host.checkStop();
-        if ((++apiCalls & HEAP_LOOK_MASK) == 0) {
-            lookAtHeap();
+        // Inside the simulator's code until leave(): the watchdog never takes the turn from it there.
+        Turn.Seat seat = enterSimulator();
+        try {
+            host.checkStop();
+            if ((++apiCalls & HEAP_LOOK_MASK) == 0) {
+                lookAtHeap();
+            }
+            if (now >= limit) {
+                yieldTurn();
+            }
+        } catch (RuntimeException | Error e) {
+            seat.leaveSimulator(Turn.STUDENT);
+            throw e;
         }
-        if (now >= limit) {
-            yieldTurn();
+    }
+
+    /**
+     * The running thread enters the simulator's code.
+     *
+     * @return its seat
+     * @throws ControllerStoppedError if the watchdog has taken the turn from it: it must not touch the run
+     */
+    private Turn.Seat enterSimulator() {
+        Turn.Seat seat = threads.running().seat;
+        if (seat.enterSimulator() == Turn.TAKEN) {
+            throw new ControllerStoppedError("controller " + host.name() + " was taken off the run");
         }
+        return seat;
     }
 
     /** A controller that allocates without bound is stopped before the heap runs out. */
@@ -121,6 +142,7 @@ final class ControllerClock implements SimClock.Clock, PortClock {
     @Override
     public void leave() {
         now += apiCostNanos;
+        threads.running().seat.leaveSimulator(Turn.STUDENT);
     }
 
     /** The running thread's slice is used up: step the world on this thread until it runs again. */
@@ -133,9 +155,17 @@ final class ControllerClock implements SimClock.Clock, PortClock {
     /** The running thread has set when it is due next: run whoever is due, and return when it runs again. */
     private void reschedule() {
         Participant me = threads.running();
-        me.interruptPending = Thread.currentThread().isInterrupted();
-        if (!handOff(me)) {
-            host.lockstep().turn().await(me.seat);
+        int before = me.seat.enterSimulator();
+        if (before == Turn.TAKEN) {
+            throw new ControllerStoppedError("controller " + host.name() + " was taken off the run");
+        }
+        try {
+            me.interruptPending = Thread.currentThread().isInterrupted();
+            if (!handOff(me)) {
+                host.lockstep().turn().await(me.seat);
+            }
+        } finally {
+            me.seat.leaveSimulator(before);
         }
         host.checkStop();
     }
@@ -338,11 +368,17 @@ final class ControllerClock implements SimClock.Clock, PortClock {
         me.waitingAs = millis == 0 ? Thread.State.WAITING : Thread.State.TIMED_WAITING;
         me.interruptPending = false;
         me.seat.waitMonitor = monitor;
+        int before = me.seat.enterSimulator();
+        if (before == Turn.TAKEN) {
+            me.seat.waitMonitor = null;
+            throw new ControllerStoppedError("controller " + host.name() + " was taken off the run");
+        }
         try {
             if (!handOff(me)) {
                 awaitInWait(me, monitor);
             }
         } finally {
+            me.seat.leaveSimulator(before);
             me.seat.waitMonitor = null;
         }
         threads.endWait(me);

@@ -377,7 +377,9 @@ public final class ControllerHost implements HostedController {
 
     /** The controller thread is ending with an exception (the uncaught-exception handler). */
     private void ended(Throwable e) {
-        boolean abandoned = life.state().abandoned();
+        // Its end touches the robot and the turn: the simulator's code, which the watchdog never interrupts.
+        boolean taken = threads.main().seat.enterSimulator() == Turn.TAKEN;
+        boolean abandoned = taken || life.state().abandoned();
         life.ownThreadOver();
         if (abandoned) {
             return; // it no longer holds the turn

@@ -18,6 +18,12 @@ import org.kheperasim.sim.engine.RobotDriver;
  * (its {@code run()} returned) or that has made no API call and let no tick pass for the hang
  * timeout is taken off the run, and the owner carries on with the world. The simulation never hangs
  * on a controller.
+ *
+ * <p>What the wall clock decides here (a hang, a stop's patience, the heap's charge to the holder)
+ * reaches the world only through the turn: a controller is taken off the run only while its thread
+ * is in its own code, never inside the simulator's (see {@link Turn#takeFromStuck}), so its robot's
+ * emergency stop and its last wake are told to the command log by whoever holds the turn, in the
+ * engine's order, and the log's replay is the run.
  */
 public final class Lockstep {
     private static final long WATCH_PERIOD_NANOS = 1_000_000L;
@@ -168,7 +174,8 @@ public final class Lockstep {
                 stopping = true;
             }
             if (stopping) {
-                engine.setEnd(StrictMath.min(engine.endNanos(), engine.timeNanos()));
+                // Where is the wall clock's decision: the command log records it (Engine.stopAt).
+                engine.stopAt(engine.timeNanos());
             }
             RobotDriver next = engine.advance();
             if (!(next instanceof StepHost step)) {
@@ -298,11 +305,13 @@ public final class Lockstep {
                 return;
             }
             long p = engine.ticks() + host.apiCalls();
-            if (host != watched || p != progress) {
+            if (host != watched || p != progress || seat.inSimulator()) {
+                // The simulator's own code (an API call, a hand-off, the world's step) always ends: on a busy
+                // machine its thread may wait long for a core, and is never called hung for that.
                 watched = host;
                 progress = p;
                 progressAt = now;
-            } else if (now - progressAt > hangTimeoutNanos && turn.takeFrom(seat, owner)) {
+            } else if (now - progressAt > hangTimeoutNanos && turn.takeFromStuck(seat, owner)) {
                 host.hung(holder, (now - progressAt) / 1e9);
                 // Still running somewhere in a library call, perhaps for ever: not on the others' core.
                 Turn.free(seat);

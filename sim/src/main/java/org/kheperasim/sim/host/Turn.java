@@ -46,9 +46,49 @@ final class Turn {
         private int pinTried = -1;
         /** Its thread's id in the operating system, once pinned (to let it free again), else -1. */
         private volatile long tid = -1;
+        /**
+         * Where the seat's thread is: {@link #STUDENT} (the controller's own code), {@link #SIMULATOR}
+         * (the simulator's: an API call, a hand-off, the world's step, its end), or {@link #TAKEN}: the
+         * watchdog took the turn from it in the controller's code, and it must never enter the
+         * simulator's again. The watchdog takes the turn only from a thread in the controller's code,
+         * so a thread that the wall clock calls hung never touches the run while another steps it.
+         */
+        private final java.util.concurrent.atomic.AtomicInteger where = new java.util.concurrent.atomic.AtomicInteger(STUDENT);
 
         Seat(Thread thread) {
             this.thread = thread;
+        }
+
+        /**
+         * The seat's thread enters the simulator's code (nested entries stay inside).
+         *
+         * @return the state to restore on the way out ({@link #leaveSimulator}), or {@link #TAKEN} when the
+         *         turn was taken from it: it must not touch the run
+         */
+        int enterSimulator() {
+            while (true) {
+                int w = where.get();
+                if (w != STUDENT || where.compareAndSet(STUDENT, SIMULATOR)) {
+                    return w;
+                }
+            }
+        }
+
+        /** @param before what {@link #enterSimulator} returned: back to the controller's code when it was there */
+        void leaveSimulator(int before) {
+            if (before == STUDENT) {
+                where.compareAndSet(SIMULATOR, STUDENT);
+            }
+        }
+
+        /** @return true while the seat's thread runs the simulator's code */
+        boolean inSimulator() {
+            return where.get() == SIMULATOR;
+        }
+
+        /** @return true when the turn was taken from it ({@link Turn#takeFromStuck}) */
+        boolean taken() {
+            return where.get() == TAKEN;
         }
 
         Thread thread() {
@@ -66,6 +106,13 @@ final class Turn {
             thread = t;
         }
     }
+
+    /** {@link Seat}'s thread runs the controller's code. */
+    static final int STUDENT = 0;
+    /** {@link Seat}'s thread runs the simulator's code. */
+    static final int SIMULATOR = 1;
+    /** The turn was taken from {@link Seat}'s thread in the controller's code. */
+    static final int TAKEN = -1;
 
     private volatile Seat holder;
     /** The core the threads that wait for the turn keep to, or -1 (see {@link #keepOn}). */
@@ -144,6 +191,23 @@ final class Turn {
      */
     synchronized boolean takeFrom(Seat from, Seat to) {
         if (holder != from) {
+            return false;
+        }
+        giveTo(to);
+        return true;
+    }
+
+    /**
+     * Take the turn from {@code from}, a thread that made no progress for the hang timeout, if it
+     * still holds it and runs the controller's code: from then on that thread never enters the
+     * simulator's code (see {@link Seat#enterSimulator}). A thread inside the simulator's code (an API
+     * call, a hand-off, the world's step) is never taken from: it touches the world, the robots and the
+     * command log, and under load it may merely be waiting for a core.
+     *
+     * @return true when the turn was taken
+     */
+    synchronized boolean takeFromStuck(Seat from, Seat to) {
+        if (holder != from || !from.where.compareAndSet(STUDENT, TAKEN)) {
             return false;
         }
         giveTo(to);

@@ -18,9 +18,12 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.host.ControllerStatus;
+import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.run.ControllerCatalog;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
@@ -91,6 +94,47 @@ class ReplayExactnessTest {
         Simulation.Builder run = Simulation.builder().arena(arena).controller("org.kheperasim.testcontrollers." + controller)
                 .seed(5).seconds(60);
         assertTrue(assertReplayIsTheRun(run).trace.contains("\n# vision "), "the run's trace shows the turret's images");
+    }
+
+    /** Two thread controllers and a step controller with its own calibration, over several seeds. */
+    @ParameterizedTest(name = "seed {0}")
+    @ValueSource(longs = {21, 2, 3, 4})
+    @Tag("timing")
+    void theReplayOfMixedRobotsIsTheRunOverSeveralSeeds(long seed) throws IOException {
+        assertReplayIsTheRun(mixed("Braitenberg", seed, 90, HostOptions.defaults()));
+    }
+
+    /**
+     * The real-time paths forced: a hang timeout of 2 ms and random real-time delays of up to 3 ms
+     * inside the simulator's hand-offs, beside a controller that thinks for milliseconds between robot
+     * calls. The watchdog then takes controllers off the run where the wall clock decides; whatever it
+     * decides, the log records it and its replay is the run.
+     */
+    @ParameterizedTest(name = "seed {0}")
+    @ValueSource(longs = {1, 2, 3})
+    @Tag("timing")
+    void whatTheWallClockDecidesIsInTheLogAndTheReplayIsTheRun(long seed) throws IOException {
+        HostOptions hurried = HostOptions.defaults().withHangTimeout(2_000_000L).withJitter(3000);
+        Recorded r = assertReplayIsTheRun(mixed("org.kheperasim.testcontrollers.Ponderer", seed, 20, hurried));
+        assertTrue(r.result.robots().stream().anyMatch(b -> b.status() == ControllerStatus.HUNG),
+                "the watchdog took a controller off the run (the real-time path was taken): " + r.result.robots());
+    }
+
+    /** A run stopped where the wall clock says (as a signal stops it): the log says where, and the replay ends there too. */
+    @Test
+    @Tag("timing")
+    void aRunStoppedByTheWallClockIsReplayedToWhereItStopped() throws IOException {
+        long[] asked = {0};
+        Simulation.Builder run = mixed("Braitenberg", 9, 600, HostOptions.defaults()).stopWhen(() -> ++asked[0] > 40);
+        Recorded r = assertReplayIsTheRun(run);
+        assertTrue(r.result.simulatedSeconds() < 600, "it was stopped early: " + r.result.simulatedSeconds());
+        assertTrue(r.log.contains("\nq "), "the log says where");
+    }
+
+    private static Simulation.Builder mixed(String first, long seed, double seconds, HostOptions options) {
+        return Simulation.builder().arena(org.kheperasim.testfixtures.Arenas.THREE).controller(first)
+                .robot(1, "WallFollower", null).robot(2, "StepBraitenberg", Settings.defaults().with("motor.left.calibration", "0.9"))
+                .seed(seed).seconds(seconds).hostOptions(options);
     }
 
     @Test
