@@ -53,8 +53,14 @@ final class ChildRun {
      * @param log         the run's command log as received, or null
      * @param page        what the run's page says besides the replay (null without a replay)
      * @param tape        the replay's samples for the page (null without a replay)
+     * @param diverged    what differed from the replay, from a JVM that ended normally: the run is made again once
+     *                    ({@link Rerun}); null when nothing did
      */
-    record Outcome(RunRecord record, double wallSeconds, Path trace, Path log, RunOutcome page, RunPageRecorder tape) {
+    record Outcome(RunRecord record, double wallSeconds, Path trace, Path log, RunOutcome page, RunPageRecorder tape,
+            String diverged) {
+        Outcome(RunRecord record, double wallSeconds, Path trace, Path log, RunOutcome page, RunPageRecorder tape) {
+            this(record, wallSeconds, trace, log, page, tape, null);
+        }
     }
 
     private ChildRun() {
@@ -126,7 +132,7 @@ final class ChildRun {
         Verdict.Child child = new Verdict.Child(killed, exit, err, Files.isRegularFile(logFile) ? logFile : null, cut, madeIn);
         Verdict.Judged judged = Verdict.judge(job, sub, arena, lim, child, trace);
         return new Outcome(judged.record(), wall, Files.isRegularFile(trace) ? trace : null, child.log(), judged.page(),
-                judged.tape());
+                judged.tape(), judged.diverged());
     }
 
     /**

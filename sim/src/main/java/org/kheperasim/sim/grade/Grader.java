@@ -225,8 +225,14 @@ public final class Grader {
                 int slot = slots.take();
                 try {
                     Submission sub = subs.get(job.student());
-                    finisher.finish(job, sub.runnable() ? ChildRun.run(job, sub, arenas.get(job.arena()), limits,
-                            work.resolve("runs"), sockets, slot, running) : null);
+                    ChildRun.Outcome made = null;
+                    if (sub.runnable()) {
+                        // A result that differed from its replay is made again once, in a JVM of its own too.
+                        Rerun.Making making = () -> ChildRun.run(job, sub, arenas.get(job.arena()), limits, work.resolve("runs"),
+                                sockets, slot, running);
+                        made = Rerun.guard(making.make(), making);
+                    }
+                    finisher.finish(job, made);
                 } finally {
                     slots.add(slot);
                 }
@@ -271,7 +277,7 @@ public final class Grader {
         RunRecord r = outcome.record();
         if (r.max() == 0 && arena.assignment().hasTasks()) {
             r = new RunRecord(r.student(), r.arena(), r.seed(), r.status(), 0, arena.assignment().maxPoints(), 0,
-                    r.simulatedSeconds(), r.controller(), r.detail(), "", r.madeIn());
+                    r.simulatedSeconds(), r.controller(), r.detail(), "", r.madeIn()).withRerun(r.rerun());
         }
         double pageSeconds = 0;
         try {
@@ -288,7 +294,7 @@ public final class Grader {
             }
         } finally {
             if (!o.keepTraces()) {
-                for (Path p : new Path[] {outcome.trace(), outcome.log()}) {
+                for (Path p : new Path[] {outcome.trace(), outcome.log(), outcome.log() == null ? null : Rerun.firstLog(outcome.log())}) {
                     if (p != null) {
                         Files.deleteIfExists(p);
                     }

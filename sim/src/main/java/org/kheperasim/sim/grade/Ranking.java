@@ -10,14 +10,16 @@ import java.util.Map;
  * The students of one assignment (arena) ranked by their mean score over the seeds; a run that
  * failed counts with the points it earned before it failed (none, when it did not run). At equal
  * means, fewer runs not ok rank first, so a failure never ties a clean run; equal means with as many
- * runs not ok share a rank. A student with a run found {@link RunStatus#TAMPERED tampered} in an
- * arena is not ranked there: listed after the ranked ones, with rank 0.
+ * runs not ok share a rank. A student with a run found {@link RunStatus#TAMPERED tampered}, or one
+ * that {@link RunStatus#DIVERGED differed from its replay} in both makings, in an arena is not ranked
+ * there until a person has looked: listed after the ranked ones, with rank 0.
  */
 final class Ranking {
     /** The rule, as the report states it. */
     static final String RULE = "Ranked by mean score over the seeds (a run that failed keeps the points it earned before it"
             + " failed); at equal means, fewer runs not ok rank first, so a failure never ties a clean run; equal means with"
-            + " as many runs not ok share a rank. A student with a tampered run is not ranked (-).";
+            + " as many runs not ok share a rank. A student with a tampered run, or a run that differed from its replay twice,"
+            + " is not ranked (-).";
 
     /**
      * One student's line.
@@ -79,6 +81,6 @@ final class Ranking {
     }
 
     private static boolean tampered(Entry e) {
-        return e.runs().stream().anyMatch(r -> r.status() == RunStatus.TAMPERED);
+        return e.runs().stream().anyMatch(r -> r.status() == RunStatus.TAMPERED || r.status() == RunStatus.DIVERGED);
     }
 }

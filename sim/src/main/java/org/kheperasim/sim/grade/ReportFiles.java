@@ -23,7 +23,7 @@ public final class ReportFiles {
     public static final String FORMAT = "khepera-grade 1";
     /** The columns of {@code results.csv}. */
     public static final String CSV_HEADER = "student,arena,seed,status,points,max,percent,simulated_s,controller,picture,detail,"
-            + "made_in,page";
+            + "made_in,page,rerun";
 
     /**
      * A report: the plan it covers, the slice made, and the runs.
@@ -83,7 +83,7 @@ public final class ReportFiles {
                     .append(num(r.percent())).append(',').append(String.format(Locale.ROOT, "%.3f", r.simulatedSeconds()))
                     .append(',').append(csvField(r.controller())).append(',').append(csvField(r.picture())).append(',')
                     .append(csvField(r.detail())).append(',').append(r.madeIn()).append(',').append(csvField(r.page()))
-                    .append('\n');
+                    .append(',').append(csvField(r.rerun())).append('\n');
         }
         return sb.toString();
     }
@@ -127,7 +127,8 @@ public final class ReportFiles {
                 .append(", \"picture\": ").append(JsonValues.quote(r.picture()))
                 .append(", \"detail\": ").append(JsonValues.quote(r.detail()))
                 .append(", \"madeIn\": ").append(JsonValues.quote(r.madeIn()))
-                .append(", \"page\": ").append(JsonValues.quote(r.page())).append('}').toString();
+                .append(", \"page\": ").append(JsonValues.quote(r.page()))
+                .append(", \"rerun\": ").append(JsonValues.quote(r.rerun())).append('}').toString();
     }
 
     /** @param r a run's JSON object, parsed @return the run */
@@ -135,7 +136,8 @@ public final class ReportFiles {
         return new RunRecord((String) r.get("student"), (String) r.get("arena"), ((Number) r.get("seed")).longValue(),
                 RunStatus.ofWord((String) r.get("status")), dbl(r.get("points")), dbl(r.get("max")),
                 dbl(r.get("percent")), dbl(r.get("simulatedSeconds")), (String) r.get("controller"),
-                (String) r.get("detail"), (String) r.get("picture"), (String) r.get("madeIn"), (String) r.get("page"));
+                (String) r.get("detail"), (String) r.get("picture"), (String) r.get("madeIn"), (String) r.get("page"),
+                r.get("rerun") instanceof String s ? s : "");
     }
 
     /**
@@ -178,7 +180,7 @@ public final class ReportFiles {
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read " + file + ": " + e.getMessage(), e);
         }
-        // Reports written before a column was added read too: made_in, then page.
+        // Reports written before a column was added read too: made_in, then page, then rerun.
         if (lines.isEmpty() || !CSV_HEADER.startsWith(lines.get(0)) || !lines.get(0).contains(",detail")) {
             throw new IllegalArgumentException(file + " does not start with the header " + CSV_HEADER);
         }
@@ -188,7 +190,7 @@ public final class ReportFiles {
             out.add(new RunRecord(f.get(0), f.get(1), Long.parseLong(f.get(2)), RunStatus.ofWord(f.get(3)),
                     Double.parseDouble(f.get(4)), Double.parseDouble(f.get(5)), Double.parseDouble(f.get(6)),
                     Double.parseDouble(f.get(7)), f.get(8), f.get(10), f.get(9), f.size() > 11 ? f.get(11) : "",
-                    f.size() > 12 ? f.get(12) : ""));
+                    f.size() > 12 ? f.get(12) : "", f.size() > 13 ? f.get(13) : ""));
         }
         return out;
     }

@@ -20,10 +20,12 @@ package org.kheperasim.sim.grade;
  *                         (it did not compile)
  * @param page             the run's web page, which replays it in a browser, relative to the report folder (empty
  *                         when there is none: the run left nothing to replay)
+ * @param rerun            when the run was made again (its first making's result differed from its replay): what
+ *                         differed the first time, one line; empty when it was made once
  */
 public record RunRecord(String student, String arena, long seed, RunStatus status, double points, double max,
         double percent, double simulatedSeconds, String controller, String detail, String picture, String madeIn,
-        String page) {
+        String page, String rerun) {
     /** Made in the operating-system sandbox (docs/grading.md, "The sandbox"). */
     public static final String SANDBOX = "sandbox";
     /** Made without it ({@code grade --no-sandbox}). */
@@ -40,23 +42,41 @@ public record RunRecord(String student, String arena, long seed, RunStatus statu
         picture = picture == null ? "" : picture;
         madeIn = madeIn == null ? "" : madeIn;
         page = page == null ? "" : page;
+        rerun = rerun == null ? "" : rerun.replaceAll("[\\r\\n]+", " ").strip();
+    }
+
+    /** A run made once. */
+    public RunRecord(String student, String arena, long seed, RunStatus status, double points, double max, double percent,
+            double simulatedSeconds, String controller, String detail, String picture, String madeIn, String page) {
+        this(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture, madeIn, page, "");
     }
 
     /** A run without a page (yet). */
     public RunRecord(String student, String arena, long seed, RunStatus status, double points, double max, double percent,
             double simulatedSeconds, String controller, String detail, String picture, String madeIn) {
-        this(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture, madeIn, "");
+        this(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture, madeIn, "", "");
     }
 
     /** @param picture the trajectory picture @return this run with it */
     RunRecord withPicture(String picture) {
         return new RunRecord(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture,
-                madeIn, page);
+                madeIn, page, rerun);
     }
 
     /** @param page the run's web page @return this run with it */
     RunRecord withPage(String page) {
         return new RunRecord(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture,
-                madeIn, page);
+                madeIn, page, rerun);
+    }
+
+    /** @param firstDifference what differed from the replay the first time @return this run, made again */
+    RunRecord withRerun(String firstDifference) {
+        return new RunRecord(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture,
+                madeIn, page, firstDifference);
+    }
+
+    /** @return true when the run was made again */
+    public boolean madeAgain() {
+        return !rerun.isEmpty();
     }
 }

@@ -19,9 +19,18 @@ public enum RunStatus {
     /** The controller broke a containment rule (System.exit, a forbidden call; docs/controller-rules.md). */
     BROKE_RULE("broke a rule"),
     /**
-     * The run's own result differs from the replay of its command log, its log does not fit the run,
-     * or its JVM ended with success without handing its result over: something wrote the result
-     * that was not the simulator. Not ranked.
+     * The run's own result differed from the replay of its command log (or its log did not fit the
+     * run) in both makings of it, its JVM having ended normally each time: the grader cannot tell a
+     * fault of the simulator's replay from a forged result, so it names the difference (what, and
+     * where) instead of a cause, and scores the replay. Not ranked until a person has looked (and worth a
+     * bug report: docs/grading.md, "Verdicts").
+     */
+    DIVERGED("differs from its replay"),
+    /**
+     * Evidence that something other than the simulator wrote the run's result: a result that is not
+     * the simulator's JSON; a result that differs from the replay, or a log that does not fit the run,
+     * from a JVM that ended with an exit status the simulator never gives; a JVM that ended with
+     * success without handing its result over. Not ranked.
      */
     TAMPERED("tampered"),
     /** The run could not be made for another reason (the message says which). */

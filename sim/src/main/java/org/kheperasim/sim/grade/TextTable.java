@@ -46,13 +46,26 @@ final class TextTable {
         sb.append(Ranking.RULE).append('\n');
         sb.append(runs.size()).append(" runs: ").append(counts.entrySet().stream()
                 .map(c -> c.getValue() + " " + c.getKey().label()).collect(Collectors.joining(", ")))
-                .append("; ").append(madeIn(runs)).append('\n');
+                .append("; ").append(madeIn(runs)).append("; ").append(reruns(runs)).append('\n');
+        for (RunRecord r : runs) {
+            if (r.madeAgain()) {
+                sb.append("  made again: ").append(r.student()).append(", ").append(r.arena()).append(", seed ").append(r.seed())
+                        .append(": the first time ").append(r.rerun()).append('\n');
+            }
+        }
         return sb.toString();
     }
 
     /** @return a seed's entry in the table: its score, %, and its status when not ok, e.g. {@code 4 (threw)} */
     static String seed(RunRecord r) {
         return ReportFiles.num(r.percent()) + (r.status() == RunStatus.OK ? "" : " (" + r.status().label() + ")");
+    }
+
+    /** @return how many runs were made again because their first result differed from the replay */
+    static String reruns(List<RunRecord> runs) {
+        long again = runs.stream().filter(RunRecord::madeAgain).count();
+        return again == 0 ? "0 reruns" : again + (again == 1 ? " rerun" : " reruns")
+                + " (a result that differed from its replay, made again once)";
     }
 
     /** @return how the runs were made: all in the sandbox, none, or how many each way */

@@ -8,7 +8,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Collections;
-import java.util.Locale;
 import java.util.Map;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.commandlog.CommandLogReader;
@@ -25,10 +24,14 @@ import org.kheperasim.sim.web.RunPageRecorder;
 /**
  * The grader's judgement of one child run: it replays the run's command log in its own engine, with
  * no student code, scores the replay, and compares the run's own result with it. A result that
- * differs, a log that does not fit the run, or a JVM that ended with success without a whole log is
- * {@link RunStatus#TAMPERED}; an exit status other than the one the run's result calls for is an
- * error; only then does the run's own word on how each controller ended count (it is the status, never
- * the score).
+ * differs, or a log that does not fit the run, from a JVM that ended normally (exit status 0 or 1) is
+ * {@link RunStatus#DIVERGED}, and the judgement says so ({@link Judged#diverged}) so that the grader
+ * makes the run again once ({@link Rerun}): an honest run always replays exactly, and a difference
+ * that does not repeat is no evidence of anything. The same from a JVM that ended otherwise, a result
+ * that is not the simulator's JSON, or a JVM that ended with success without a whole log is
+ * {@link RunStatus#TAMPERED}. Either way the reason says what differs and where. An exit status other
+ * than the one the run's result calls for is an error; only then does the run's own word on how each
+ * controller ended count (it is the status, never the score).
  */
 final class Verdict {
     /** The most of a command log kept, compressed (a long run of a busy controller: a few hundred KB). */
@@ -56,10 +59,16 @@ final class Verdict {
      * @param page   what the run's page says besides the replay's samples (title, failures with the student's
      *               line, the replay's facts for the score), or null when there is no replay to show
      * @param tape   the replay's samples for the page, every {@link RunPageRecorder#PERIOD_MILLIS}, or null
+     * @param diverged what differed from the replay, from a JVM that ended normally (the run is to be made again
+     *               once), or null
      */
-    record Judged(RunRecord record, RunOutcome page, RunPageRecorder tape) {
+    record Judged(RunRecord record, RunOutcome page, RunPageRecorder tape, String diverged) {
         Judged(RunRecord record) {
-            this(record, null, null);
+            this(record, null, null, null);
+        }
+
+        Judged(RunRecord record, RunOutcome page, RunPageRecorder tape) {
+            this(record, page, tape, null);
         }
     }
 
@@ -109,8 +118,8 @@ final class Verdict {
                     child.madeIn()));
         } catch (ReplayMismatchException | LogFormatException e) {
             deleteQuietly(trace);
-            return new Judged(ChildResults.tampered(job, controller, "its command log does not fit the run (" + e.getMessage()
-                    + ")", null, 0, child.madeIn()));
+            return difference(job, controller, child, "its command log does not fit the run (" + e.getMessage() + ")", null, 0,
+                    null, null);
         } catch (IOException e) {
             throw new UncheckedIOException("cannot replay " + child.log() + ": " + e.getMessage(), e);
         }
@@ -126,12 +135,10 @@ final class Verdict {
                     child.madeIn());
             return new Judged(r, ChildResults.page(job, controller, Map.of(), replay.result(), r), tape);
         }
-        String differs = differs(claim, replay, score);
+        String differs = Differences.of(claim, replay, score);
         if (differs != null) {
-            RunRecord r = ChildResults.tampered(job, controller, "its own result differs from the replay of its command log ("
-                    + differs + "): something other than the simulator wrote it; the score is the replay's", score, reached,
-                    child.madeIn());
-            return new Judged(r, ChildResults.page(job, controller, Map.of(), replay.result(), r), tape);
+            return difference(job, controller, child, "its own result differs from the replay of its command log (" + differs
+                    + "); the score is the replay's", score, reached, replay, tape);
         }
         RunRecord r = ChildResults.fromClaim(job, controller, claim, score, reached, child.err(), child.madeIn());
         int expected = r.status() == RunStatus.OK ? 0 : 1;
@@ -143,33 +150,19 @@ final class Verdict {
         return new Judged(r, ChildResults.page(job, controller, claim, replay.result(), r), tape);
     }
 
-    /** @return what differs between the run's claim and the replay, or null when nothing does */
-    private static String differs(Map<String, Object> claim, OpenLoopReplay.Outcome replay, Score score) {
-        String sha = replay.result().traceSha256();
-        if (!sha.equals(claim.get("traceSha256"))) {
-            return "its trace's SHA-256 " + shortSha(claim.get("traceSha256")) + ", the replay's " + shortSha(sha);
-        }
-        if (!same(claim.get("simulatedSeconds"), replay.result().simulatedSeconds())) {
-            return "it says " + claim.get("simulatedSeconds") + " s simulated, the replay " + replay.result().simulatedSeconds();
-        }
-        Object points = claim.get("score") instanceof Map<?, ?> s ? s.get("points") : null;
-        if (score != null && !same(points, score.points())) {
-            return "it says " + points + " points, the replay " + String.format(Locale.ROOT, "%.2f", score.points());
-        }
-        if (score == null && points != null) {
-            return "it has a score, the arena no tasks";
-        }
-        return null;
-    }
-
-    /** The run's JSON writes 10 significant digits. */
-    private static boolean same(Object claimed, double computed) {
-        return claimed instanceof Number n && StrictMath.abs(n.doubleValue() - computed) <= 1e-7 * StrictMath.max(1, StrictMath.abs(computed));
-    }
-
-    private static String shortSha(Object sha) {
-        String s = String.valueOf(sha);
-        return s.length() > 12 ? s.substring(0, 12) + "..." : s;
+    /**
+     * A result that differs from the replay, or a log that does not fit the run: from a JVM that ended
+     * normally, a difference to make the run again for; from one that ended otherwise, evidence of tampering.
+     */
+    private static Judged difference(GradePlan.Job job, String controller, Child child, String what, Score score, double reached,
+            OpenLoopReplay.Outcome replay, RunPageRecorder tape) {
+        boolean normal = child.exit() == 0 || child.exit() == 1;
+        RunRecord t = ChildResults.tampered(job, controller, normal ? what : "its JVM ended with exit status " + child.exit()
+                + ", which the simulator never gives, and " + what, score, reached, child.madeIn());
+        RunRecord r = normal ? new RunRecord(t.student(), t.arena(), t.seed(), RunStatus.DIVERGED, t.points(), t.max(), t.percent(),
+                t.simulatedSeconds(), t.controller(), t.detail(), t.picture(), t.madeIn()) : t;
+        RunOutcome page = replay == null ? null : ChildResults.page(job, controller, Map.of(), replay.result(), r);
+        return new Judged(r, page, replay == null ? null : tape, normal ? t.detail() : null);
     }
 
     private static BufferedReader open(Path log) throws IOException {

@@ -147,7 +147,7 @@ final class WorkerProcess implements AutoCloseable {
                 Files.isRegularFile(logFile) ? logFile : null, cut, madeIn);
         Verdict.Judged judged = Verdict.judge(job, sub, arena, lim, child, trace);
         return new ChildRun.Outcome(judged.record(), wall, Files.isRegularFile(trace) ? trace : null, child.log(),
-                judged.page(), judged.tape());
+                judged.page(), judged.tape(), judged.diverged());
     }
 
     /** Ask for one run and wait for its end, or its wall-clock limit (then kill the worker). */

@@ -121,7 +121,26 @@ final class WorkerSlots {
                     w = WorkerProcess.start(sub, arenaNames, robots, lim, StrictMath.min(workerRuns, left(student) + 1), slot,
                             folder, running);
                 }
-                finisher.finish(job, w.run(job, sub, arenas.get(job.arena()), lim, runs));
+                ChildRun.Outcome made = w.run(job, sub, arenas.get(job.arena()), lim, runs);
+                if (made.diverged() != null) {
+                    // Made again once, on a worker JVM of its own: nothing of the first making's JVM carries over.
+                    w.close();
+                    w = null;
+                    GradePlan.Job again = job;
+                    WorkerProcess[] fresh = new WorkerProcess[1];
+                    try {
+                        made = Rerun.guard(made, () -> {
+                            Path folder = Files.createDirectories(sockets.resolve("w" + folders.incrementAndGet()));
+                            fresh[0] = WorkerProcess.start(sub, arenaNames, robots, lim, 1, slot, folder, running);
+                            return fresh[0].run(again, sub, arenas.get(again.arena()), lim, runs);
+                        });
+                    } finally {
+                        if (fresh[0] != null) {
+                            fresh[0].close();
+                        }
+                    }
+                }
+                finisher.finish(job, made);
             }
         } finally {
             if (w != null) {

@@ -20,9 +20,9 @@ import org.junit.jupiter.api.io.TempDir;
  * The score is never the run's to write. Graded trusted (the hole a test build opens on purpose), in
  * the sandbox where there is one: a controller that prints a forged result line and halts its JVM
  * (the exploit that ranked first with 999 of 999 points), and one that moves its robot through every
- * cell of the maze by reflection (its run's own result says 100 points) are both reported as
- * tampered and left out of the ranking, with the points the grader's replay of their command logs
- * gives; an honest student ranks first. Beside them, a thread pool that spins for ever costs its run
+ * cell of the maze by reflection (its run's own result says 100 points) are reported as tampered
+ * and as differing from their replay (made again, the same again), and left out of the ranking, with
+ * the points the grader's replay of their command logs gives; an honest student ranks first. Beside them, a thread pool that spins for ever costs its run
  * nothing: the child ends after its result, not at the wall limit.
  */
 class ForgedResultsTest {
@@ -57,8 +57,13 @@ class ForgedResultsTest {
         assertTrue(pat.detail().contains("without handing over its command log"), pat.detail());
 
         RunRecord tom = runs.get("tom");
-        assertEquals(RunStatus.TAMPERED, tom.status(), all);
+        // Its JVM ends normally with a result its replay never gives, in both makings of the run: named by what
+        // differs and where (robot 0's end), scored by the replay, not ranked; not called tampered, which the
+        // grader keeps for what the evidence shows (a result that is not the simulator's, an exit status it never gives).
+        assertEquals(RunStatus.DIVERGED, tom.status(), all);
         assertTrue(tom.detail().contains("differs from the replay of its command log"), tom.detail());
+        assertTrue(tom.detail().contains("in both makings") && tom.detail().contains("robot 0 ends with"), tom.detail());
+        assertTrue(tom.madeAgain(), "made again once: " + tom);
         assertTrue(tom.points() < 10, "the score is the replay's (its robot never moved), not the 100 it claims: " + tom);
         assertFalse(tom.picture().isEmpty(), "its picture is the replay's");
 
