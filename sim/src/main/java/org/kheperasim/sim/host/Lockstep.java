@@ -152,10 +152,15 @@ public final class Lockstep {
         }
     }
 
-    /** The heap passed its threshold: the controller holding the turn is the one allocating. */
+    /**
+     * The heap passed its threshold: the controller holding the turn is the one allocating, when its
+     * thread is in its own code (inside the simulator's, the allocation may be the simulator's). The
+     * charge stops it at its next API call, in its turn: its end is in the command log like any other.
+     */
     private final java.util.function.Consumer<String> heapFull = what -> {
-        ControllerHost holder = hostAt(turn.holder());
-        if (holder != null) {
+        Turn.Seat seat = turn.holder();
+        ControllerHost holder = hostAt(seat);
+        if (holder != null && !seat.inSimulator()) {
             holder.exceededMemory(what);
         }
     };
@@ -278,8 +283,9 @@ public final class Lockstep {
             }
             if (++watches % HEAP_WATCH_EVERY == 0) {
                 String full = HeapWatch.nearlyFull();
-                ControllerHost holder = hostAt(turn.holder());
-                if (full != null && holder != null) {
+                Turn.Seat seat = turn.holder();
+                ControllerHost holder = hostAt(seat);
+                if (full != null && holder != null && !seat.inSimulator()) {
                     holder.exceededMemory(full);
                 }
             }
