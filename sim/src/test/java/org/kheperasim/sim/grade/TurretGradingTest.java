@@ -110,6 +110,71 @@ class TurretGradingTest {
         assertTrue(table.contains("; 0 reruns"), table);
     }
 
+    /**
+     * Three robots in one arena, each with the student's thread controller (a thread-style one that
+     * thinks now and then, a step controller), over three seeds: each run graded ok, made once, with
+     * the score {@code run} gives.
+     */
+    @Test
+    @Timeout(value = 400, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
+    void threeRobotsAreGradedOkWithTheScoreRunGivesOverSeveralSeeds() throws IOException {
+        boolean box = org.kheperasim.sim.sandbox.BoxProbe.unavailable().isEmpty();
+        if ("true".equals(System.getenv("CI"))) {
+            Hostile.requireBox();
+        }
+        Path arenaFile = dir.resolve("three.arena");
+        Files.writeString(arenaFile, Files.readString(Path.of("../arenas/lab.arena")).replace("robot 609.6 609.6 90",
+                "robot 300 300 0\nrobot 900 300 90\nrobot 600 900 180"));
+        Path subs = dir.resolve("subs");
+        write(subs.resolve("tess"), "Thinker", THINKER);
+        write(subs.resolve("stan"), "Stepper", STEPPER);
+        Path out = dir.resolve("out");
+        ReportFiles.Report report = Grader.grade(new Grader.Options(subs, List.of(arenaFile.toString()), 3, 2, out,
+                GradePlan.Shard.ALL, 256, 200, 5, 30.0, false, new PrintStream(OutputStream.nullOutputStream()), false, box, false));
+        Arena arena = ArenaFormat.resolve(arenaFile.toString());
+        assertEquals(6, report.runs().size());
+        for (RunRecord r : report.runs()) {
+            assertEquals(RunStatus.OK, r.status(), r.toString());
+            assertFalse(r.madeAgain(), "made once: " + r);
+            RunResult run = Simulation.builder().arena(arena).classpath(List.of(compiled(subs.resolve(r.student()), r.controller())))
+                    .controller(r.controller()).seed(r.seed()).seconds(30).run();
+            assertEquals(Score.of(arena, RunFacts.of(run)).points(), r.points(), 0.005, "the score run gives: " + r);
+        }
+    }
+
+    private static final String THINKER = """
+            import org.kheperasim.api.*;
+
+            public class Thinker extends Controller {
+                private long rounds, thought = 1;
+
+                @Override
+                protected void doWork() {
+                    int l = Math.max(proximity(IrSensor.LEFT_45), proximity(IrSensor.FRONT_LEFT));
+                    int r = Math.max(proximity(IrSensor.RIGHT_45), proximity(IrSensor.FRONT_RIGHT));
+                    setSpeeds(l > 500 || r > 500 ? (l >= r ? 3 : -3) : 5, l > 500 || r > 500 ? (l >= r ? -3 : 3) : 4);
+                    if (++rounds % 9 == 0) {
+                        for (int i = 0; i < 200_000; i++) {
+                            thought = thought * 6364136223846793005L + 1442695040888963407L;
+                        }
+                    }
+                    sleepMillis(thought == 0 ? 31 : 30);
+                }
+            }
+            """;
+
+    private static final String STEPPER = """
+            import org.kheperasim.api.*;
+
+            public class Stepper extends StepController {
+                @Override
+                protected void step() {
+                    int l = proximity(IrSensor.FRONT_LEFT), r = proximity(IrSensor.FRONT_RIGHT);
+                    setSpeeds(l > 600 ? 3 : 5, l > 600 ? -3 : (r > 600 ? 2 : 5));
+                }
+            }
+            """;
+
     private static void write(Path folder, String name, String source) throws IOException {
         Files.createDirectories(folder);
         Files.writeString(folder.resolve(name + ".java"), source);
