@@ -22,7 +22,8 @@ import org.kheperasim.sim.trace.TraceWriter;
 /**
  * A run made again from its command log, open loop: the same arena, seed and settings, and instead
  * of each controller a driver that wakes when the controller woke and sends what it sent, when it
- * sent it. No controller code runs. The engine is deterministic and a controller acts on the world
+ * sent it, taking the vision turret's images where the controller read them (the trace shows them).
+ * No controller code runs. The engine is deterministic and a controller acts on the world
  * only through those commands, so the replay computes the same world, byte for byte in its trace
  * (ReplayExactnessTest holds it to that over every bundled arena and controller): what the run scored is
  * computed here, by whoever replays it, never taken from the run.
