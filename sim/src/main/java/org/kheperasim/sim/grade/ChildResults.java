@@ -114,7 +114,8 @@ final class ChildResults {
             }
         }
         if (failures.isEmpty() && record.status() != RunStatus.OK) {
-            title += " · " + record.status().label() + (record.status() == RunStatus.TAMPERED ? " (the replay's points)" : "");
+            title += " · " + record.status().label() + (record.status() == RunStatus.TAMPERED || record.status() == RunStatus.DIVERGED
+                    ? " (the replay's points)" : "");
         }
         return new RunOutcome(title, failures, RunFacts.of(replay));
     }

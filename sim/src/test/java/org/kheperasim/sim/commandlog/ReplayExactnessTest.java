@@ -31,8 +31,11 @@ import org.kheperasim.sim.run.Simulation;
 /**
  * The open-loop replay of a run's command log gives the run's own trace, byte for byte: every bundled
  * arena with every bundled controller, and arenas of several robots (thread and step controllers,
- * different controllers side by side, caps pushed among robots). This is what lets a grader score
- * the replay instead of trusting what the run says it scored.
+ * different controllers side by side, caps pushed among robots), controllers that read the vision
+ * turret (the student API, a step controller, WSU's readLvtImage), three mixed robots over several
+ * seeds, what the wall clock decides (a 2 ms hang timeout with real-time jitter in the hand-offs, a
+ * stop by the wall clock). This is what lets a grader score the replay instead of trusting what the
+ * run says it scored. The cases tagged {@code timing} run again in {@code .ci/run}'s busy pass.
  */
 @Timeout(value = 900, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class ReplayExactnessTest {
