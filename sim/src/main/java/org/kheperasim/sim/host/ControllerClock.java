@@ -142,7 +142,11 @@ final class ControllerClock implements SimClock.Clock, PortClock {
     @Override
     public void leave() {
         now += apiCostNanos;
-        threads.running().seat.leaveSimulator(Turn.STUDENT);
+        Participant running = threads.running();
+        if (running != null) {
+            // Back in the controller's code (a constructor's look around entered nothing: leaving changes nothing).
+            running.seat.leaveSimulator(Turn.STUDENT);
+        }
     }
 
     /** The running thread's slice is used up: step the world on this thread until it runs again. */
