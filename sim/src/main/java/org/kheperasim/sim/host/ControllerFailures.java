@@ -70,6 +70,15 @@ final class ControllerFailures {
     }
 
     /**
+     * @param e a throwable of the controller's whose own methods threw when asked about it
+     * @param why what they threw
+     * @return what can be told of it without calling its methods: its class
+     */
+    static String unreadable(Throwable e, Throwable why) {
+        return e.getClass().getName() + " (its message could not be read: its " + why.getClass().getName() + ")";
+    }
+
+    /**
      * The student's part of a stack trace, for each exception in it (the thrown one, each cause and
      * suppressed one): the frames of the simulator's own code (and reflection's) above the first
      * other frame are left out, so an API call that threw shows the student's line that called it;

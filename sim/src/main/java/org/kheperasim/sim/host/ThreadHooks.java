@@ -78,6 +78,9 @@ public final class ThreadHooks {
         if (p != null) {
             p.interruptPending = true;
             c.interrupt(p);
+        } else if (SimClock.current() instanceof ControllerClock mine) {
+            // Not started yet: it starts interrupted, whichever thread then runs its code.
+            mine.interruptedUnstarted(thread);
         }
     }
 
@@ -122,7 +125,7 @@ public final class ThreadHooks {
     /** Replaces {@link Thread#currentThread()}: on a thread of the controller, its {@code Thread} object. */
     public static Thread currentThread() {
         ControllerClock c = onTurn();
-        return c == null ? Thread.currentThread() : c.runningThread();
+        return c == null ? ThreadRunners.objectOf(Thread.currentThread()) : c.runningThread();
     }
 
     /** Put before every {@code monitorenter} of controller code (and at the start of a synchronized method). */
