@@ -187,6 +187,22 @@ final class ThreadRunners {
         return OVERRIDES.get(type);
     }
 
+    /** @return true when {@code type}'s {@code interrupt()} is not {@code Thread}'s own */
+    static boolean overridesInterrupt(Class<?> type) {
+        return OVERRIDES_INTERRUPT.get(type);
+    }
+
+    private static final ClassValue<Boolean> OVERRIDES_INTERRUPT = new ClassValue<>() {
+        @Override
+        protected Boolean computeValue(Class<?> type) {
+            try {
+                return type.getMethod("interrupt").getDeclaringClass() != Thread.class;
+            } catch (NoSuchMethodException e) {
+                return false;
+            }
+        }
+    };
+
     private static final ClassValue<Boolean> OVERRIDES = new ClassValue<>() {
         @Override
         protected Boolean computeValue(Class<?> type) {

@@ -111,6 +111,98 @@ class OverridingControllerTest {
             "@Override public boolean isInterrupted() { " + SPIN + " return false; }"},
     };
 
+    /**
+     * A controller with a helper thread, looking at both threads the ways contained code may: who
+     * is current, alive, interrupted, in which state; an interrupt before start, join, interrupting
+     * itself. The placeholders take the overrides of the helper's class and of the controller's.
+     */
+    private static final String CREW = """
+            import org.kheperasim.api.*;
+
+            public class %1$s extends Thread {
+                private final CurrentRobotState data;
+                private final MessagePasser mp;
+                volatile int seen;
+                volatile boolean stopping;
+
+                public %1$s(CurrentRobotState data, MessagePasser mp) {
+                    this.data = data;
+                    this.mp = mp;
+                }
+
+                class Helper extends Thread {
+                    @Override
+                    public void run() {
+                        mp.sendMessage("helper current " + (Thread.currentThread() == this) + " alive " + isAlive()
+                                + " state " + getState() + " interrupted " + isInterrupted());
+                        try {
+                            while (true) {
+                                seen++;
+                                Thread.sleep(30);
+                            }
+                        } catch (InterruptedException e) {
+                            mp.sendMessage("helper interrupted after " + seen + ", flag " + isInterrupted());
+                        }
+                    }
+                    %2$s
+                }
+
+                @Override
+                public void run() {
+                    mp.sendMessage("main current " + (Thread.currentThread() == this) + " state " + getState());
+                    Helper early = new Helper();
+                    early.interrupt();
+                    early.start();
+                    Helper h = new Helper();
+                    mp.sendMessage("helper before start: alive " + h.isAlive() + " state " + h.getState());
+                    h.start();
+                    Motor m = data.getMotorState();
+                    try {
+                        Thread.sleep(1);
+                        mp.sendMessage("helper started: alive " + h.isAlive() + " state " + h.getState());
+                        for (int i = 0; i < 20; i++) {
+                            m.setMotorSpeeds(3 + seen %% 4, 3);
+                            Thread.sleep(100);
+                        }
+                        h.interrupt();
+                        h.join();
+                        early.join(1000);
+                        mp.sendMessage("helper joined: alive " + h.isAlive() + " state " + h.getState() + " seen " + seen);
+                    } catch (InterruptedException e) {
+                        mp.sendMessage("main interrupted too soon");
+                    }
+                    interrupt();
+                    try {
+                        Thread.sleep(10);
+                    } catch (InterruptedException e) {
+                        mp.sendMessage("main saw its own interrupt, flag " + isInterrupted());
+                    }
+                    while (true) {
+                        m.setMotorSpeeds(4, 5);
+                        try {
+                            Thread.sleep(100);
+                        } catch (InterruptedException e) {
+                            // go on
+                        }
+                    }
+                }
+                %3$s
+            }
+            """;
+
+    /** Name, the helper's overrides, the controller's overrides. */
+    private static final String[][] CREWS = {
+        {"Crew", "", ""},
+        {"CrewOverriding",
+            "@Override public void interrupt() { stopping = true; super.interrupt(); }\n"
+                + "@Override public synchronized void start() { seen += 0; super.start(); }\n"
+                + "@Override public String toString() { throw new IllegalStateException(); }\n"
+                + "@Override public int hashCode() { throw new IllegalStateException(); }",
+            "@Override public String toString() { throw new IllegalStateException(); }\n"
+                + "@Override public boolean equals(Object o) { throw new IllegalStateException(); }\n"
+                + "@Override public void interrupt() { super.interrupt(); }"},
+    };
+
     @BeforeAll
     static void compile() throws IOException {
         classes = dir.resolve("classes");
@@ -120,6 +212,11 @@ class OverridingControllerTest {
             Path f = dir.resolve(c[0] + ".java");
             Files.writeString(f, "import org.kheperasim.api.*;\n\npublic class " + c[0] + " extends Thread {\n"
                     + DRIVER.formatted(c[0], c.length > 3 ? c[3] : "active = false;", c[1]) + "\n" + c[2] + "\n}\n");
+            files.add(f.toString());
+        }
+        for (String[] c : CREWS) {
+            Path f = dir.resolve(c[0] + ".java");
+            Files.writeString(f, CREW.formatted(c[0], c[1], c[2]));
             files.add(f.toString());
         }
         JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
@@ -208,5 +305,18 @@ class OverridingControllerTest {
         for (String c : List.of("HangsInterruptSpins", "HangsInterruptThrows", "HangsInterruptedSpins")) {
             assertLike(plain, c);
         }
+    }
+
+    @Test
+    void threadsItStartsBehaveTheSameWhenTheirClassesOverrideThreadsMethods() {
+        Outcome plain = run("Crew");
+        assertEquals(List.of("main current true state RUNNABLE", "helper before start: alive false state NEW",
+                "helper current true alive true state RUNNABLE interrupted true", "helper interrupted after 1, flag false",
+                "helper current true alive true state RUNNABLE interrupted false",
+                "helper started: alive true state TIMED_WAITING", "helper interrupted after 68, flag false",
+                "helper joined: alive false state TERMINATED seen 68", "main saw its own interrupt, flag false"),
+                plain.console, plain.text());
+        Outcome o = assertLike(plain, "CrewOverriding");
+        assertEquals(plain.console, o.console);
     }
 }
