@@ -102,6 +102,17 @@ class OverridingControllerTest {
             "@Override public UncaughtExceptionHandler getUncaughtExceptionHandler() { return null; }"},
         {"QuitsHandlerIgnored", "if (steps == 50) { throw new IllegalStateException(\"gave up\"); }",
             "@Override public void setUncaughtExceptionHandler(UncaughtExceptionHandler h) { }"},
+        // Throws an exception whose own methods spin or throw on any thread but the one that threw it.
+        {"QuitsOddly", "if (steps == 50) { throw new Odd(\"gave up\"); }",
+            "static class Odd extends IllegalStateException {\n"
+                + "    final Thread where = Thread.currentThread();\n"
+                + "    Odd(String m) { super(m); }\n"
+                + "    @Override public String toString() { if (Thread.currentThread() != where) { " + SPIN + " } return super.toString(); }\n"
+                + "    @Override public String getMessage() { if (Thread.currentThread() != where) { throw new IllegalStateException(); }"
+                + " return super.getMessage(); }\n"
+                + "    @Override public StackTraceElement[] getStackTrace() { if (Thread.currentThread() != where) {"
+                + " throw new IllegalStateException(); } return super.getStackTrace(); }\n"
+                + "}"},
         // Hangs at 3 s of simulated time: the watchdog stops it (and interrupts its thread).
         {"Hangs", "if (steps == 30) { " + SPIN + " }", ""},
         {"HangsInterruptSpins", "if (steps == 30) { " + SPIN + " }", "@Override public void interrupt() { " + SPIN + " }"},
@@ -296,6 +307,14 @@ class OverridingControllerTest {
             assertTrue(o.text().contains("threw java.lang.IllegalStateException: gave up"), c + ": " + o.text());
             assertEquals(plain.result.first().failure().lines().findFirst(), o.result.first().failure().lines().findFirst(), c);
         }
+    }
+
+    @Test
+    void whatTheControllerThrewIsToldWithoutAskingTheExceptionAgainOnTheSimulatorsThreads() {
+        Outcome plain = run("Quits");
+        Outcome o = assertLike(plain, "QuitsOddly");
+        assertEquals("QuitsOddly$Odd: gave up", o.result.first().failure(), o.text());
+        assertTrue(o.text().startsWith("threw C$Odd: gave up; the robot was stopped.\nC$Odd: gave up\n\tat C.run(C.java:"), o.text());
     }
 
     @Test
