@@ -192,14 +192,7 @@ public final class ControllerHost implements HostedController {
 
     /** A thread the controller started threw: it ends (the controller goes on), and the turn goes back to the owner. */
     private void helperDied(Participant p, Throwable e) {
-        String message;
-        try {
-            message = helperMessage(p, e);
-        } catch (RuntimeException | Error unreadable) {
-            // Its exception's own methods (toString, getCause, printStackTrace) threw.
-            message = "thread " + p + " that the controller started threw " + ControllerFailures.unreadable(e, unreadable)
-                    + "; that thread ended, the controller goes on.";
-        }
+        String message = ControllerFailures.helperThrew("thread " + p + " that the controller started", e);
         if (message != null) {
             say(ConsoleLine.Kind.ERROR, message);
         }
@@ -208,18 +201,6 @@ public final class ControllerHost implements HostedController {
             helperEnded(p);
             lockstep.passTo(null);
         }
-    }
-
-    private static String helperMessage(Participant p, Throwable e) {
-        if (ControllerFailures.isHeadless(e)) {
-            return "thread " + p + " that the controller started " + ControllerFailures.HEADLESS.substring(0,
-                    ControllerFailures.HEADLESS.indexOf(" The controller was stopped")) + " That thread ended; the controller goes on.";
-        }
-        if (!(e instanceof ControllerStoppedError)) {
-            return "thread " + p + " that the controller started threw " + e + "; that thread"
-                    + " ended, the controller goes on.\n" + ControllerFailures.studentTrace(e);
-        }
-        return null;
     }
 
     /** The watchdog saw a thread the controller started end while it held the turn: its run() returned. */
@@ -392,11 +373,12 @@ public final class ControllerHost implements HostedController {
 
     /** The run is being stopped while this controller holds the turn without progress: it unwinds at its next loop or call. */
     void stopSoon() {
-        // Its own thread calls its killControl() when it sees the stop, at its next loop or call.
-        killWanted = true;
-        if (!life.on(ControllerLife.Event.STOP)) {
-            killWanted = false; // stopping already, or ended: it was not asked the Appendix's way now
+        // Its own thread calls its killControl() when it sees the stop, at its next loop or call; asked
+        // again (every watch period while it makes no progress), it is not asked twice.
+        if (life.state().phase() == ControllerLife.Phase.RUNNING) {
+            killWanted = true;
         }
+        life.on(ControllerLife.Event.STOP);
     }
 
     /** The controller has just ended: its robot stops, and it never needs the turn again. */
@@ -417,15 +399,7 @@ public final class ControllerHost implements HostedController {
             if (e instanceof OutOfMemoryError) {
                 HeapWatch.ranOut(); // before the message is made
             }
-            String who = "controller " + name + " (" + type.getName() + ")";
-            ControllerFailures.Verdict v;
-            try {
-                v = ControllerFailures.verdict(e, who);
-            } catch (RuntimeException | Error unreadable) {
-                // Its exception's own methods (toString, getCause, printStackTrace) threw: it failed all the same.
-                v = new ControllerFailures.Verdict(ControllerStatus.FAILED, "threw "
-                        + ControllerFailures.unreadable(e, unreadable) + "; the robot was stopped.");
-            }
+            ControllerFailures.Verdict v = ControllerFailures.verdictOrUnreadable(e, "controller " + name + " (" + type.getName() + ")");
             if (v.message() != null) {
                 life.failedWith(e);
                 say(ConsoleLine.Kind.ERROR, v.message());
