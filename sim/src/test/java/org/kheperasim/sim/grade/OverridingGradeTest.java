@@ -20,8 +20,8 @@ import org.kheperasim.sim.cli.Main;
 /**
  * {@code grade} of students whose controllers override their {@code Thread}'s methods or the
  * Appendix's {@code killControl()} to spin or throw: each run ends as the same controller's without
- * the override does, with its status and its points, well inside the wall limit (before the fix a
- * spinning {@code killControl()} ran on the run's own thread, and the run took the whole limit).
+ * the override does, with its status and its points (before the fix a spinning {@code killControl()}
+ * ran on the run's own thread: the run took the whole wall limit and was graded hung).
  */
 class OverridingGradeTest {
     @TempDir
@@ -80,10 +80,8 @@ class OverridingGradeTest {
         student(subs, "quitsnohandler", "active = false;", QUIT,
                 "@Override public UncaughtExceptionHandler getUncaughtExceptionHandler() { " + SPIN + " return null; }");
         Path out = dir.resolve("report");
-        long start = System.nanoTime();
         String printed = grade("--submissions", subs.toString(), "--arenas", "maze", "--seeds", "1", "--seconds", "20",
                 "--jobs", "2", "--out", out.toString(), "--hang-timeout", "5", "--wall-limit", "120", "--no-sandbox");
-        double wall = (System.nanoTime() - start) / 1e9;
 
         Map<String, RunRecord> runs = new TreeMap<>();
         for (RunRecord r : ReportFiles.readCsv(out.resolve("results.csv"))) {
@@ -99,8 +97,6 @@ class OverridingGradeTest {
         assertSame(quits, runs.get("quitsnohandler"), printed);
         assertTrue(runs.get("quitsnohandler").detail().startsWith("java.lang.IllegalStateException: gave up"),
                 runs.get("quitsnohandler").detail());
-        // Seven runs of 20 simulated seconds on two workers: a run that took its wall limit would take 120 s alone.
-        assertTrue(wall < 120, "the grading took " + wall + " s");
     }
 
     private static void assertSame(RunRecord expected, RunRecord actual, String printed) {
