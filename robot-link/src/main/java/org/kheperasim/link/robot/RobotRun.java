@@ -91,18 +91,30 @@ public final class RobotRun {
             Thread controller = Controllers.instantiate(type, new CurrentRobotState(b), new MessagePasser(
                     new ForwardingMessages(b, say)));
             controller.setDaemon(true);
-            controller.setUncaughtExceptionHandler((t, e) -> {
-                if (!(e instanceof ControllerStoppedError)) {
-                    thrown = e;
-                }
-            });
+            // The controller's own methods run on a thread of their own (ControllerCalls): an override that
+            // spins or blocks never holds this thread, which stops the robot.
+            ControllerCalls.Outcome handler = ControllerCalls.call(name, STOP_GRACE_MILLIS, () ->
+                    controller.setUncaughtExceptionHandler((t, e) -> {
+                        if (!(e instanceof ControllerStoppedError)) {
+                            thrown = e;
+                        }
+                    }));
+            if (!handler.returned()) {
+                say.accept("its setUncaughtExceptionHandler() did not return within " + STOP_GRACE_MILLIS / 1000 + " s;"
+                        + " what it throws will not be told");
+            }
             try {
                 backend.start(10_000);
             } catch (SessionException e) {
                 backend.stop();
                 throw e;
             }
-            controller.start();
+            ControllerCalls.Outcome started = ControllerCalls.call(name, STOP_GRACE_MILLIS, controller::start);
+            if (started.thrown() != null) {
+                thrown = started.thrown();
+            } else if (!started.returned()) {
+                say.accept("its start() did not return within " + STOP_GRACE_MILLIS / 1000 + " s");
+            }
             long deadline = maxMillis > 0 ? System.nanoTime() + maxMillis * 1_000_000L : Long.MAX_VALUE;
             End end;
             String detail;
@@ -110,7 +122,8 @@ public final class RobotRun {
                 controller.join(20);
                 if (!controller.isAlive()) {
                     end = thrown == null ? End.FINISHED : End.FAILED;
-                    detail = thrown == null ? "the controller's run() returned" : "the controller threw " + thrown;
+                    detail = thrown == null ? "the controller's run() returned"
+                            : "the controller threw " + ControllerCalls.describe(name, thrown);
                     break;
                 }
                 if (backend.failure() != null) {
@@ -132,16 +145,22 @@ public final class RobotRun {
             // Stop the wheels first: after this nothing more is sent, whatever the controller does.
             boolean acknowledged = backend.stop();
             if (controller.isAlive()) {
-                Controllers.requestStop(controller);
-                controller.interrupt();
-                controller.join(STOP_GRACE_MILLIS);
+                long graceEnd = System.nanoTime() + STOP_GRACE_MILLIS * 1_000_000L;
+                ControllerCalls.call(name, STOP_GRACE_MILLIS, () -> {
+                    try {
+                        Controllers.requestStop(controller);
+                    } finally {
+                        controller.interrupt();
+                    }
+                });
+                controller.join(StrictMath.max(1, (graceEnd - System.nanoTime()) / 1_000_000L));
                 if (controller.isAlive()) {
                     say.accept("did not stop within " + STOP_GRACE_MILLIS / 1000 + " s of being asked; it was left"
                             + " behind (the robot is already stopped)");
                 }
             }
             if (thrown != null && end != End.FAILED) {
-                say.accept("threw " + thrown + " while stopping");
+                say.accept("threw " + ControllerCalls.describe(name, thrown) + " while stopping");
             }
             return new Result(end, detail, backend.pollRateHz(), backend.session().stats(), acknowledged, thrown);
         } finally {

@@ -24,6 +24,7 @@ import org.kheperasim.link.io.SerialSettings;
 import org.kheperasim.link.session.Session;
 import org.kheperasim.link.testcontrollers.Fast;
 import org.kheperasim.link.testcontrollers.Forward;
+import org.kheperasim.link.testcontrollers.Overriding;
 import org.kheperasim.link.testcontrollers.Returner;
 import org.kheperasim.link.testcontrollers.Thrower;
 import org.kheperasim.link.timing.LinkTiming;
@@ -105,6 +106,23 @@ class RobotRunPtyTest {
             int spin = d.indexOf("D,4,-4");
             assertTrue(cruise >= 0 && cruise < spin, "the steps' speeds reached the robot, in order: " + d);
             assertTrue(r.pollRateHz() > 5, "the sensors were polled for the steps: " + r.pollRateHz());
+            assertStoppedLast(robot);
+        }
+    }
+
+    @Test
+    void aControllerWhoseKillControlAndInterruptBlockIsLeftBehindWithTheRobotStopped() throws Exception {
+        try (FakeRobotOnPty fake = FakeRobotOnPty.start(dir, null)) {
+            FakeKhepera robot = fake.robot();
+            long start = System.nanoTime();
+            RobotRun.Result r = run(fake, Overriding.class, RobotSettings.defaults(), 30_000, (rb, run) -> {
+                awaitReceived(rb, "D,5,5", 0);          // started, through its own start()
+                run.requestStop("the run was seen");
+            });
+            // Its killControl() and interrupt() block 30 s each: robot-link waits the 2 s grace for them, not longer.
+            assertTrue(System.nanoTime() - start < 25_000_000_000L, "the run ended after the grace: " + console);
+            assertEquals(RobotRun.End.STOPPED, r.end(), r.detail());
+            assertTrue(console.stream().anyMatch(l -> l.contains("did not stop within 2 s of being asked")), console.toString());
             assertStoppedLast(robot);
         }
     }

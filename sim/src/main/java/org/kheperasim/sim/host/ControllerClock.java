@@ -330,7 +330,7 @@ final class ControllerClock implements SimClock.Clock, PortClock {
         }
         if (!onTurn()) {
             host.adoptStray(thread);
-            return false;
+            return true;
         }
         host.checkStop();
         host.prepare(threads.add(thread, now));
@@ -420,6 +420,13 @@ final class ControllerClock implements SimClock.Clock, PortClock {
 
     void interrupt(Participant p) {
         threads.interrupted(p, now);
+    }
+
+    /** The controller's code interrupted {@code t} before starting it (on its own thread, or in its constructor). */
+    void interruptedUnstarted(Thread t) {
+        if (onTurn() || host.constructing()) {
+            threads.interruptedUnstarted(t);
+        }
     }
 
     /** {@code p.join(millis)}: the caller sleeps a millisecond at a time until {@code p} has ended. */

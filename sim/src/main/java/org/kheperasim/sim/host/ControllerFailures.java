@@ -70,6 +70,47 @@ final class ControllerFailures {
     }
 
     /**
+     * {@link #verdict}, on the controller's thread; when the throwable's own methods (its class's to
+     * override: toString, getCause, printStackTrace) throw, it failed all the same, told by its class.
+     */
+    static Verdict verdictOrUnreadable(Throwable e, String who) {
+        try {
+            return verdict(e, who);
+        } catch (RuntimeException | Error unreadable) {
+            return new Verdict(ControllerStatus.FAILED, "threw " + unreadable(e, unreadable) + "; the robot was stopped.");
+        }
+    }
+
+    /**
+     * @param thread the thread, as the student knows it ({@code thread 'name' that the controller started})
+     * @param e what a thread the controller started ended with
+     * @return what the student is told (it ended, the controller goes on), or null for the simulator's stop
+     */
+    static String helperThrew(String thread, Throwable e) {
+        try {
+            if (isHeadless(e)) {
+                return thread + " " + HEADLESS.substring(0, HEADLESS.indexOf(" The controller was stopped"))
+                        + " That thread ended; the controller goes on.";
+            }
+            if (!(e instanceof ControllerStoppedError)) {
+                return thread + " threw " + e + "; that thread ended, the controller goes on.\n" + studentTrace(e);
+            }
+            return null;
+        } catch (RuntimeException | Error unreadable) {
+            return thread + " threw " + unreadable(e, unreadable) + "; that thread ended, the controller goes on.";
+        }
+    }
+
+    /**
+     * @param e a throwable of the controller's whose own methods threw when asked about it
+     * @param why what they threw
+     * @return what can be told of it without calling its methods: its class
+     */
+    static String unreadable(Throwable e, Throwable why) {
+        return e.getClass().getName() + " (its message could not be read: its " + why.getClass().getName() + ")";
+    }
+
+    /**
      * The student's part of a stack trace, for each exception in it (the thrown one, each cause and
      * suppressed one): the frames of the simulator's own code (and reflection's) above the first
      * other frame are left out, so an API call that threw shows the student's line that called it;

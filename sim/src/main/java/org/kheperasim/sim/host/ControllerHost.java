@@ -34,6 +34,12 @@ public final class ControllerHost implements HostedController {
     private final StrayThreads strays = new StrayThreads(this);
     /** The thread constructing the controller, while it does; threads started then join the lockstep. */
     private volatile Thread constructing;
+    /**
+     * Set when the controller is asked to stop the Appendix's way: its own thread calls its
+     * {@code killControl()} at its next API call or loop, holding the turn, just before it unwinds
+     * (never the run's owner or another thread of the simulator's, see {@link #checkStop}).
+     */
+    private volatile boolean killWanted;
 
     /**
      * Construct the controller (it does not start until the engine first runs it).
@@ -67,14 +73,12 @@ public final class ControllerHost implements HostedController {
         }
         controller = created;
         threads.main(created);
-        threads.main().chooseRunner(clock, ThreadRunners.contained(type));
+        threads.main().chooseRunner(clock, ThreadRunners.contained(type), (t, e) -> ended(e));
         for (Participant p : threads.all()) {
             if (p.index > 0) {
                 prepare(p);
             }
         }
-        controller.setDaemon(true);
-        controller.setUncaughtExceptionHandler((t, e) -> ended(e));
     }
 
     /** @return the controller's name in messages: its simple class name, with its robot's index when there are several (Name#3) */
@@ -169,11 +173,11 @@ public final class ControllerHost implements HostedController {
     }
 
     /**
-     * A thread the controller started from a thread outside the lockstep (its window's event
-     * thread): it runs on the wall clock, and ends with the run.
+     * A thread the controller started from a thread outside the lockstep (a timer's, its window's
+     * event thread): it runs on the wall clock, and ends with the run. Started here.
      */
     void adoptStray(Thread t) {
-        strays.add(t);
+        strays.start(t, ThreadRunners.contained(type));
     }
 
     /** @return true on the thread constructing the controller, while it does */
@@ -183,18 +187,14 @@ public final class ControllerHost implements HostedController {
 
     /** A thread the controller's code started: it takes part in the lockstep, and ends with the controller. */
     void prepare(Participant p) {
-        p.thread.setDaemon(true);
-        p.thread.setUncaughtExceptionHandler((th, e) -> helperDied(p, e));
+        p.chooseRunner(clock, ThreadRunners.contained(type), (th, e) -> helperDied(p, e));
     }
 
     /** A thread the controller started threw: it ends (the controller goes on), and the turn goes back to the owner. */
     private void helperDied(Participant p, Throwable e) {
-        if (ControllerFailures.isHeadless(e)) {
-            say(ConsoleLine.Kind.ERROR, "thread " + p + " that the controller started " + ControllerFailures.HEADLESS.substring(0,
-                    ControllerFailures.HEADLESS.indexOf(" The controller was stopped")) + " That thread ended; the controller goes on.");
-        } else if (!(e instanceof ControllerStoppedError)) {
-            say(ConsoleLine.Kind.ERROR, "thread " + p + " that the controller started threw " + e + "; that thread"
-                    + " ended, the controller goes on.\n" + ControllerFailures.studentTrace(e));
+        String message = ControllerFailures.helperThrew("thread " + p + " that the controller started", e);
+        if (message != null) {
+            say(ConsoleLine.Kind.ERROR, message);
         }
         Turn turn = lockstep.turn();
         if (turn.heldBy(p.seat)) {
@@ -228,9 +228,19 @@ public final class ControllerHost implements HostedController {
         }
     }
 
-    /** Unwind the controller's thread when it has been asked to stop. */
+    /**
+     * Unwind the controller's thread when it has been asked to stop. Asked the Appendix's way (the
+     * run's end, the user's Stop, a hang), the controller's own thread first calls its
+     * {@code killControl()}, once: the controller's code on the controller's thread, holding the
+     * turn and watched like the rest of its code (what it throws is ignored; if it never returns,
+     * the controller is left behind as one that ignores the stop).
+     */
     void checkStop() {
         if (life.stopRequested()) {
+            if (killWanted && Thread.currentThread() == threads.main().runner) {
+                killWanted = false;
+                Controllers.requestStop(controller);
+            }
             throw new ControllerStoppedError("controller " + name + " was stopped");
         }
     }
@@ -238,8 +248,8 @@ public final class ControllerHost implements HostedController {
     // ------------------------------------------------------------------ the end of its life
 
     /**
-     * Stop the controller: call its {@code killControl()}, then unwind its thread (the owner gives
-     * it the turn so that it sees the stop). Returns when the thread has ended, or after a grace
+     * Stop the controller: its thread is given the turn, calls its {@code killControl()} and
+     * unwinds (see {@link #checkStop}). Returns when the thread has ended, or after a grace
      * period (the controller is then detached and reported). Called by the run's owner.
      */
     void stop() {
@@ -249,8 +259,8 @@ public final class ControllerHost implements HostedController {
             return;
         }
         if (!life.status().ended()) {
+            killWanted = true;
             life.on(ControllerLife.Event.STOP);
-            Controllers.requestStop(controller);
             clock.switchTo(threads.main());
             lockstep.awaitOwner(STOP_GRACE_MILLIS * 1_000_000L);
             // Its thread is let go before it is interrupted: if that ends it, it must not pass the turn.
@@ -324,8 +334,8 @@ public final class ControllerHost implements HostedController {
                 realSeconds, returnsAtOnce));
         if (who.index == 0) {
             // Let go before it is interrupted: if that ends it, it must not pass the turn.
+            killWanted = true;
             boolean ends = life.on(ControllerLife.Event.HUNG);
-            Controllers.requestStop(controller);
             threads.main().interrupt();
             if (ends) {
                 afterEnd();
@@ -363,10 +373,12 @@ public final class ControllerHost implements HostedController {
 
     /** The run is being stopped while this controller holds the turn without progress: it unwinds at its next loop or call. */
     void stopSoon() {
-        // Stopping before the controller's own killControl() runs: that may wait for a lock the loop holds.
-        if (life.on(ControllerLife.Event.STOP)) {
-            Controllers.requestStop(controller);
+        // Its own thread calls its killControl() when it sees the stop, at its next loop or call; asked
+        // again (every watch period while it makes no progress), it is not asked twice.
+        if (life.state().phase() == ControllerLife.Phase.RUNNING) {
+            killWanted = true;
         }
+        life.on(ControllerLife.Event.STOP);
     }
 
     /** The controller has just ended: its robot stops, and it never needs the turn again. */
@@ -389,7 +401,7 @@ public final class ControllerHost implements HostedController {
             if (e instanceof OutOfMemoryError) {
                 HeapWatch.ranOut(); // before the message is made
             }
-            ControllerFailures.Verdict v = ControllerFailures.verdict(e, "controller " + name + " (" + type.getName() + ")");
+            ControllerFailures.Verdict v = ControllerFailures.verdictOrUnreadable(e, "controller " + name + " (" + type.getName() + ")");
             if (v.message() != null) {
                 life.failedWith(e);
                 say(ConsoleLine.Kind.ERROR, v.message());

@@ -255,12 +255,20 @@ final class ControllerLife {
         return ownThreadOver;
     }
 
-    /** @param e what the controller threw, which ended it */
+    /**
+     * @param e what the controller threw, which ended it; call this on the thread it was thrown on:
+     *     its description is read there, once ({@link ReportedFailure})
+     */
     void failedWith(Throwable e) {
-        failure = e;
+        try {
+            failure = ReportedFailure.of(e);
+        } catch (VirtualMachineError full) {
+            // No room for the copy (the heap just ran out): a JDK throwable is kept as it is, its methods are the JDK's.
+            failure = e.getClass().getClassLoader() == null ? e : null;
+        }
     }
 
-    /** @return what the controller threw, or null */
+    /** @return what the controller threw, as the simulator's copy of it ({@link ReportedFailure}), or null */
     Throwable failure() {
         return failure;
     }

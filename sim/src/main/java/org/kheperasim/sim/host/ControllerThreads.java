@@ -35,24 +35,26 @@ final class ControllerThreads {
     private long waits;
     /** Threads the controller's constructor started, before its own thread exists. */
     private final List<Thread> pending = new ArrayList<>();
+    /** Threads its code interrupted before they were started: each starts interrupted, as in the JDK. */
+    private final List<Thread> interruptedUnstarted = new ArrayList<>();
 
     /**
      * The controller's own thread, participant 0, due at once; then the threads its constructor
      * started, due at once too (they first run when it first gives up the turn).
      */
     void main(Thread controller) {
-        Participant p = new Participant(0, controller, 0);
+        Participant p = participant(0, controller, 0);
         all.add(p);
         running = p;
         for (Thread t : pending) {
-            all.add(new Participant(all.size(), t, 0));
+            all.add(participant(all.size(), t, 0));
         }
         pending.clear();
     }
 
     /** A thread the controller's constructor starts. */
     void addPending(Thread t) {
-        if (pending.contains(t) || t.getState() != Thread.State.NEW) {
+        if (indexOf(pending, t) >= 0 || ThreadRunners.started(t)) {
             throw new IllegalThreadStateException("thread '" + t.getName() + "' was already started");
         }
         pending.add(t);
@@ -127,12 +129,39 @@ final class ControllerThreads {
      * @throws IllegalThreadStateException when it was started before, as {@code Thread.start} would
      */
     Participant add(Thread t, long now) {
-        if (of(t) != null || t.getState() != Thread.State.NEW) {
+        if (of(t) != null || ThreadRunners.started(t)) {
             throw new IllegalThreadStateException("thread '" + t.getName() + "' was already started");
         }
-        Participant p = new Participant(all.size(), t, now);
+        Participant p = participant(all.size(), t, now);
         all.add(p);
         return p;
+    }
+
+    /** Its code interrupted {@code t}, which it has not started yet (nor the lockstep). */
+    void interruptedUnstarted(Thread t) {
+        if (indexOf(interruptedUnstarted, t) < 0) {
+            interruptedUnstarted.add(t);
+        }
+    }
+
+    private Participant participant(int index, Thread t, long wake) {
+        Participant p = new Participant(index, t, wake);
+        int early = indexOf(interruptedUnstarted, t);
+        if (early >= 0) {
+            interruptedUnstarted.remove(early);
+            p.interruptPending = true;
+        }
+        return p;
+    }
+
+    /** By identity: a thread's {@code equals} is its class's to override. */
+    private static int indexOf(List<Thread> list, Thread t) {
+        for (int i = 0; i < list.size(); i++) {
+            if (list.get(i) == t) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     private boolean runnable(Participant p) {

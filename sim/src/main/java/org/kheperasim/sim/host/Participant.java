@@ -53,25 +53,30 @@ final class Participant {
     }
 
     /**
-     * Choose the thread that will run the controller's own code (see {@link ThreadRunners}); on the
-     * thread that constructed the controller, just after. The threads its code starts keep
-     * theirs: they may ask for a stack size, which a virtual thread cannot honour.
+     * Choose the thread that will run its code (see {@link ThreadRunners}), and make it ready: on
+     * the thread that constructed the controller, just after, for the threads that exist then; on
+     * the thread that starts it for the others.
      *
      * @param clock the controller's clock, bound in the runner
      * @param contained true when the controller's code is contained (see {@link ThreadRunners#runnerOf})
+     * @param handler told what its code threw
      */
-    void chooseRunner(SimClock.Clock clock, boolean contained) {
-        Thread r = ThreadRunners.runnerOf(thread, clock, contained);
+    void chooseRunner(SimClock.Clock clock, boolean contained, Thread.UncaughtExceptionHandler handler) {
+        Thread r = ThreadRunners.runnerOf(thread, clock, contained, index == 0, handler);
         if (r != thread) {
             runner = r;
-            seat.seat(r, true);
+            seat.seat(r, !(r instanceof ThreadRunners.Runner));
         }
     }
 
-    /** Start its thread, the first time it is given the turn. */
+    /**
+     * Start its thread, the first time it is given the turn. An interrupt its code received before
+     * its start is carried to a runner: told by the lockstep's record for an object whose methods
+     * are the student's, by its own flag otherwise.
+     */
     void start() {
         Thread r = runner;
-        if (r != thread && thread.isInterrupted()) {
+        if (r != thread && (interruptPending || !ThreadRunners.overrides(thread.getClass()) && thread.isInterrupted())) {
             r.interrupt();
         }
         started = true;
@@ -83,10 +88,16 @@ final class Participant {
         return thread == t || runner == t;
     }
 
-    /** Interrupt it: the object its code knows, and the thread running that code. */
+    /**
+     * Interrupt it: the thread running its code, and the object its code knows when its
+     * {@code interrupt()} is the JDK's (an override is never called: nothing reads the object's own
+     * flag when another thread runs its code).
+     */
     void interrupt() {
-        thread.interrupt();
         Thread r = runner;
+        if (r == thread || !ThreadRunners.overrides(thread.getClass())) {
+            thread.interrupt();
+        }
         if (r != thread) {
             r.interrupt();
         }

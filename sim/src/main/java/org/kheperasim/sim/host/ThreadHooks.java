@@ -66,9 +66,41 @@ public final class ThreadHooks {
         return p == null ? ThreadRunners.of(thread).isAlive() : !p.done;
     }
 
-    /** Replaces {@link Thread#interrupt()}: a thread of the controller that sleeps or waits wakes at once. */
+    /**
+     * Replaces {@code super.start()} in a {@code Thread} subclass's own {@code start()}: the thread
+     * joins the run as with {@link #start}; outside a run its code runs on a thread of its own
+     * ({@code Thread.start} itself cannot be reached past the override).
+     */
+    public static void superStart(Thread thread) {
+        SimClock.Clock c = SimClock.current();
+        if (c != null && c.adopt(thread)) {
+            return;
+        }
+        if (ThreadRunners.started(thread)) {
+            throw new IllegalThreadStateException("thread '" + thread.getName() + "' was already started");
+        }
+        ThreadRunners.strayRunner(thread, true, (t, e) -> thread.getUncaughtExceptionHandler().uncaughtException(thread, e))
+                .start();
+    }
+
+    /**
+     * Replaces {@link Thread#interrupt()}: a thread of the controller that sleeps or waits wakes at
+     * once. A class's own {@code interrupt()} is called as Java would, and interrupts only when it
+     * calls {@code super.interrupt()} ({@link #superInterrupt}).
+     */
     public static void interrupt(Thread thread) {
         thread.interrupt();
+        if (!ThreadRunners.overridesInterrupt(thread.getClass())) {
+            superInterrupt(thread);
+        }
+    }
+
+    /**
+     * Replaces {@code super.interrupt()} in a {@code Thread} subclass's own {@code interrupt()},
+     * and does what {@link #interrupt} asks of {@code Thread}: the thread running the object's code
+     * is interrupted, and the lockstep told.
+     */
+    public static void superInterrupt(Thread thread) {
         Thread runner = ThreadRunners.of(thread);
         if (runner != thread) {
             runner.interrupt();
@@ -78,6 +110,9 @@ public final class ThreadHooks {
         if (p != null) {
             p.interruptPending = true;
             c.interrupt(p);
+        } else if (SimClock.current() instanceof ControllerClock mine && !ThreadRunners.started(thread)) {
+            // Not started yet: it starts interrupted, whichever thread then runs its code.
+            mine.interruptedUnstarted(thread);
         }
     }
 
@@ -122,7 +157,7 @@ public final class ThreadHooks {
     /** Replaces {@link Thread#currentThread()}: on a thread of the controller, its {@code Thread} object. */
     public static Thread currentThread() {
         ControllerClock c = onTurn();
-        return c == null ? Thread.currentThread() : c.runningThread();
+        return c == null ? ThreadRunners.objectOf(Thread.currentThread()) : c.runningThread();
     }
 
     /** Put before every {@code monitorenter} of controller code (and at the start of a synchronized method). */

@@ -42,6 +42,14 @@ final class CallTargets {
             "isAlive()Z", "isAlive", "interrupt()V", "interrupt", "isInterrupted()Z", "isInterrupted",
             "getState()Ljava/lang/Thread$State;", "getState", "getStackTrace()[Ljava/lang/StackTraceElement;", "getStackTrace");
 
+    /**
+     * The methods of {@code Thread} whose {@code super} calls (from a subclass that overrides them)
+     * {@link org.kheperasim.sim.host.ThreadHooks} replaces: the override is the student's, the
+     * start or interrupt it asks of {@code Thread} the lockstep's.
+     */
+    private static final java.util.Map<String, String> THREAD_SUPERS = java.util.Map.of(
+            "start()V", "superStart", "interrupt()V", "superInterrupt");
+
     /** {@code Thread.currentThread()}, which {@link org.kheperasim.sim.host.ThreadHooks} answers for contained code. */
     private static final String CURRENT_THREAD = "currentThread()Ljava/lang/Thread;";
 
@@ -116,8 +124,9 @@ final class CallTargets {
      * Where a call goes instead, or null when it stays: the {@link SimClock} method of the same
      * name for the time calls, and for contained code the hooks (see the class comment).
      *
-     * @param opcode {@link Opcodes#INVOKESTATIC} or {@link Opcodes#INVOKEVIRTUAL}; any other
-     *     kind of call always stays
+     * @param opcode {@link Opcodes#INVOKESTATIC}, {@link Opcodes#INVOKEVIRTUAL} or
+     *     {@link Opcodes#INVOKESPECIAL} (only {@code super.start()} and {@code super.interrupt()} of
+     *     {@code Thread} move); any other kind of call always stays
      */
     Target of(int opcode, String owner, String name, String descriptor) {
         if (opcode == Opcodes.INVOKESTATIC) {
@@ -139,6 +148,12 @@ final class CallTargets {
             }
             if (contained && GET_LOGGER.equals(owner + "." + method)) {
                 return new Target(CONSOLE, name, descriptor);
+            }
+        } else if (opcode == Opcodes.INVOKESPECIAL) {
+            // super.start() and super.interrupt() in a Thread subclass's own override: the lockstep's too.
+            String hook = contained ? THREAD_SUPERS.get(name + descriptor) : null;
+            if (hook != null && (owner.equals(THREAD) || lookup.resolvesToThread(owner, name, descriptor))) {
+                return new Target(THREAD_HOOKS, hook, "(Ljava/lang/Thread;)V");
             }
         } else if (opcode == Opcodes.INVOKEVIRTUAL) {
             if (owner.equals(TIME_UNIT) && name.equals("sleep") && descriptor.equals("(J)V")) {
