@@ -47,6 +47,8 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
     private final ClassHierarchy hierarchy;
     private final boolean contained;
     private final ControllerCheck check;
+    /** Its code's own monitors for objects it does not own (see {@link MonitorHooks}). */
+    private final Monitors monitors = new Monitors(this);
     /** Class files read for the check and the hierarchy, by internal name (empty: none). */
     private final java.util.Map<String, java.util.Optional<byte[]>> classFiles = new java.util.concurrent.ConcurrentHashMap<>();
 
@@ -76,6 +78,11 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         this.roots = open(classpath);
         this.hierarchy = new ClassHierarchy(this::localClassFile, parent);
         this.check = new ControllerCheck(new ControllerPolicy(Allowlist.bundled(), hierarchy), this::localClassFile);
+    }
+
+    /** @return the stand-ins its code locks for objects it does not own */
+    Monitors monitors() {
+        return monitors;
     }
 
     /** @return true when it contains the code it loads (rewrites its escapes and thread calls) */
