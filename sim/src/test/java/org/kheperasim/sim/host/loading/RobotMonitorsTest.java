@@ -113,11 +113,11 @@ class RobotMonitorsTest {
                     Thread other = new Thread(() -> take("swarm-lock"));
                     other.start();
                     take("swarm-lock");
-                    Thread third = new Thread(() -> take(IrSensor.class));
-                    third.start();
-                    take(IrSensor.class);
                     try {
                         other.join();
+                        Thread third = new Thread(() -> take(IrSensor.class));
+                        third.start();
+                        take(IrSensor.class);
                         third.join();
                         synchronized ("swarm-lock") {
                             ready = true;
