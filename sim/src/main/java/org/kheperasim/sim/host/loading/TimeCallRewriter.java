@@ -94,7 +94,7 @@ public final class TimeCallRewriter {
             reader.accept(rewriter, 0);
         } catch (RuntimeException e) {
             // ASM reports a malformed class file with whatever runtime exception it runs into.
-            throw withCause(new ClassFormatError("not a well-formed class file (" + e + ")"), e);
+            throw withCause(new ClassFormatError(ClassFileHeader.malformed(null, e)), e);
         }
         if (!rewriter.changed) {
             return classFile;
