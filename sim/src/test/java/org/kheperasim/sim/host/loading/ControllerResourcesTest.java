@@ -174,6 +174,32 @@ class ControllerResourcesTest {
         }
     }
 
+    /** The same in a run (what {@code run}, {@code evaluate}, {@code serve}, the window and the testing module start). */
+    @Test
+    void aRunningControllerDoesNotReadThroughALinkOut() throws Exception {
+        Path classes = linkedEntry();
+        JavaSources.compile(classes, Map.of("Peeker", """
+                import org.kheperasim.api.*;
+                public class Peeker extends Controller {
+                    @Override
+                    protected void doWork() {
+                        print("peek " + new bot.LinkReader().apply("passwd.txt") + " " + new bot.LinkReader().apply("mine.txt"));
+                        sleepMillis(10_000);
+                    }
+                }
+                """, "bot.LinkReader", LINK_READER));
+        List<String> console = new java.util.ArrayList<>();
+        org.kheperasim.sim.run.Simulation.builder().arena("lab").classpath(List.of(classes)).controller("Peeker").seed(1)
+                .seconds(0.5).console(line -> {
+                    synchronized (console) {
+                        console.add(line.text());
+                    }
+                }).run();
+        assertEquals(List.of("peek none|none|none|none|none my own|my own|my own|my own|my own"),
+                console.stream().filter(l -> l.contains("peek ")).map(l -> l.substring(l.indexOf("peek "))).toList(),
+                console.toString());
+    }
+
     /** The entry itself may be reached through a link (a folder linked into the course's tree). */
     @Test
     void anEntryReachedThroughALinkReadsItsOwnFiles() throws Exception {
