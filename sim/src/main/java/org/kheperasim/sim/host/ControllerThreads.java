@@ -234,9 +234,11 @@ final class ControllerThreads {
             Held h = p.lock == null ? null : held.get(p.lock);
             sb.append(p.index == 0 ? "the controller's own thread" : "thread " + p);
             if (p.waiting) {
-                sb.append(" waits in wait() on a ").append(p.lock.getClass().getName()).append(" that nobody notifies");
+                sb.append(" waits in wait() on a ").append(org.kheperasim.sim.host.loading.MonitorHooks.typeName(p.lock))
+                        .append(" that nobody notifies");
             } else if (h != null) {
-                sb.append(" waits for a lock on a ").append(p.lock.getClass().getName()).append(" held by ")
+                sb.append(" waits for a lock on a ").append(org.kheperasim.sim.host.loading.MonitorHooks.typeName(p.lock))
+                        .append(" held by ")
                         .append(h.owner.index == 0 ? "the controller's own thread" : "thread " + h.owner);
             } else {
                 sb.append(" waits");

@@ -91,6 +91,8 @@ public final class ControllerCatalog {
             return type;
         } catch (ControllerPolicyError e) {
             throw new ControllerException("controller " + name + " was refused: " + e.getMessage(), e);
+        } catch (ClassFormatError e) { // a class file too large, malformed or too new: the message names it and the fix
+            throw new ControllerException("controller " + name + " cannot be loaded: " + e.getMessage(), e);
         }
     }
 

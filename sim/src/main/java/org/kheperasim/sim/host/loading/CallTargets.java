@@ -8,7 +8,8 @@ import org.objectweb.asm.Type;
 /**
  * Where a call in controller code goes instead: the time calls to {@link SimClock}, and for
  * contained code the escapes to {@link org.kheperasim.sim.host.Containment}, the thread calls to
- * {@link org.kheperasim.sim.host.ThreadHooks}, the resource reads to {@link ResourceHooks},
+ * {@link org.kheperasim.sim.host.ThreadHooks}, {@code wait}, {@code notify}, {@code notifyAll} and
+ * {@code Thread.holdsLock} to {@link MonitorHooks} (each robot's own monitors), the resource reads to {@link ResourceHooks},
  * {@code printStackTrace()} and {@code Logger.getLogger} to {@link ConsoleHooks}, and the parallel
  * stream methods to their sequential twins (see {@link TimeCallRewriter} for what is rewritten and
  * why).
@@ -111,8 +112,28 @@ final class CallTargets {
     private final HierarchyLookup lookup;
     private final boolean contained;
 
-    /** Where a call goes instead. */
-    record Target(String owner, String name, String descriptor) {
+    /** Internal name of the class the monitor hooks are in. */
+    static final String MONITOR_HOOKS = Type.getInternalName(MonitorHooks.class);
+
+    /** {@code Thread.holdsLock(Object)}, which {@link MonitorHooks} answers for the robot's own monitor. */
+    private static final String HOLDS_LOCK = "holdsLock(Ljava/lang/Object;)Z";
+
+    /**
+     * Where a call goes instead.
+     *
+     * @param caller true when the hook also takes the calling class, last ({@link #descriptorWithCaller()});
+     *     {@link #descriptor()} is then that of its form without it (for a method handle)
+     */
+    record Target(String owner, String name, String descriptor, boolean caller) {
+        Target(String owner, String name, String descriptor) {
+            this(owner, name, descriptor, false);
+        }
+
+        /** @return the descriptor of the form that takes the calling class last */
+        String descriptorWithCaller() {
+            int close = descriptor.indexOf(')');
+            return descriptor.substring(0, close) + "Ljava/lang/Class;" + descriptor.substring(close);
+        }
     }
 
     CallTargets(HierarchyLookup lookup, boolean contained) {
@@ -137,6 +158,10 @@ final class CallTargets {
             }
             if (owner.equals(SYSTEM) && SYSTEM_STATICS.contains(method)) {
                 return new Target(SIM_CLOCK, name, descriptor);
+            }
+            if (contained && method.equals(HOLDS_LOCK)
+                    && (owner.equals(THREAD) || lookup.resolvesToThread(owner, name, descriptor))) {
+                return new Target(MONITOR_HOOKS, "holdsLock", descriptor, true);
             }
             if (contained && method.equals(CURRENT_THREAD)
                     && (owner.equals(THREAD) || lookup.resolvesToThread(owner, name, descriptor))) {
@@ -176,13 +201,13 @@ final class CallTargets {
             String receiver = "(Ljava/lang/Object;";
             switch (name + descriptor) {
                 case "wait()V" -> {
-                    return new Target(THREAD_HOOKS, "waitForever", receiver + ")V");
+                    return new Target(MONITOR_HOOKS, "waitForever", receiver + ")V", true);
                 }
                 case "wait(J)V", "wait(JI)V" -> {
-                    return new Target(THREAD_HOOKS, "waitFor", receiver + descriptor.substring(1));
+                    return new Target(MONITOR_HOOKS, "waitFor", receiver + descriptor.substring(1), true);
                 }
                 case "notify()V", "notifyAll()V" -> {
-                    return new Target(THREAD_HOOKS, name, receiver + ")V");
+                    return new Target(MONITOR_HOOKS, name, receiver + ")V", true);
                 }
                 default -> {
                     // a thread call, below

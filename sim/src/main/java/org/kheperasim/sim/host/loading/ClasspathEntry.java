@@ -8,21 +8,64 @@ import java.net.MalformedURLException;
 import java.net.URI;
 import java.net.URISyntaxException;
 import java.net.URL;
+import java.nio.channels.Channels;
+import java.nio.channels.SeekableByteChannel;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
 import java.security.CodeSigner;
 import java.security.CodeSource;
 import java.security.ProtectionDomain;
+import java.util.Locale;
+import java.util.Set;
 import java.util.jar.JarEntry;
 import java.util.jar.JarFile;
 import java.util.zip.ZipFile;
 
 /**
  * One entry of a controller's classpath, a directory or a jar file: where {@link ControllerClassLoader}
- * finds the controller's class files and its resources. A name never reaches outside the entry.
+ * finds the controller's class files and its resources. A name never reaches outside the entry: in a
+ * directory, a file is found only when its real path (every symbolic link followed) lies inside the
+ * directory's own real path, so a link to {@code /etc/passwd}, to {@code /proc} or to another
+ * student's folder is no resource of the controller's; and it is read without following a link
+ * again. Nothing larger than {@link #MAX_BYTES} is read: its size is checked first.
  */
 abstract class ClasspathEntry implements Closeable {
+    /** The largest class file or resource read into memory (64 MiB; the largest real class files are a few MB). */
+    static final long MAX_BYTES = 64L << 20;
+
     final ProtectionDomain domain;
+
+    /** A class file or resource larger than {@link #MAX_BYTES}: not read. */
+    static final class TooLarge extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        TooLarge(String where, long size) {
+            super(where + ": " + bytes(size) + ", more than the " + bytes(MAX_BYTES) + " a class file or resource may"
+                    + " have (is it one? remove it, or keep large data out of the controller's folder)");
+        }
+    }
+
+    /** @return a size for a message: {@code 3.0 GB}, {@code 64 MB}, {@code 812 bytes} */
+    static String bytes(long size) {
+        if (size >= 1L << 30) {
+            return String.format(Locale.ROOT, "%.1f GB", size / (double) (1L << 30));
+        }
+        if (size >= 1L << 20) {
+            return String.format(Locale.ROOT, "%d MB", size >> 20);
+        }
+        return size + " bytes";
+    }
+
+    /** Read at most {@link #MAX_BYTES} (a file may grow after its size was looked at). */
+    static byte[] readBounded(InputStream in, String where) throws IOException {
+        byte[] bytes = in.readNBytes((int) MAX_BYTES + 1);
+        if (bytes.length > MAX_BYTES) {
+            throw new TooLarge(where, bytes.length);
+        }
+        return bytes;
+    }
 
     ClasspathEntry(Path path) {
         this.domain = new ProtectionDomain(new CodeSource(toUrl(path.toUri()), (CodeSigner[]) null), null);
@@ -62,16 +105,37 @@ abstract class ClasspathEntry implements Closeable {
 
     private static final class DirectoryEntry extends ClasspathEntry {
         private final Path directory;
+        /** The directory's real path (links followed), or null when it has none (it is gone). */
+        private final Path real;
 
         DirectoryEntry(Path directory) {
             super(directory);
             this.directory = directory;
+            Path r;
+            try {
+                r = directory.toRealPath();
+            } catch (IOException e) {
+                r = null;
+            }
+            this.real = r;
         }
 
-        /** The resource's file, or null when it is missing or its name points outside the directory. */
+        /**
+         * The resource's real file, or null when it is missing, not a regular file, or its name or a link
+         * on its way points outside the directory.
+         */
         private Path file(String resource) {
             Path file = directory.resolve(resource).normalize();
-            return file.startsWith(directory) && Files.isRegularFile(file) ? file : null;
+            if (real == null || !file.startsWith(directory)) {
+                return null;
+            }
+            Path resolved;
+            try {
+                resolved = file.toRealPath();
+            } catch (IOException | SecurityException e) {
+                return null;
+            }
+            return resolved.startsWith(real) && Files.isRegularFile(resolved, LinkOption.NOFOLLOW_LINKS) ? resolved : null;
         }
 
         @Override
@@ -80,8 +144,14 @@ abstract class ClasspathEntry implements Closeable {
             if (file == null) {
                 return null;
             }
-            try {
-                return Files.readAllBytes(file);
+            try (SeekableByteChannel channel = Files.newByteChannel(file, Set.of(StandardOpenOption.READ,
+                    LinkOption.NOFOLLOW_LINKS))) {
+                if (channel.size() > MAX_BYTES) {
+                    throw new TooLarge(describe(resource), channel.size());
+                }
+                return readBounded(Channels.newInputStream(channel), describe(resource));
+            } catch (TooLarge e) {
+                throw e;
             } catch (IOException e) {
                 throw new IOException("cannot read " + file + ": " + e, e);
             }
@@ -128,8 +198,13 @@ abstract class ClasspathEntry implements Closeable {
             if (entry == null) {
                 return null;
             }
+            if (entry.getSize() > MAX_BYTES) {
+                throw new TooLarge(describe(resource), entry.getSize());
+            }
             try (InputStream in = jar.getInputStream(entry)) {
-                return in.readAllBytes();
+                return readBounded(in, describe(resource));
+            } catch (TooLarge e) {
+                throw e;
             } catch (IOException e) {
                 throw new IOException("cannot read " + describe(resource) + ": " + e, e);
             }

@@ -30,6 +30,7 @@ import org.objectweb.asm.Type;
 final class ControllerCheck {
     private final ControllerPolicy policy;
     private final Function<String, byte[]> localClassFile;
+    private final Function<String, String> where;
     /** Classes that passed: checked once per loader. */
     private final Set<String> passed = new HashSet<>();
 
@@ -39,8 +40,18 @@ final class ControllerCheck {
      *     when the class is not the loader's own
      */
     ControllerCheck(ControllerPolicy policy, Function<String, byte[]> localClassFile) {
+        this(policy, localClassFile, name -> name + ".class");
+    }
+
+    /**
+     * @param policy what is allowed
+     * @param localClassFile see {@link #ControllerCheck(ControllerPolicy, Function)}
+     * @param where the file a class of the loader's own comes from, for messages
+     */
+    ControllerCheck(ControllerPolicy policy, Function<String, byte[]> localClassFile, Function<String, String> where) {
         this.policy = policy;
         this.localClassFile = localClassFile;
+        this.where = where;
     }
 
     /**
@@ -49,6 +60,9 @@ final class ControllerCheck {
      * @param internalName the class
      * @throws ControllerPolicyError naming the first use refused (by line) in the first class
      *     found that has one
+     * @throws ClassFormatError naming the file of a class it reaches that is no well-formed class
+     *     file, or ({@link UnsupportedClassVersionError}) one compiled for a newer Java: refused
+     *     before any class is defined, not in the middle of the run
      */
     synchronized void checkReachable(String internalName) {
         Deque<String> open = new ArrayDeque<>(List.of(internalName));
@@ -63,7 +77,8 @@ final class ControllerCheck {
             if (classFile == null) {
                 continue;
             }
-            open.addAll(check(classFile));
+            ClassFileHeader.check(classFile, where.apply(name));
+            open.addAll(check(classFile, where.apply(name)));
             checked.add(name);
         }
         // Only now: a class is taken as passed once everything it reaches has passed too.
@@ -73,21 +88,17 @@ final class ControllerCheck {
     /**
      * Check one class file.
      *
+     * @param where its file, for messages
      * @return the internal names of the classes it refers to
+     * @throws ClassFormatError when it is malformed
      * @throws ControllerPolicyError naming its first use refused, by source line
      */
-    Set<String> check(byte[] classFile) {
-        ClassReader reader;
-        try {
-            reader = new ClassReader(classFile);
-        } catch (RuntimeException e) {
-            return Set.of(); // malformed: defining it reports that
-        }
+    Set<String> check(byte[] classFile, String where) {
         Visitor visitor = new Visitor();
         try {
-            reader.accept(visitor, ClassReader.SKIP_FRAMES);
-        } catch (RuntimeException e) {
-            return Set.of(); // malformed: defining it reports that
+            new ClassReader(classFile).accept(visitor, ClassReader.SKIP_FRAMES);
+        } catch (RuntimeException e) { // ASM's way to say the file is malformed
+            throw withCause(new ClassFormatError(ClassFileHeader.malformed(where, e)), e);
         }
         visitor.refusals.sort(Comparator.comparingInt(Found::line));
         if (!visitor.refusals.isEmpty()) {
@@ -95,6 +106,11 @@ final class ControllerCheck {
             throw ControllerPolicy.error(visitor.className, visitor.source, first.line(), first.refusal());
         }
         return visitor.referenced;
+    }
+
+    private static <T extends Throwable> T withCause(T error, Throwable cause) {
+        error.initCause(cause);
+        return error;
     }
 
     /** A refused use and its line (the class's first line for its superclass and interfaces). */

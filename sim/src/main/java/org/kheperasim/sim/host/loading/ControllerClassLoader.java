@@ -47,8 +47,12 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
     private final ClassHierarchy hierarchy;
     private final boolean contained;
     private final ControllerCheck check;
+    /** Its code's own monitors for objects it does not own (see {@link MonitorHooks}). */
+    private final Monitors monitors = new Monitors(this);
     /** Class files read for the check and the hierarchy, by internal name (empty: none). */
     private final java.util.Map<String, java.util.Optional<byte[]>> classFiles = new java.util.concurrent.ConcurrentHashMap<>();
+    /** Where each class file read came from, by internal name, for messages. */
+    private final java.util.Map<String, String> locations = new java.util.concurrent.ConcurrentHashMap<>();
 
     /**
      * @param classpath directories and jar files of the user's compiled classes, searched in order
@@ -75,7 +79,13 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         this.contained = contained;
         this.roots = open(classpath);
         this.hierarchy = new ClassHierarchy(this::localClassFile, parent);
-        this.check = new ControllerCheck(new ControllerPolicy(Allowlist.bundled(), hierarchy), this::localClassFile);
+        this.check = new ControllerCheck(new ControllerPolicy(Allowlist.bundled(), hierarchy), this::localClassFile,
+                n -> locations.getOrDefault(n, n + ".class"));
+    }
+
+    /** @return the stand-ins its code locks for objects it does not own */
+    Monitors monitors() {
+        return monitors;
     }
 
     /** @return true when it contains the code it loads (rewrites its escapes and thread calls) */
@@ -143,11 +153,19 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         }
     }
 
-    /** Find, rewrite and define a class; null when no class file for it exists. */
+    /**
+     * Find, rewrite and define a class; null when no class file for it exists.
+     *
+     * @throws ClassFormatError (or {@link UnsupportedClassVersionError}) when its class file, or
+     *     that of a class of its own it reaches, is too large, malformed or too new: the one-line
+     *     message begins with that file and ends with the fix
+     */
     private Class<?> defineLocal(String name) throws ClassNotFoundException {
         ClassFile found;
         try {
             found = findClassFile(name);
+        } catch (ClasspathEntry.TooLarge e) {
+            throw withCause(new ClassFormatError(e.getMessage()), e);
         } catch (IOException e) {
             throw new ClassNotFoundException("Cannot read class " + name + ": " + e.getMessage(), e);
         }
@@ -155,20 +173,30 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
             return null;
         }
         String failure = "Cannot load class " + name + " from " + found.location() + ": ";
+        byte[] bytes = found.bytes();
         try {
-            byte[] bytes = found.bytes();
             if (contained) {
                 // The check reads class files through the same cache: what is defined is what was checked,
                 // even if the file changes on disk meanwhile.
                 String internalName = name.replace('.', '/');
+                locations.putIfAbsent(internalName, found.location());
                 bytes = classFiles.compute(internalName, (n, read) -> read != null && read.isPresent() ? read
                         : java.util.Optional.of(found.bytes())).get();
-                check.checkReachable(internalName);
+                check.checkReachable(internalName); // a bad class file's error names its file already
             }
-            byte[] rewritten = TimeCallRewriter.rewrite(bytes, hierarchy, contained);
-            return defineClass(name, rewritten, 0, rewritten.length, found.domain());
         } catch (ControllerPolicyError e) {
             throw withCause(new ControllerPolicyError(failure + e.getMessage()), e);
+        }
+        byte[] rewritten;
+        try {
+            rewritten = TimeCallRewriter.rewrite(bytes, hierarchy, contained);
+        } catch (UnsupportedClassVersionError e) {
+            throw withCause(new UnsupportedClassVersionError(found.location() + ": " + e.getMessage()), e);
+        } catch (ClassFormatError e) {
+            throw withCause(new ClassFormatError(found.location() + ": " + e.getMessage()), e);
+        }
+        try {
+            return defineClass(name, rewritten, 0, rewritten.length, found.domain());
         } catch (UnsupportedClassVersionError e) {
             throw withCause(new UnsupportedClassVersionError(failure + e.getMessage()), e);
         } catch (ClassFormatError e) {
@@ -196,7 +224,7 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
             return null;
         }
         try (InputStream in = url.openStream()) {
-            return new ClassFile(in.readAllBytes(), url.toString(), null);
+            return new ClassFile(ClasspathEntry.readBounded(in, url.toString()), url.toString(), null);
         } catch (IOException e) {
             throw new IOException("cannot read " + url + ": " + e.getMessage(), e);
         }
@@ -221,7 +249,12 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         return classFiles.computeIfAbsent(internalName, n -> {
             try {
                 ClassFile found = findClassFile(className);
+                if (found != null) {
+                    locations.putIfAbsent(n, found.location());
+                }
                 return java.util.Optional.ofNullable(found == null ? null : found.bytes());
+            } catch (ClasspathEntry.TooLarge e) {
+                throw withCause(new ClassFormatError(e.getMessage()), e); // refused, never read
             } catch (IOException e) {
                 return java.util.Optional.empty(); // then the parent is asked; loading the class reports the failure
             }

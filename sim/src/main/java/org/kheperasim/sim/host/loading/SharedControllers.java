@@ -40,10 +40,14 @@ public final class SharedControllers {
         if (s == null) {
             return null;
         }
-        for (Map.Entry<String, byte[]> e : s.closure().entrySet()) {
-            if (!Arrays.equals(e.getValue(), loader.ownClassFile(e.getKey()))) {
-                return null;
+        try {
+            for (Map.Entry<String, byte[]> e : s.closure().entrySet()) {
+                if (!Arrays.equals(e.getValue(), loader.ownClassFile(e.getKey()))) {
+                    return null;
+                }
             }
+        } catch (ClassFormatError tooLarge) { // a class file grown past the limit: loading it anew says so
+            return null;
         }
         return s.type();
     }

@@ -72,15 +72,23 @@ final class StatelessCheck implements Opcodes {
                 continue;
             }
             c.closure.put(name, bytes);
-            ClassReader r = new ClassReader(bytes);
-            for (String ref : references(r)) {
-                todo.add(ref);
+            try {
+                ClassReader r = new ClassReader(bytes);
+                for (String ref : references(r)) {
+                    todo.add(ref);
+                }
+                c.fields(name, r);
+            } catch (RuntimeException malformed) { // ASM's way to say so: then it is not shared
+                c.fail(name, "its class file cannot be read");
             }
-            c.fields(name, r);
         }
         for (Map.Entry<String, byte[]> e : c.closure.entrySet()) {
             if (c.why == null) {
-                c.code(e.getKey(), new ClassReader(e.getValue()));
+                try {
+                    c.code(e.getKey(), new ClassReader(e.getValue()));
+                } catch (RuntimeException malformed) {
+                    c.fail(e.getKey(), "its class file cannot be read");
+                }
             }
         }
         return new Result(c.closure, c.why);
@@ -229,11 +237,8 @@ final class StatelessCheck implements Opcodes {
                 }
                 escape("used by another instruction");
             }
-            if (init) {
-                return;
-            }
             if (opcode == MONITORENTER) {
-                // A lock on a constant (an interned string, an enum constant) would be every robot's.
+                // A shared class's monitors would be every robot's (its loader's stand-ins too, see Monitors).
                 fail(className, "in " + method + ", a lock is taken on an object that may be shared");
             }
         }

@@ -94,7 +94,7 @@ public final class TimeCallRewriter {
             reader.accept(rewriter, 0);
         } catch (RuntimeException e) {
             // ASM reports a malformed class file with whatever runtime exception it runs into.
-            throw withCause(new ClassFormatError("not a well-formed class file (" + e + ")"), e);
+            throw withCause(new ClassFormatError(ClassFileHeader.malformed(null, e)), e);
         }
         if (!rewriter.changed) {
             return classFile;
@@ -308,6 +308,11 @@ public final class TimeCallRewriter {
                     String renamed = targets.renamed(owner, name, descriptor);
                     changed |= renamed != null;
                     super.visitMethodInsn(opcode, owner, renamed != null ? renamed : name, descriptor, isInterface);
+                } else if (hook.caller() && (version & 0xFFFF) >= Opcodes.V1_5) {
+                    // The hook's table is the calling class's loader's: it gets the class, a constant.
+                    changed = true;
+                    super.visitLdcInsn(Type.getObjectType(className));
+                    super.visitMethodInsn(Opcodes.INVOKESTATIC, hook.owner(), hook.name(), hook.descriptorWithCaller(), false);
                 } else {
                     changed = true;
                     super.visitMethodInsn(Opcodes.INVOKESTATIC, hook.owner(), hook.name(), hook.descriptor(), false);

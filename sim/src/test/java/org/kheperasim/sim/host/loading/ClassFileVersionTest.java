@@ -86,8 +86,36 @@ class ClassFileVersionTest {
                     () -> loader.loadClass("TooNew"));
             String m = e.getMessage();
             assertTrue(m.contains("TooNew") && m.contains(file.toString()), m);
-            assertTrue(m.contains("compiled for Java " + (NEWEST + 1 - 44) + " (class file version " + (NEWEST + 1) + ")")
-                    && m.contains("up to Java " + (NEWEST - 44)) && m.contains("compile it with --release 17"), m);
+            assertTrue(m.startsWith(file + ": compiled for Java " + (NEWEST + 1 - 44) + " (class file version "
+                    + (NEWEST + 1) + "), newer than "), m);
+            assertTrue(m.contains("Java " + (NEWEST - 44)) && m.endsWith("; compile it with `--release 17`"), m);
+        }
+    }
+
+    /** Issue 35, item 8: a class file cut short is refused naming the file, as a ClassFormatError (no ASM exception). */
+    @Test
+    void aMalformedClassFileIsRefusedNamingItsFile() throws Exception {
+        Path file = classFile("Cut", NEWEST);
+        byte[] whole = Files.readAllBytes(file);
+        Files.write(file, java.util.Arrays.copyOf(whole, whole.length / 2));
+        for (boolean contained : new boolean[] {true, false}) {
+            try (ControllerClassLoader loader = new ControllerClassLoader(List.of(dir), getClass().getClassLoader(), contained)) {
+                ClassFormatError e = assertThrows(ClassFormatError.class, () -> loader.loadClass("Cut"));
+                assertTrue(e.getMessage().startsWith(file + ": not a well-formed class file ("), e.getMessage());
+            }
+        }
+    }
+
+    /** Issue 35, item 8: a 3 GB (sparse) class file is refused by its size, before anything is read. */
+    @Test
+    void aHugeClassFileIsRefusedByItsSizeUnread() throws Exception {
+        Path file = dir.resolve("Big.class");
+        try (java.io.RandomAccessFile f = new java.io.RandomAccessFile(file.toFile(), "rw")) {
+            f.setLength(3L << 30);
+        }
+        try (ControllerClassLoader loader = new ControllerClassLoader(List.of(dir), getClass().getClassLoader())) {
+            ClassFormatError e = assertThrows(ClassFormatError.class, () -> loader.loadClass("Big"));
+            assertTrue(e.getMessage().startsWith(file + ": 3.0 GB, more than the 64 MB"), e.getMessage());
         }
     }
 }

@@ -97,6 +97,136 @@ class ControllerResourcesTest {
         assertEquals(EXPECTED, read(jar));
     }
 
+    /** Reads each named resource every way a controller can; each answer is its first line, or "none". */
+    private static final String LINK_READER = """
+            package bot;
+            import java.io.*;
+            import java.net.URL;
+            import java.nio.charset.StandardCharsets;
+            public class LinkReader implements java.util.function.Function<String, String> {
+                static String text(InputStream in) throws IOException {
+                    if (in == null) {
+                        return "none";
+                    }
+                    try (BufferedReader r = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8))) {
+                        String line = r.readLine();
+                        return line == null ? "empty" : line.replace('\0', ' ').trim();
+                    }
+                }
+                static String url(URL url) throws IOException {
+                    return url == null ? "none" : text(url.openStream());
+                }
+                public String apply(String name) {
+                    try {
+                        return String.join("|", text(getClass().getResourceAsStream("/" + name)),
+                                text(getClass().getClassLoader().getResourceAsStream(name)),
+                                text(Thread.currentThread().getContextClassLoader().getResourceAsStream(name)),
+                                url(getClass().getResource("/" + name)),
+                                url(getClass().getClassLoader().getResource(name)));
+                    } catch (IOException e) {
+                        throw new UncheckedIOException(e);
+                    }
+                }
+            }
+            """;
+
+    /** Links a student could leave beside their classes: out of the entry (refused) and within it (a file of its own). */
+    private Path linkedEntry() throws IOException {
+        Path classes = JavaSources.compile(Files.createDirectories(dir.resolve("classes")), Map.of("bot.LinkReader", LINK_READER));
+        Path other = Files.createDirectories(dir.resolve("other-student"));
+        Files.writeString(other.resolve("Secret.java"), "another student's source\n");
+        Files.writeString(dir.resolve("beside.txt"), "beside the entry\n");
+        Files.writeString(classes.resolve("real.txt"), "my own\n");
+        try {
+            Files.createSymbolicLink(classes.resolve("passwd.txt"), Path.of("/etc/passwd"));
+        } catch (UnsupportedOperationException | IOException e) {
+            org.junit.jupiter.api.Assumptions.abort("no symbolic links on this file system: " + e);
+        }
+        Files.createSymbolicLink(classes.resolve("cmdline.txt"), Path.of("/proc/1/cmdline"));
+        Files.createSymbolicLink(classes.resolve("other"), Path.of("../other-student"));
+        Files.createSymbolicLink(classes.resolve("beside.txt"), Path.of("../beside.txt"));
+        Files.createDirectories(classes.resolve("sub"));
+        Files.createSymbolicLink(classes.resolve("sub/up.txt"), Path.of("../../beside.txt"));
+        Files.createSymbolicLink(classes.resolve("mine.txt"), Path.of("real.txt"));
+        Files.createSymbolicLink(classes.resolve("sub/mine.txt"), Path.of("../real.txt"));
+        return classes;
+    }
+
+    /** Issue 35, item 9: a link out of the entry is no resource of the controller's, whichever way it asks. */
+    @Test
+    void aLinkOutOfTheFolderIsNotFoundAndALinkWithinItIs() throws Exception {
+        Path classes = linkedEntry();
+        try (ControllerClassLoader loader = new ControllerClassLoader(List.of(classes), getClass().getClassLoader())) {
+            @SuppressWarnings("unchecked")
+            java.util.function.Function<String, String> reader = (java.util.function.Function<String, String>)
+                    loader.loadClass("bot.LinkReader").getConstructor().newInstance();
+            String none = "none|none|none|none|none";
+            for (String out : List.of("passwd.txt", "cmdline.txt", "other/Secret.java", "beside.txt", "sub/up.txt",
+                    "sub/../other/Secret.java")) {
+                assertEquals(none, reader.apply(out), out);
+                assertEquals(null, loader.getResource(out), "the simulator's own look-up: " + out);
+                assertEquals(null, loader.ownResource(out), out);
+            }
+            String mine = "my own|my own|my own|my own|my own";
+            assertEquals(mine, reader.apply("real.txt"));
+            assertEquals(mine, reader.apply("mine.txt"), "a link to a file of its own is its own");
+            assertEquals(mine, reader.apply("sub/mine.txt"));
+        }
+    }
+
+    /** The same in a run (what {@code run}, {@code evaluate}, {@code serve}, the window and the testing module start). */
+    @Test
+    void aRunningControllerDoesNotReadThroughALinkOut() throws Exception {
+        Path classes = linkedEntry();
+        JavaSources.compile(classes, Map.of("Peeker", """
+                import org.kheperasim.api.*;
+                public class Peeker extends Controller {
+                    @Override
+                    protected void doWork() {
+                        print("peek " + new bot.LinkReader().apply("passwd.txt") + " " + new bot.LinkReader().apply("mine.txt"));
+                        sleepMillis(10_000);
+                    }
+                }
+                """, "bot.LinkReader", LINK_READER));
+        List<String> console = new java.util.ArrayList<>();
+        org.kheperasim.sim.run.Simulation.builder().arena("lab").classpath(List.of(classes)).controller("Peeker").seed(1)
+                .seconds(0.5).console(line -> {
+                    synchronized (console) {
+                        console.add(line.text());
+                    }
+                }).run();
+        assertEquals(List.of("peek none|none|none|none|none my own|my own|my own|my own|my own"),
+                console.stream().filter(l -> l.contains("peek ")).map(l -> l.substring(l.indexOf("peek "))).toList(),
+                console.toString());
+    }
+
+    /** The entry itself may be reached through a link (a folder linked into the course's tree). */
+    @Test
+    void anEntryReachedThroughALinkReadsItsOwnFiles() throws Exception {
+        Path classes = linkedEntry();
+        Path link = dir.resolve("linked-classes");
+        Files.createSymbolicLink(link, classes);
+        try (ControllerClassLoader loader = new ControllerClassLoader(List.of(link), getClass().getClassLoader())) {
+            @SuppressWarnings("unchecked")
+            java.util.function.Function<String, String> reader = (java.util.function.Function<String, String>)
+                    loader.loadClass("bot.LinkReader").getConstructor().newInstance();
+            assertEquals("my own|my own|my own|my own|my own", reader.apply("mine.txt"));
+            assertEquals("none|none|none|none|none", reader.apply("passwd.txt"));
+        }
+    }
+
+    /** A resource larger than the limit is not read into memory: not found, at once (a 3 GB sparse file). */
+    @Test
+    void aHugeResourceIsNotRead() throws Exception {
+        Path classes = JavaSources.compile(Files.createDirectories(dir.resolve("classes")), Map.of("bot.LinkReader", LINK_READER));
+        try (java.io.RandomAccessFile f = new java.io.RandomAccessFile(classes.resolve("huge.bin").toFile(), "rw")) {
+            f.setLength(3L << 30);
+        }
+        try (ControllerClassLoader loader = new ControllerClassLoader(List.of(classes), getClass().getClassLoader())) {
+            assertEquals(null, loader.ownResource("huge.bin"));
+        }
+    }
+
     @SuppressWarnings("unchecked")
     private String read(Path entry) throws Exception {
         try (ControllerClassLoader loader = new ControllerClassLoader(List.of(entry), getClass().getClassLoader())) {
