@@ -20,6 +20,7 @@ import org.kheperasim.sim.host.ConsoleLine;
 
 import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.host.ControllerStatus;
+import org.kheperasim.sim.run.BoundedConsole;
 import org.kheperasim.sim.run.EditLog;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
@@ -342,7 +343,7 @@ final class RunCommand implements Callable<Integer> {
                     .put("distanceMm", r.distanceMm()).put("collisions", r.collisions())
                     .put("visitedPercent", r.visitedPercent())
                     .put("controllerStatus", r.status().name().toLowerCase(Locale.ROOT))
-                    .put("failure", r.failure());
+                    .put("failure", BoundedConsole.bounded(r.failure()));
             if (r.status().failed()) {
                 ConsoleLine thrown = failures.thrown(r.name());
                 String at = thrown == null ? null : FailureText.studentFrame(thrown.text());

@@ -4,6 +4,7 @@ import java.math.BigDecimal;
 import java.math.MathContext;
 import java.util.Locale;
 import org.kheperasim.sim.host.ConsoleLine;
+import org.kheperasim.sim.run.BoundedConsole;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.task.Score;
 
@@ -37,7 +38,8 @@ final class Claim {
             RunResult.RobotResult r = result.robots().get(i);
             j.append(i > 0 ? "," : "").append("{\"name\":").append(JsonValues.quote(r.name()));
             j.append(",\"controllerStatus\":").append(JsonValues.quote(r.status().name().toLowerCase(Locale.ROOT)));
-            j.append(",\"failure\":").append(JsonValues.quote(r.failure()));
+            // A fault's message is bounded like output: an exception's message of any size is a few KB here.
+            j.append(",\"failure\":").append(JsonValues.quote(BoundedConsole.bounded(r.failure())));
             if (r.status().failed()) {
                 ConsoleLine thrown = failures.thrown(r.name());
                 String at = thrown == null ? null : FailureText.studentFrame(thrown.text());
