@@ -68,11 +68,11 @@ class OutputBoundTest {
     }
 
     /**
-     * A controller that prints 100 lines every simulated millisecond (100,000 a simulated second, 60 million
-     * lines in the arena's 600 s) is graded on what its robot did: ok, with the score of the same controller
-     * printing nothing, within a wall-clock limit of 40 s. Each dropped line cost about three microseconds of
-     * encoding, decoding and copying in the run's JVM at load 22 (173 s for this run, 9 s since): every run
-     * was {@code hung} at the wall-clock limit, 0 points.
+     * A controller that prints 100 lines every simulated millisecond (100,000 a simulated second, 30 million
+     * lines in 300 s) is graded on what its robot did: ok, with the score of the same controller printing
+     * nothing, within a wall-clock limit of 20 s. Each dropped line cost about one microsecond of encoding,
+     * decoding and copying in the run's JVM idle, three at load 22 (173 s for 600 s of this controller then,
+     * 9 s since): every run was {@code hung} at the wall-clock limit, 0 points.
      */
     @Test
     @Timeout(value = 240, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
@@ -82,15 +82,15 @@ class OutputBoundTest {
         printer(subs.resolve("quinn"), false);
         boolean box = org.kheperasim.sim.sandbox.BoxProbe.unavailable().isEmpty();
         ReportFiles.Report report = Grader.grade(new Grader.Options(subs, List.of("lab"), 1, 1, dir.resolve("out"),
-                GradePlan.Shard.ALL, 128, 40, 5, null, false, new PrintStream(OutputStream.nullOutputStream()), false, box,
+                GradePlan.Shard.ALL, 128, 20, 5, 300.0, false, new PrintStream(OutputStream.nullOutputStream()), false, box,
                 false));
         RunRecord pat = report.runs().get(0);
         RunRecord quinn = report.runs().get(1);
         assertEquals(RunStatus.OK, quinn.status(), quinn.toString());
         assertEquals(RunStatus.OK, pat.status(), pat.toString());
         assertEquals(quinn.points(), pat.points(), "printing costs no simulated time: the same robot, the same score");
-        assertEquals(600, pat.simulatedSeconds(), 1e-9);
-        assertTrue(pat.detail().matches(".* \\| printed \\d{4} MB; kept the first 1 MB"), pat.detail());
+        assertEquals(300, pat.simulatedSeconds(), 1e-9);
+        assertTrue(pat.detail().matches(".* \\| printed \\d{3} MB; kept the first 1 MB"), pat.detail());
     }
 
     /**
