@@ -6,6 +6,8 @@ import java.util.List;
 import java.util.concurrent.Callable;
 import org.kheperasim.link.tool.CliNumbers;
 import org.kheperasim.link.tool.ExitCodes;
+import org.kheperasim.link.tool.ToolErrors;
+import org.kheperasim.sim.grade.CommonFailure;
 import org.kheperasim.sim.grade.GradePlan;
 import org.kheperasim.sim.grade.Grader;
 import org.kheperasim.sim.grade.ReportFiles;
@@ -90,7 +92,16 @@ final class GradeCommand implements Callable<Integer> {
                 hangTimeout, seconds, keepTraces, System.err, System.console() != null, !noSandbox, false,
                 workerRuns == null ? Integer.MAX_VALUE : workerRuns));
         print(report, out);
-        return ExitCodes.OK;
+        return failedAlike(report);
+    }
+
+    /** A grading whose every run failed for one reason says so last, on standard error, and exits 1. */
+    static int failedAlike(ReportFiles.Report report) {
+        return CommonFailure.of(report.runs()).map(line -> {
+            System.err.println(ToolErrors.prefix("khepera-sim") + line);
+            System.err.flush();
+            return ExitCodes.FAILED;
+        }).orElse(ExitCodes.OK);
     }
 
     static void print(ReportFiles.Report report, Path out) {
@@ -118,7 +129,7 @@ final class GradeCommand implements Callable<Integer> {
         public Integer call() {
             ReportFiles.Report report = ReportMerge.merge(shards, out);
             print(report, out);
-            return ExitCodes.OK;
+            return failedAlike(report);
         }
     }
 }

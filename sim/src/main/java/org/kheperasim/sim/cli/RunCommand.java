@@ -14,12 +14,13 @@ import org.kheperasim.link.tool.ExitCodes;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
-import org.kheperasim.sim.grade.ChildSide;
+import org.kheperasim.sim.grade.FailureLines;
 import org.kheperasim.sim.grade.FailureText;
 import org.kheperasim.sim.host.ConsoleLine;
 
 import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.host.ControllerStatus;
+import org.kheperasim.sim.run.BoundedConsole;
 import org.kheperasim.sim.run.EditLog;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
@@ -97,14 +98,6 @@ final class RunCommand implements Callable<Integer> {
             + " memory (Linux, bubblewrap; see docs/grading.md)")
     boolean sandbox;
 
-    /** The grader's channel: the run hands over its command log and result there, then ends its JVM (a graded child). */
-    @Option(names = "--command-log", paramLabel = "SOCKET", hidden = true)
-    Path commandLog;
-
-    /** A graded child's own wall-clock limit, s: it ends itself there. */
-    @Option(names = "--wall-limit", paramLabel = "SECONDS", hidden = true, defaultValue = "0")
-    double wallLimit;
-
     @picocli.CommandLine.Spec
     picocli.CommandLine.Model.CommandSpec spec;
 
@@ -113,8 +106,6 @@ final class RunCommand implements Callable<Integer> {
         if (sandbox) {
             return inTheBox();
         }
-        // First of all, before any controller class is loaded: the channel a controller's code cannot name.
-        ChildSide child = commandLog == null ? null : ChildSide.start(commandLog, wallLimit);
         Settings settings = settingsOptions.settings();
         PrintStream info = json ? System.err : System.out;
         Arena resolved = ArenaFormat.resolve(arena);
@@ -151,25 +142,11 @@ final class RunCommand implements Callable<Integer> {
         if (editLog != null) {
             run.edits(editLog);
         }
-        if (html != null && child == null) {
+        if (html != null) {
             page[0] = HtmlPage.attach(html, resolved, editLog, run);
         }
         info.println("seed " + run.seed());
         run.onStart(session -> info.println(session.modeLine()));
-        if (child != null) {
-            long endNanos = (long) StrictMath.rint(run.seconds() * 1e9);
-            run.record(child.log()).onStart(session -> child.started(session, endNanos, sampleMillis));
-            if (trace == null) {
-                run.trace(java.io.Writer.nullWriter()); // for the trace's hash in the result, which the grader checks
-            }
-            return StopOnSignal.run(run, hangTimeout, result -> {
-                Score score = score(result, resolved);
-                String claim = toJson(result, score, failures);
-                int exit = report(result, score, failures);
-                child.finish(claim, exit, result);
-                return exit;
-            });
-        }
         return StopOnSignal.run(run, hangTimeout, result -> {
             int exit = report(result, score(result, resolved), failures);
             if (page[0] != null) {
@@ -181,16 +158,16 @@ final class RunCommand implements Callable<Integer> {
 
     /** The same command again, in a bubblewrap box (see sandbox.Reexec). */
     private int inTheBox() {
-        List<String> args = Sandboxed.argsAfter(spec, "run");
-        List<Path> read = new ArrayList<>(controllerOptions.classpath());
+        List<String> args = absolutePaths(Sandboxed.argsAfter(spec, "run"));
+        List<Path> read = new ArrayList<>(controllerOptions.classpath().stream().map(Path::toAbsolutePath).toList());
         java.nio.file.Path arenaFile = Path.of(arena);
         if (java.nio.file.Files.isRegularFile(arenaFile)) {
-            read.add(arenaFile);
+            read.add(arenaFile.toAbsolutePath());
         }
         if (edits != null) {
-            read.add(edits);
+            read.add(edits.toAbsolutePath());
         }
-        List<Path> write = new ArrayList<>(trace == null ? List.of() : List.of(trace));
+        List<Path> write = new ArrayList<>(trace == null ? List.of() : List.of(trace.toAbsolutePath()));
         HtmlPage.Boxed page = html == null ? null : new HtmlPage.Boxed(html, trace, args, write);
         Arena resolved = ArenaFormat.resolve(arena);
         int code = org.kheperasim.sim.sandbox.Reexec.run("run", args, read, write, false,
@@ -199,6 +176,32 @@ final class RunCommand implements Callable<Integer> {
             page.write(resolved, json ? System.err : System.out);
         }
         return code;
+    }
+
+    /** The options whose values are files: the box runs in a folder of its own, where a relative path names nothing. */
+    private static final java.util.Set<String> PATH_OPTIONS = java.util.Set.of("--arena", "--classpath", "--trace", "--edits");
+
+    /** @return the arguments with each file option's value an absolute path ({@code --arena} only when it is a file) */
+    static List<String> absolutePaths(List<String> args) {
+        List<String> out = new ArrayList<>();
+        for (int i = 0; i < args.size(); i++) {
+            String a = args.get(i);
+            int eq = a.indexOf('=');
+            String name = eq > 0 ? a.substring(0, eq) : a;
+            if (!PATH_OPTIONS.contains(name) || (eq < 0 && i + 1 >= args.size())) {
+                out.add(a);
+                continue;
+            }
+            String value = eq > 0 ? a.substring(eq + 1) : args.get(++i);
+            StringBuilder abs = new StringBuilder();
+            for (String part : value.split(java.util.regex.Pattern.quote(java.io.File.pathSeparator), -1)) {
+                boolean file = !name.equals("--arena") || java.nio.file.Files.isRegularFile(Path.of(part));
+                abs.append(abs.length() > 0 ? java.io.File.pathSeparator : "")
+                        .append(file && !part.isEmpty() ? Path.of(part).toAbsolutePath().toString() : part);
+            }
+            out.addAll(List.of(name, abs.toString()));
+        }
+        return out;
     }
 
     private static Score score(RunResult result, Arena resolved) {
@@ -340,7 +343,7 @@ final class RunCommand implements Callable<Integer> {
                     .put("distanceMm", r.distanceMm()).put("collisions", r.collisions())
                     .put("visitedPercent", r.visitedPercent())
                     .put("controllerStatus", r.status().name().toLowerCase(Locale.ROOT))
-                    .put("failure", r.failure());
+                    .put("failure", BoundedConsole.bounded(r.failure()));
             if (r.status().failed()) {
                 ConsoleLine thrown = failures.thrown(r.name());
                 String at = thrown == null ? null : FailureText.studentFrame(thrown.text());

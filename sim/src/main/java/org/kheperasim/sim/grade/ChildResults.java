@@ -180,17 +180,30 @@ final class ChildResults {
                 madeIn);
     }
 
+    /** How much a run printed and kept, as its console's note says it: {@code printed 48 MB; kept the first 1 MB}. */
+    private static final java.util.regex.Pattern OUTPUT = java.util.regex.Pattern.compile("khepera-sim: "
+            + BoundedConsole.OUTPUT_DROPPED + " (\\S+ \\S+) of controller output; kept the first (\\S+ \\S+) ");
+    /** The same as a record's detail ends with it. */
+    private static final java.util.regex.Pattern DETAIL = java.util.regex.Pattern.compile(
+            "(?<=^|\\| )" + BoundedConsole.OUTPUT_DROPPED + " \\S+ \\S+; kept the first \\S+ \\S+$");
+
     /** The run's note on controller output over its limit, added to the detail. */
     private static String withDropped(String detail, String err) {
-        for (String line : err.split("\\R")) {
-            int at = line.indexOf("khepera-sim: " + BoundedConsole.OUTPUT_DROPPED + " ");
-            if (at >= 0) {
-                String note = line.substring(at + "khepera-sim: ".length());
-                int cut = note.indexOf("; the last ");
-                return detail + (detail.isEmpty() ? "" : " | ") + (cut > 0 ? note.substring(0, cut) : note);
-            }
+        String note = outputNote(err);
+        return note == null ? detail : detail + (detail.isEmpty() ? "" : " | ") + note;
+    }
+
+    /**
+     * @param text a run's standard error, or a record's detail
+     * @return what the run printed and kept, {@code printed 48 MB; kept the first 1 MB}, or null when it kept all
+     */
+    static String outputNote(String text) {
+        java.util.regex.Matcher m = OUTPUT.matcher(text);
+        if (m.find()) {
+            return BoundedConsole.OUTPUT_DROPPED + " " + m.group(1) + "; kept the first " + m.group(2);
         }
-        return detail;
+        java.util.regex.Matcher d = DETAIL.matcher(text);
+        return d.find() ? d.group() : null;
     }
 
     /**

@@ -13,21 +13,19 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.commandlog.LogChannel;
 import org.kheperasim.sim.sandbox.Box;
 import org.kheperasim.sim.sandbox.BoxLimits;
+import org.kheperasim.sim.sandbox.OwnClasspath;
 import org.kheperasim.sim.web.RunOutcome;
 import org.kheperasim.sim.web.RunPageRecorder;
 
 /**
- * Makes one graded run in a child JVM: {@code java -Xmx… org.kheperasim.sim.cli.Main run …
- * --command-log SOCKET}, in the operating-system sandbox ({@link Box}) unless the grading said
+ * Makes one graded run in a child JVM: {@code java -Xmx… -cp SIMULATOR GradedRun … --command-log SOCKET}
+ * (the simulator's classpath at its real location, {@link OwnClasspath}: the child runs in another folder), in the operating-system sandbox ({@link Box}) unless the grading said
  * {@code --no-sandbox}, with the heap limit, the simulated-time limit and a wall-clock limit after
  * which the child is killed (and at which it also ends itself). The child hands its command log
  * over the socket ({@link LogChannel}); standard input is a pipe the grader never writes to, whose end
  * tells the child its grader is gone. {@link Verdict} judges what came back.
  */
 final class ChildRun {
-    /** The simulator's main class. */
-    static final String MAIN = "org.kheperasim.sim.cli.Main";
-
     /**
      * What every run of a grading shares.
      *
@@ -86,7 +84,7 @@ final class ChildRun {
         Files.deleteIfExists(logFile);
         Path socket = sockets.resolve(job.index() + ".sock");
         List<String> java = new ArrayList<>(jvmOptions(lim));
-        java.addAll(List.of(MAIN, "run"));
+        java.add(GradedRun.MAIN);
         java.addAll(runArgs(job, sub, lim, lim.sandbox() ? Box.CHANNEL : socket));
         long start = System.nanoTime();
         boolean killed = false;
@@ -138,14 +136,14 @@ final class ChildRun {
     /**
      * @param lim the limits
      * @return the options of a graded JVM (a run's own, or a warm worker's): heap, collector, cores, the
-     *     simulator's classpath; its main class, {@link #MAIN}, comes next
+     *     simulator's classpath at its real location; its main class ({@link GradedRun}, {@link WorkerMain}) comes next
      */
     static List<String> jvmOptions(Limits lim) {
         // Native access for JNA (the controller threads' core, see host.CpuAffinity): Java 22+ warns without it.
         return List.of("--enable-native-access=ALL-UNNAMED", "-Xmx" + lim.heapMb() + "m", "-XX:+UseSerialGC",
                 "-XX:TieredStopAtLevel=1",
                 "-XX:ActiveProcessorCount=" + lim.processors(), "-Djava.awt.headless=true", "-cp",
-                System.getProperty("java.class.path"));
+                OwnClasspath.asOption());
     }
 
     /**
@@ -153,21 +151,13 @@ final class ChildRun {
      * @param sub     the submission
      * @param lim     the limits
      * @param channel the run's command-log socket as the run sees it
-     * @return {@code run}'s arguments for a graded run
+     * @return a graded run's arguments ({@link GradedRun.Args})
      */
     static List<String> runArgs(GradePlan.Job job, Submission sub, Limits lim, Path channel) {
         Path arenaFile = arenaFile(job.arena());
-        List<String> args = new ArrayList<>(List.of("--arena", arenaFile != null ? arenaFile.toString() : job.arena(),
-                "--classpath", sub.classpath().toString(), "--controller", sub.controller(), "--seed", Long.toString(job.seed()),
-                "--json", "--quiet", "--hang-timeout", format(lim.hangSeconds()), "--sample-ms", Long.toString(lim.sampleMillis()),
-                "--command-log", channel.toString(), "--wall-limit", format(lim.wallSeconds())));
-        if (lim.seconds() != null) {
-            args.addAll(List.of("--seconds", format(lim.seconds())));
-        }
-        if (lim.trusted()) {
-            args.add("--trusted");
-        }
-        return args;
+        return new GradedRun.Args(arenaFile != null ? arenaFile.toString() : job.arena(), sub.classpath(), sub.controller(),
+                job.seed(), lim.hangSeconds(), lim.sampleMillis(), channel, lim.wallSeconds(), lim.seconds(), lim.trusted())
+                .toList();
     }
 
     /** @return the arena as a file (absolute), or null for a bundled arena */
@@ -181,12 +171,7 @@ final class ChildRun {
      * @return what a box of its runs shows, read-only: the simulator, the submission's classes, the arena files
      */
     static List<Path> boxed(Submission sub, List<String> arenas) {
-        List<Path> read = new ArrayList<>();
-        for (String e : System.getProperty("java.class.path").split(File.pathSeparator)) {
-            if (!e.isEmpty() && Files.exists(Path.of(e))) {
-                read.add(Path.of(e).toAbsolutePath());
-            }
-        }
+        List<Path> read = new ArrayList<>(OwnClasspath.entries());
         read.add(sub.classpath().toAbsolutePath());
         for (String a : arenas) {
             Path f = arenaFile(a);

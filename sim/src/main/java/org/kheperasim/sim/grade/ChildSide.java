@@ -16,7 +16,7 @@ import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.RunSession;
 
 /**
- * A graded run's side of the grading, in the child JVM ({@code run --command-log SOCKET}): it
+ * A graded run's side of the grading, in the child JVM ({@link GradedRun}): it
  * connects to the grader's channel before any controller class is loaded, writes the command log as
  * the run goes, and at the end hands over its own result and ends the JVM, whatever threads a
  * controller left running (a thread pool that spins would otherwise keep the JVM alive until the

@@ -6,7 +6,10 @@ import java.util.Locale;
 public enum RunStatus {
     /** The run went to its end (the controller finished or was stopped at the time limit). */
     OK("ok"),
-    /** The submission did not compile, or holds no controller class. */
+    /**
+     * The submission did not compile, holds no controller class, or could not be prepared (past a limit on
+     * what a hand-in holds, see {@code SubmissionLimits}; the detail says which).
+     */
     COMPILE_FAILED("failed to compile"),
     /** The student's folder is empty, or holds no {@code .java} or {@code .class} file. */
     NOTHING_HANDED_IN("nothing handed in"),

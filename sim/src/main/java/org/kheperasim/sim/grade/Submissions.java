@@ -18,7 +18,9 @@ import org.kheperasim.sim.run.ControllerCompiler;
  * a folder of {@code .class} files (in package folders) is used as it is. The controller is the
  * class that the simulator accepts as one (an Appendix {@code Thread} subclass, a {@code Controller},
  * a {@code StepController} or a WSU {@code RobotController}); classes are only loaded here, never
- * initialised, so no student code runs in the grading process.
+ * initialised, so no student code runs in the grading process. A folder past a limit on what a hand-in
+ * holds ({@link SubmissionLimits}) is refused before any of it is read, and whatever goes wrong while one
+ * submission is prepared is that submission's failure, with its reason.
  */
 public final class Submissions {
     private Submissions() {
@@ -57,6 +59,10 @@ public final class Submissions {
     public static Submission prepare(Path folder, Path work) {
         String student = folder.getFileName().toString();
         try {
+            String over = SubmissionLimits.check(folder);
+            if (over != null) {
+                return new Submission(student, null, null, over);
+            }
             List<Path> sources = files(folder, ".java");
             Path classes = folder;
             if (!sources.isEmpty()) {
@@ -72,8 +78,11 @@ public final class Submissions {
                 return new Submission(student, null, null, handedIn(folder), true);
             }
             return withController(student, classes.toAbsolutePath());
-        } catch (IOException e) {
+        } catch (IOException | UncheckedIOException e) {
             return new Submission(student, null, null, "cannot read the submission: " + e.getMessage());
+        } catch (RuntimeException | LinkageError | OutOfMemoryError | StackOverflowError e) {
+            // Whatever one hand-in does to the compiler or the class reader is its own failure, never the class's.
+            return new Submission(student, null, null, "the submission could not be prepared: " + e);
         }
     }
 

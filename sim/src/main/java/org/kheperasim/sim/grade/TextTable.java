@@ -8,7 +8,8 @@ import java.util.stream.Collectors;
 
 /**
  * The report as a terminal table: per arena, the students ranked, with each seed's score (and its
- * status when not ok), then every run not ok with its detail (the student's line where it threw).
+ * status when not ok), then every run not ok with its detail (the student's line where it threw), and every
+ * run ok whose controller printed past the run's limit, with how much it printed and kept.
  */
 final class TextTable {
     private TextTable() {
@@ -39,6 +40,15 @@ final class TextTable {
                 for (RunRecord r : failed) {
                     sb.append("  ").append(r.student()).append(", seed ").append(r.seed()).append(": ").append(r.status().label())
                             .append(r.detail().isEmpty() ? "" : ": " + r.detail()).append('\n');
+                }
+            }
+            List<RunRecord> cut = entries.stream().flatMap(x -> x.runs().stream())
+                    .filter(r -> r.status() == RunStatus.OK && ChildResults.outputNote(r.detail()) != null).toList();
+            if (!cut.isEmpty()) {
+                sb.append("Output cut at the run's limit:\n");
+                for (RunRecord r : cut) {
+                    sb.append("  ").append(r.student()).append(", seed ").append(r.seed()).append(": ")
+                            .append(ChildResults.outputNote(r.detail())).append('\n');
                 }
             }
             sb.append('\n');

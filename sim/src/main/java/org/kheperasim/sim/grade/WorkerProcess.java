@@ -24,7 +24,7 @@ import org.kheperasim.sim.sandbox.BoxLimits;
 
 /**
  * A warm worker JVM as the grader sees it: one submission's runs, made one after another in one JVM
- * ({@code Main worker}, in the same box, with the same JVM options and limits as a run's own JVM), each
+ * ({@link WorkerMain}, in the same box, with the same JVM options and limits as a run's own JVM), each
  * judged as a run in a JVM of its own is ({@link Verdict}): from its command log, received over a
  * socket of its own, its exit status and its standard error, which the worker marks per run
  * ({@link WorkerErr}). Nothing else the worker says counts, and nothing it says about one run can
@@ -102,7 +102,7 @@ final class WorkerProcess implements AutoCloseable {
         if (!lim.sandbox()) {
             java.add("-Djava.io.tmpdir=" + scratch.toAbsolutePath());
         }
-        java.addAll(List.of(ChildRun.MAIN, "worker", "--classpath", sub.classpath().toString(), "--scratch",
+        java.addAll(List.of(WorkerMain.MAIN, "--classpath", sub.classpath().toString(), "--scratch",
                 lim.sandbox() ? "/tmp" : scratch.toAbsolutePath().toString()));
         List<String> cmd = lim.sandbox() ? Box.command(new Box.Spec(ChildRun.boxed(sub, arenas), List.of(), null, channels,
                 false, BoxLimits.forWorker(lim.heapMb(), robots, lim.wallSeconds(), runs), slot), java) : ChildRun.unboxed(java);

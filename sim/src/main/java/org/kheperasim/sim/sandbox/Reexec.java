@@ -1,6 +1,5 @@
 package org.kheperasim.sim.sandbox;
 
-import java.io.File;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
@@ -11,7 +10,8 @@ import java.util.concurrent.TimeUnit;
 
 /**
  * {@code run --sandbox} and {@code serve --sandbox}: the same command again, in a {@link Box}, with
- * the terminal's input and output, and its exit status. The box shows the simulator's classpath, the
+ * the terminal's input and output, and its exit status. The box shows the simulator's classpath (at its
+ * real location, {@link OwnClasspath}, however the jar was named), the
  * files the command reads (the arena, the controller's classpath, a settings or edits file) and the
  * file it writes (the trace), nothing else. Stopping this process (Ctrl-C, SIGTERM) stops the run in
  * the box the same way, so it still finishes its trace and prints its result.
@@ -38,11 +38,7 @@ public final class Reexec {
                     + reason + "; or leave --sandbox out (only for code you trust). See docs/grading.md, \"The sandbox\".");
         });
         List<Path> read = new ArrayList<>(readOnly);
-        for (String entry : System.getProperty("java.class.path").split(File.pathSeparator)) {
-            if (!entry.isEmpty() && Files.exists(Path.of(entry))) {
-                read.add(Path.of(entry).toAbsolutePath());
-            }
-        }
+        read.addAll(OwnClasspath.entries()); // at their real paths: the box runs in a folder of its own
         List<Path> write = new ArrayList<>();
         try {
             for (Path w : writable) {
@@ -59,7 +55,7 @@ public final class Reexec {
                 "-Xmx" + (limits.memoryBytes() / (1L << 20) - 768) + "m"));
         System.getProperties().stringPropertyNames().stream().filter(k -> k.startsWith("kheperasim.")).sorted()
                 .forEach(k -> java.add("-D" + k + "=" + System.getProperty(k)));
-        java.addAll(List.of("-cp", System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main", command));
+        java.addAll(List.of("-cp", OwnClasspath.asOption(), "org.kheperasim.sim.cli.Main", command));
         java.addAll(args);
         List<String> cmd = Box.command(new Box.Spec(read, write, null, network, limits, 0), java);
         Process p;

@@ -67,10 +67,11 @@ class GradePlanTest {
                         + " after a garbage collection); the controller was stopped and the robot's motors set to 0."));
         Map<String, Object> claim = Map.of("robots", List.of(Map.of("controllerStatus", "stopped")));
         Score score = new Score(List.of(new Score.Part("task visit c*", 0.1235, 12.345, 100, "3/25 regions")), 12.345, 100);
-        RunRecord ok = ChildResults.fromClaim(job, "Robot", claim, score, 60, "[  60.000 s] khepera-sim: dropped 12 lines"
-                + " (40 KB) of controller output over the run's limit of 1049 KB; the last 8 error lines past it are above\n", RunRecord.SANDBOX);
+        RunRecord ok = ChildResults.fromClaim(job, "Robot", claim, score, 60, "[  60.000 s] khepera-sim: printed 1.1 MB of"
+                + " controller output; kept the first 1 MB (the run's limit), dropped 12 lines; the last 8 error lines past it"
+                + " are above\n", RunRecord.SANDBOX);
         assertEquals(new RunRecord("alice", "maze", 1, RunStatus.OK, 12.35, 100, 12.35, 60, "Robot",
-                "visit c*: 3/25 regions | dropped 12 lines (40 KB) of controller output over the run's limit of 1049 KB", "",
+                "visit c*: 3/25 regions | printed 1.1 MB; kept the first 1 MB", "",
                 RunRecord.SANDBOX), ok);
     }
 }

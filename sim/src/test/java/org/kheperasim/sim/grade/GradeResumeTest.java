@@ -189,7 +189,7 @@ class GradeResumeTest {
     }
 
     /**
-     * The grader's runs: its JVMs that run {@code run} or {@code worker} with a command line naming the
+     * The grader's runs: its JVMs that run {@code GradedRun} or {@code WorkerMain} with a command line naming the
      * report folder. A child the grader has forked but not yet exec'd (the sandbox's {@code ldd} probe, a
      * starting run) still shows the grader's own command line, {@code Main grade ... --out FOLDER}, so the
      * folder alone does not tell a run.
@@ -201,7 +201,7 @@ class GradeResumeTest {
     }
 
     /** A graded run's JVM, in a JVM of its own or a warm worker (the grader itself runs {@code grade}). */
-    private static final Pattern RUN = Pattern.compile("org\\.kheperasim\\.sim\\.cli\\.Main (run|worker) ");
+    private static final Pattern RUN = Pattern.compile("org\\.kheperasim\\.sim\\.grade\\.(GradedRun|WorkerMain) ");
 
     /** Every process whose command line names the report folder (a run's classpath lies under it). */
     private static List<String> orphans(Path out) {

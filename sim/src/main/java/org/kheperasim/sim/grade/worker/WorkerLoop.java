@@ -19,7 +19,7 @@ import org.kheperasim.sim.host.loading.SharedControllers;
 
 /**
  * A warm worker JVM's life: it makes one submission's graded runs one after another, each as a
- * graded child JVM would make it ({@code run --command-log ...}, through {@link Launcher}), and
+ * graded child JVM would make it ({@code grade.GradedRun}, through {@link Launcher}), and
  * between runs puts the JVM back as the next run must find it, or ends itself to be replaced.
  *
  * <p>Each run gets what a JVM of its own would give it: its controller classes through fresh class
@@ -44,12 +44,12 @@ public final class WorkerLoop {
     /** How long a run's threads may take to end after it, ms. */
     private static final long THREAD_GRACE_MILLIS = 2000;
 
-    /** Makes one run: {@code run} with these arguments, in this JVM; returns its exit status (a command's). */
+    /** Makes one run: a graded run with these arguments, in this JVM; returns the exit status its JVM would end with. */
     @FunctionalInterface
     public interface Launcher {
         /**
-         * @param args {@code run}'s arguments
-         * @return the exit status {@code run} would end its JVM with
+         * @param args the graded run's arguments
+         * @return the exit status a graded run's JVM would end with
          */
         int run(List<String> args);
     }

@@ -35,7 +35,7 @@ public final class WorkerProtocol {
      *
      * @param index the run's index in the grading
      * @param token the grader's token for it (letters and digits)
-     * @param args  {@code run}'s arguments
+     * @param args  the graded run's arguments
      */
     public record Request(int index, String token, List<String> args) {
         /** Copies the arguments. */

@@ -1,4 +1,4 @@
-package org.kheperasim.sim.cli;
+package org.kheperasim.sim.grade;
 
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
@@ -7,9 +7,10 @@ import org.kheperasim.sim.host.ConsoleLine;
 /**
  * The simulator's first report of each controller's failure, as the run's console gave it: its
  * simulated time and, for a throw, the student's part of the stack trace, which the run's result does
- * not hold (it has the exception's text only). Lines come from the controllers' threads.
+ * not hold (it has the exception's text only). Lines come from the controllers' threads. {@code run} and a
+ * graded run ({@link GradedRun}) both read them.
  */
-final class FailureLines {
+public final class FailureLines {
     private final Map<String, ConsoleLine> thrown = new ConcurrentHashMap<>();
     private final Map<String, ConsoleLine> first = new ConcurrentHashMap<>();
 
@@ -18,7 +19,7 @@ final class FailureLines {
      *     kept (a controller's own {@code System.err} lines come one line at a time), and its first
      *     error that reads as the simulator's (a throw, or {@code controller Name ... stopped making API calls})
      */
-    void seen(ConsoleLine line) {
+    public void seen(ConsoleLine line) {
         if (line.kind() != ConsoleLine.Kind.ERROR) {
             return;
         }
@@ -32,12 +33,12 @@ final class FailureLines {
     }
 
     /** @param robot a robot's name @return the report of its controller's throw, or null */
-    ConsoleLine thrown(String robot) {
+    public ConsoleLine thrown(String robot) {
         return thrown.get(robot);
     }
 
     /** @param robot a robot's name @return the simulator's first report of its controller's failure, or null */
-    ConsoleLine first(String robot) {
+    public ConsoleLine first(String robot) {
         return first.get(robot);
     }
 }
