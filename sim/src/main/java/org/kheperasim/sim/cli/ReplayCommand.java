@@ -12,8 +12,10 @@ import org.kheperasim.link.tool.ExitCodes;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFiles;
 import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.files.TextFiles;
 import org.kheperasim.sim.replay.Replay;
 import org.kheperasim.sim.replay.ReplayFiles;
+import org.kheperasim.sim.trace.TraceFormatException;
 import org.kheperasim.sim.web.RunOutcome;
 import org.kheperasim.sim.web.RunPage;
 import picocli.CommandLine.Command;
@@ -44,6 +46,9 @@ final class ReplayCommand implements Callable<Integer> {
         if (!Files.exists(recording)) {
             throw new IllegalArgumentException("no trace or recording " + recording + "; give a trace written by"
                     + " 'run --trace FILE', a run recording folder or a robot-link recording");
+        }
+        if (!Files.isDirectory(recording)) {   // before anything opens it: a pipe would hang, a device run on
+            TextFiles.regularSize(recording, "trace", (line, what) -> new TraceFormatException(recording.toString(), line, what));
         }
         if (arenaFile != null && Files.isDirectory(recording)) {
             throw new IllegalArgumentException("--arena " + arenaFile + ": the run recording " + recording

@@ -34,7 +34,7 @@ import picocli.CommandLine.Parameters;
             "RECORDING is a trace file (run --trace) or a run recording folder (with its run.trace)."},
         footer = "Exit status: 0 identical; 1 it differs; 2 bad input (an option, a file, a name the tool cannot use).")
 final class VerifyCommand implements Callable<Integer> {
-    private static final long MAX_TRACE_BYTES = 256L << 20;
+    private static final long MAX_TRACE_BYTES = ReplayFiles.MAX_FILE_BYTES;
 
     @Parameters(index = "0", paramLabel = "RECORDING|TRACE", description = "a trace file, or a run recording folder")
     Path recording;
@@ -52,7 +52,7 @@ final class VerifyCommand implements Callable<Integer> {
     public Integer call() {
         boolean folder = Files.isDirectory(recording);
         Path traceFile = folder ? recording.resolve("run.trace") : recording;
-        if (!Files.isRegularFile(traceFile)) {
+        if (!Files.exists(traceFile)) {
             throw new IllegalArgumentException(folder ? "the run recording " + recording + " has no run.trace to compare"
                     + " with; save the recording from the window (it keeps the run's trace), or verify a trace file"
                     : "no trace file " + recording + "; give a trace written by 'run --trace FILE' or a run recording folder");
