@@ -175,8 +175,8 @@ final class EvaluateCommand implements Callable<Integer> {
      */
     private static BufferedReader jobFile(Path file) throws IOException {
         if (Files.isDirectory(file)) {
-            throw new InputFileException(file.toString(), 0, "this is a folder, not a job file; give a file of JSON job"
-                    + " lines, or - for standard input");
+            throw new InputFileException(file.toString(), 0, "this is a folder; give a job file (JSON job lines), or - for"
+                    + " standard input");
         }
         return Files.newBufferedReader(file, StandardCharsets.UTF_8);
     }

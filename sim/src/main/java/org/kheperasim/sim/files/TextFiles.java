@@ -45,10 +45,7 @@ public final class TextFiles {
      * @throws UncheckedIOException naming the file when it cannot be read at all
      */
     public static String readUtf8(Path file, long maxBytes, String kind, ErrorFactory errors) {
-        long size = regularSize(file, kind, errors);
-        if (size > maxBytes) {
-            throw errors.error(0, tooLarge(size, maxBytes, kind));
-        }
+        long size = checkFile(file, maxBytes, kind, errors);
         byte[] bytes;
         try (InputStream in = Files.newInputStream(file)) {
             bytes = in.readNBytes((int) Math.min(Integer.MAX_VALUE - 8, maxBytes + 1));
@@ -65,6 +62,26 @@ public final class TextFiles {
         } catch (OutOfMemoryError e) {
             throw errors.error(0, noRoom(size, kind));
         }
+    }
+
+    /**
+     * What {@link #readUtf8} checks before it opens a file: that it is a regular file ({@link #regularSize})
+     * no larger than the limit.
+     *
+     * @param file     the file
+     * @param maxBytes the largest file of this kind, bytes
+     * @param kind     what the file is, for messages
+     * @param errors   makes the reader's own error
+     * @return its size, bytes
+     * @throws InputFileException   (from {@code errors}) when it is not a regular file or too large
+     * @throws UncheckedIOException naming the file when it does not exist or cannot be looked at
+     */
+    public static long checkFile(Path file, long maxBytes, String kind, ErrorFactory errors) {
+        long size = regularSize(file, kind, errors);
+        if (size > maxBytes) {
+            throw errors.error(0, tooLarge(size, maxBytes, kind));
+        }
+        return size;
     }
 
     /**
@@ -87,7 +104,7 @@ public final class TextFiles {
             throw new UncheckedIOException("cannot read " + kind + " " + file + ": " + e, e);
         }
         if (a.isDirectory()) {
-            throw errors.error(0, "this is a folder, not a " + kind + "; give the " + kind + " itself");
+            throw errors.error(0, "this is a folder; give the " + kind + " itself");
         }
         if (!a.isRegularFile()) {
             throw errors.error(0, "this is not a regular file (a pipe, a device such as /dev/zero, a socket) and is not"
