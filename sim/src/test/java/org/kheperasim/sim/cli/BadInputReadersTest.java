@@ -154,6 +154,22 @@ class BadInputReadersTest {
     }
 
     @Test
+    void anArenaOrATraceThatWouldRunForEverIsRefused() throws Exception {
+        Path arena = dir.resolve("forever.arena");
+        Files.writeString(arena, ArenaFormat.write(ArenaFormat.loadBundled("lab")).replaceFirst("(?m)^time-limit .*$", "")
+                + "time-limit 9.2e18\n");
+        refused("time-limit is", "run", "--arena", arena.toString(), "--controller", "Braitenberg");
+        Path trace = dir.resolve("short.trace");
+        assertEquals(ExitCodes.OK, main("", "run", "--arena", "lab", "--controller", "Braitenberg", "--seconds", "1", "--quiet",
+                "--trace", trace.toString()), err);
+        List<String> lines = new ArrayList<>(Files.readAllLines(trace));
+        String last = lines.remove(lines.size() - 1);
+        lines.add("999999999999.000" + last.substring(last.indexOf(' ')));
+        Files.write(trace, lines);
+        refused("is later than any run ends", "verify", trace.toString());
+    }
+
+    @Test
     void evaluateBoundsTheSimulatedTime() {
         refusedWithInput("{\"controller\": \"StepBraitenberg\", \"arena\": \"lab\", \"seconds\": 9.2e18}\n",
                 "1 job line could not be read (first: line 1: \"seconds\": 9.2E18 is out of range; give a simulated time greater"
