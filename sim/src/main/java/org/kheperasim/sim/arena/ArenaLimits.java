@@ -11,8 +11,6 @@ public final class ArenaLimits {
 
     /** Longest side of an arena, mm (10 m). */
     public static final double MAX_SIDE_MM = 10_000;
-    /** Longest time limit, simulated s: the command line's longest run ({@code run --seconds}), about 3 years. */
-    public static final double MAX_TIME_LIMIT_S = 1e8;
     /** Largest floor, mm² (50 m², e.g. 7.07 x 7.07 m: about 8.4 million grid cells; a swarm of 1,000 robots in 200 mm cells needs 40 m²). */
     public static final double MAX_AREA_MM2 = 50_000_000;
     /** Most robots in one arena (each runs its own controller). */

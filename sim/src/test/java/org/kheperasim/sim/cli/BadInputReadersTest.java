@@ -158,7 +158,8 @@ class BadInputReadersTest {
         Path arena = dir.resolve("forever.arena");
         Files.writeString(arena, ArenaFormat.write(ArenaFormat.loadBundled("lab")).replaceFirst("(?m)^time-limit .*$", "")
                 + "time-limit 9.2e18\n");
-        refused("time-limit is", "run", "--arena", arena.toString(), "--controller", "Braitenberg");
+        refused("time-limit is 9200000000000000000 s; give simulated seconds, more than 0 and at most 86400", "run", "--arena",
+                arena.toString(), "--controller", "Braitenberg");   // (refused before this issue too)
         Path trace = dir.resolve("short.trace");
         assertEquals(ExitCodes.OK, main("", "run", "--arena", "lab", "--controller", "Braitenberg", "--seconds", "1", "--quiet",
                 "--trace", trace.toString()), err);
