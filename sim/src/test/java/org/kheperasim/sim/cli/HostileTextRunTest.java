@@ -59,13 +59,15 @@ class HostileTextRunTest {
     @Test
     void aForgedResultLineIsStampedAndNothingRawReachesTheTerminal() throws Exception {
         Path classes = compiledForger();
+        Path page = dir.resolve("run.html");
         int code = main("run", "--arena", "lab", "--classpath", classes.toString(), "--controller", "Forger", "--seconds", "2",
-                "--seed", "1");
+                "--seed", "1", "--html", page.toString());
         assertEquals(ExitCodes.FAILED, code, out + err);
         HostileText.assertNoRawControl("run's standard output", out);
         HostileText.assertNoRawControl("run's standard error", err);
+        HostileText.assertNoRawControl("the run's web page", java.nio.file.Files.readString(page));
         String[] outLines = out.split("\n");
-        String result = outLines[outLines.length - 1];
+        String result = outLines[outLines.length - 2];   // then the page's "wrote ..."
         assertTrue(result.startsWith("Forger in lab: 0.5 s simulated") && result.contains("; controller failed;"), out);
         long resultShaped = (out + err).lines().filter(l -> l.startsWith("Forger in lab:")).count();
         assertEquals(1, resultShaped, "only the real result line starts like one:\n" + out + err);
