@@ -25,7 +25,8 @@ import org.kheperasim.sim.text.Shown;
 /**
  * Issue 35 item 6, end to end: students whose folder names are formulas, hold a line end or ESC, and
  * whose controller prints and throws control characters and a forged result line. Grade's output,
- * {@code report.txt}, {@code results.csv} and {@code index.html} hold no raw control character; no
+ * {@code report.txt}, {@code results.csv}, {@code results.json} and {@code index.html} hold no raw
+ * control character (the JSON reads back to the names); no
  * CSV cell is a formula; each student is one line of the ranking; the CSV reads back to the names.
  */
 class HostileTextGradeTest {
@@ -70,6 +71,8 @@ class HostileTextGradeTest {
         HostileText.assertNoRawControl("report.txt", report);
         HostileText.assertNoRawControl("results.csv", csv);
         HostileText.assertNoRawControl("index.html", Files.readString(out.resolve("index.html")));
+        HostileText.assertNoRawControl("results.json", Files.readString(out.resolve("results.json")));
+        assertEquals(new TreeSet<>(STUDENTS), new TreeSet<>(ReportFiles.read(out.resolve("results.json")).plan().students()));
 
         // Each student is one line of the ranking: the table runs from its header to the blank line.
         List<String> lines = report.lines().toList();
