@@ -272,7 +272,8 @@ final class RunCommand implements Callable<Integer> {
     static String summary(RunResult result, Score score) {
         boolean lone = result.robots().size() == 1;
         StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "%s in %s: %.1f s simulated in %.2f s (%.0fx real time)",
-                Shown.line(simpleName(result.controller())), Shown.line(result.arena()), result.simulatedSeconds(), result.wallSeconds(),
+                Shown.line(simpleName(result.controller())), Shown.line(result.arena()), result.simulatedSeconds(),
+                result.wallSeconds(),
                 result.realTimeFactor()));
         if (lone) {
             s.append("; ");

@@ -25,7 +25,8 @@ final class TextTable {
             int nameWidth = StrictMath.max(7, entries.stream().mapToInt(x -> Shown.line(x.student()).length()).max().orElse(7));
             double max = entries.isEmpty() || entries.get(0).runs().isEmpty() ? 0
                     : entries.stream().flatMap(x -> x.runs().stream()).mapToDouble(RunRecord::max).max().orElse(0);
-            sb.append("Arena ").append(Shown.line(e.getKey())).append(max > 0 ? " (" + ReportFiles.num(max) + " points)" : " (no tasks)")
+            sb.append("Arena ").append(Shown.line(e.getKey()))
+                    .append(max > 0 ? " (" + ReportFiles.num(max) + " points)" : " (no tasks)")
                     .append('\n');
             sb.append(String.format(Locale.ROOT, "%4s  %-" + nameWidth + "s  %7s  %7s  %s%n", "rank", "student", "score%",
                     "points", "score% by seed"));
