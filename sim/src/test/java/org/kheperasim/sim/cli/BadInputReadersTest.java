@@ -145,6 +145,8 @@ class BadInputReadersTest {
         refused(f + ": this is not a regular file", "run", "--arena", f, "--controller", "Braitenberg");
         refused(f + ": this is not a regular file", "run", "--arena", "lab", "--controller", "Braitenberg", "--edits", f);
         refused("no WSU world file " + f, "import-wsu", f, "-o", dir.resolve("x.arena").toString());
+        refused("classpath entry " + f + " is neither a folder nor a jar", "run", "--arena", "lab", "--classpath", f,
+                "--controller", "Mine", "--seconds", "1");
     }
 
     @Test
