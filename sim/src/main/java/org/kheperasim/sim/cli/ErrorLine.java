@@ -10,7 +10,7 @@ import picocli.CommandLine;
  * The simulator's error line, {@code khepera-sim: error: what is wrong and the fix}, as robot-link's
  * {@link ToolErrors} writes it and with the same exit codes, but always one line: a message holds
  * what a controller wrote (its exception's message, its class's name), so its control characters
- * and line ends are shown escaped ({@link Shown#line}). An {@link OutOfMemoryError}, which picocli
+ * and line ends are shown escaped ({@link Shown#visible}: a backslash stays one, as in a Windows path). An {@link OutOfMemoryError}, which picocli
  * does not catch, gets the line too.
  */
 final class ErrorLine {
@@ -31,7 +31,7 @@ final class ErrorLine {
             if (code == ExitCodes.FAILED) {
                 what = "unexpected " + e + "; this is a bug, please report it (set KHEPERA_DEBUG=1 for the stack trace)";
             }
-            err.println(ToolErrors.prefix(TOOL) + Shown.line(what));
+            err.println(ToolErrors.prefix(TOOL) + Shown.visible(what));
             if (System.getenv("KHEPERA_DEBUG") != null) {
                 e.printStackTrace(err);
             }
@@ -46,7 +46,7 @@ final class ErrorLine {
      * @return the exit status, after the line on standard error
      */
     static int outOfMemory(OutOfMemoryError e) {
-        System.err.println(ToolErrors.prefix(TOOL) + "out of memory (" + Shown.line(e.getMessage()) + "); give Java more"
+        System.err.println(ToolErrors.prefix(TOOL) + "out of memory (" + Shown.visible(e.getMessage()) + "); give Java more"
                 + " with java -Xmx4g -jar khepera-sim.jar ..., or a smaller input");
         if (System.getenv("KHEPERA_DEBUG") != null) {
             e.printStackTrace();

@@ -164,7 +164,7 @@ final class EvaluateCommand implements Callable<Integer> {
         }
         if (bad.get() > 0) {
             System.err.println(ToolErrors.prefix(ErrorLine.TOOL) + bad.get() + " job line" + (bad.get() == 1 ? "" : "s")
-                    + " could not be read (first: " + Shown.line(firstBad[0]) + "); their outcome lines say why");
+                    + " could not be read (first: " + Shown.visible(firstBad[0]) + "); their outcome lines say why");
         }
         return bad.get() > 0 ? ExitCodes.BAD_INPUT : failed.get() > 0 ? ExitCodes.FAILED : ExitCodes.OK;
     }

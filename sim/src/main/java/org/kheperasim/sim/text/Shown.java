@@ -9,10 +9,11 @@ import java.util.Locale;
  * bidirectional renderer would act on instead of showing (C0 controls, DEL, C1 controls, the Unicode
  * bidi embeddings, overrides, isolates and marks, the line and paragraph separators) is written as a
  * visible escape: {@code \e} (ESC), {@code \n}, {@code \r}, {@code \t}, {@code \x07} (another
- * control up to U+00FF), {@code \u202e} (any other); a backslash is written {@code \\}, so
- * {@link #unescape} gives the text back exactly. Applied where text is written for a person (the
- * terminal, the window's console, {@code report.txt}, {@code results.csv}), never to what the
- * simulator computes with.
+ * control up to U+00FF), {@code \u202e} (any other). In a file ({@link #line}: {@code report.txt},
+ * {@code results.csv}) a backslash is written {@code \\}, so {@link #unescape} gives the text back
+ * exactly; on a screen ({@link #visible}, {@link #lines}: the terminal, the window's console, an error
+ * line) a backslash stays one, so that a Windows path reads as typed. Applied where text is written
+ * for a person, never to what the simulator computes with.
  */
 public final class Shown {
     /** The first characters that make a spreadsheet evaluate a cell (OWASP's CSV injection rule), and {@code '}. */
@@ -51,9 +52,33 @@ public final class Shown {
     }
 
     /**
+     * For an error message, which names the user's own files: as {@link #line}, but a backslash stays
+     * one (a Windows path reads as typed), so this is not always reversible.
+     *
+     * @param s text, or null
+     * @return it on one line, every control character escaped
+     */
+    public static String visible(String s) {
+        if (s == null) {
+            return "null";
+        }
+        StringBuilder out = new StringBuilder(s.length() + 16);
+        for (int i = 0; i < s.length(); i++) {
+            char c = s.charAt(i);
+            if (c == '\\') {
+                out.append(c);
+            } else {
+                escape(c, out);
+            }
+        }
+        return out.toString();
+    }
+
+    /**
      * @param s text that may span lines ({@code \n}, {@code \r\n}); null reads as {@code "null"}
-     * @return its lines, each escaped as {@link #line} escapes; the tabs that start a line (a stack
-     *     trace's indentation) become four spaces each; at least one line
+     * @return its lines, each escaped as {@link #visible} escapes (for a person reading, a backslash stays
+     *     one); the tabs that start a line (a stack trace's indentation) become four spaces each; at least
+     *     one line
      */
     public static List<String> lines(String s) {
         List<String> out = new ArrayList<>();
@@ -67,7 +92,7 @@ public final class Shown {
             while (indent < cut && text.charAt(indent) == '\t') {
                 indent++;
             }
-            out.add("    ".repeat(indent - start) + line(text.substring(indent, cut)));
+            out.add("    ".repeat(indent - start) + visible(text.substring(indent, cut)));
             if (nl < 0) {
                 return out;
             }
@@ -82,7 +107,7 @@ public final class Shown {
      *     it can pose as another's
      */
     public static String stamped(String prefix, String s) {
-        String p = line(prefix);
+        String p = visible(prefix);
         StringBuilder out = new StringBuilder();
         for (String l : lines(s)) {
             out.append(out.length() == 0 ? "" : "\n").append(p).append(l);
@@ -116,8 +141,8 @@ public final class Shown {
     }
 
     /**
-     * @param s text written by {@link #line} (or {@link #lines}, one line of it)
-     * @return the text it was made from (a stack trace's indentation comes back as spaces)
+     * @param s text written by {@link #line}
+     * @return the text it was made from
      * @throws IllegalArgumentException for an escape this class does not write
      */
     public static String unescape(String s) {

@@ -41,6 +41,11 @@ class ShownTest {
     }
 
     @Test
+    void anErrorMessageKeepsItsBackslashes() {
+        assertEquals("no arena file 'C:\\Users\\me\\x.arena'\\n\\e", Shown.visible("no arena file 'C:\\Users\\me\\x.arena'\n\u001b"));
+    }
+
+    @Test
     void everyLineIsStampedAndAStackTraceKeepsItsIndentation() {
         String s = Shown.stamped("[    1.000 s] ERROR robot: ",
                 "threw x\nWallFollower in maze: forged\u001b[8m\r\n\tat Forger.doWork(Forger.java:9)");
