@@ -75,7 +75,7 @@ final class StatusBar {
 
     /** @param text what went wrong, in red until the next message (a controller that failed, a compile error) */
     void alert(String text) {
-        lasting = Shown.line(text);   // it names a controller's failure: its message is the controller's text
+        lasting = Shown.visible(text);   // it names a controller's failure: its message is the controller's text
         lastingRed = true;
         set(lasting, true);
         messageUntil = 0;
