@@ -172,6 +172,22 @@ class BadInputReadersTest {
         refused("is later than any run ends", "verify", trace.toString());
     }
 
+    /** Under the limit but more than the heap holds: the reader says so in one line, not with an OutOfMemoryError's trace. */
+    @Test
+    void aTraceLargerThanTheHeapIsOneLine() throws Exception {
+        Path mid = dir.resolve("mid.trace");
+        try (RandomAccessFile f = new RandomAccessFile(mid.toFile(), "rw")) {
+            f.setLength(200L << 20);
+        }
+        Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-Xmx48m",
+                "-cp", System.getProperty("java.class.path"), Main.class.getName(), "verify", mid.toString())
+                .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        String e = new String(p.getErrorStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertEquals(ExitCodes.BAD_INPUT, p.waitFor(), e);
+        assertEquals(1, e.lines().count(), e);
+        assertTrue(e.startsWith("khepera-sim: error: " + mid + ": the file (200 MiB) does not fit in this Java's memory"), e);
+    }
+
     @Test
     void evaluateBoundsTheSimulatedTime() {
         refusedWithInput("{\"controller\": \"StepBraitenberg\", \"arena\": \"lab\", \"seconds\": 9.2e18}\n",
