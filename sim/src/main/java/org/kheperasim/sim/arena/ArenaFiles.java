@@ -52,6 +52,9 @@ public final class ArenaFiles {
      *     false when it cannot be read (loading it then says why)
      */
     public static boolean isWsuWorld(Path file) {
+        if (!Files.isRegularFile(file)) {
+            return false;   // not opened: a pipe would hang; reading it as an arena file refuses it
+        }
         try (InputStream in = Files.newInputStream(file)) {
             return WsuWorld.isWsuWorld(in.readNBytes(2));
         } catch (IOException e) {

@@ -121,6 +121,9 @@ public final class ArenaFormat {
         if (text != null) {
             return parse(text, nameOrPath + EXTENSION);
         }
+        if (path != null && Files.exists(path)) {
+            return load(path);   // a folder, a pipe, a device: refused, saying what it is, without opening it
+        }
         throw new IllegalArgumentException("no arena file '" + nameOrPath
                 + "' and no bundled arena of that name; give the path to a " + EXTENSION
                 + " file or one of the bundled arenas: " + String.join(", ", BUNDLED));

@@ -15,11 +15,16 @@ import java.util.Map;
 import java.util.TreeMap;
 import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicInteger;
+import org.kheperasim.link.tool.CliNumbers;
 import org.kheperasim.link.tool.ExitCodes;
+import org.kheperasim.link.tool.ToolErrors;
 import org.kheperasim.sim.eval.Evaluator;
 import org.kheperasim.sim.eval.Job;
 import org.kheperasim.sim.eval.Outcome;
+import org.kheperasim.sim.files.BoundedLines;
+import org.kheperasim.sim.files.InputFileException;
 import org.kheperasim.sim.grade.GradePlan;
+import org.kheperasim.sim.text.Shown;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -36,6 +41,9 @@ import picocli.CommandLine.Option;
                 + " order of completion. The controllers run as your own code (unchecked); code not your own is graded"
                 + " with 'grade', in a sandbox. See docs/evaluate.md."})
 final class EvaluateCommand implements Callable<Integer> {
+    /** The longest job line, characters: a job with thousands of parameters is a few hundred KB. */
+    static final int MAX_JOB_CHARS = 1 << 20;
+
     @Option(names = "--jobs", paramLabel = "FILE", defaultValue = "-", description = "the jobs, a JSON object per line"
             + " (- for standard input, the default)")
     String jobs;
@@ -57,7 +65,8 @@ final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--arena", paramLabel = "NAME_OR_FILE", description = "the arena of a job that names none")
     String arena;
 
-    @Option(names = "--seconds", paramLabel = "S", defaultValue = "60", description = "simulated seconds of a job that"
+    @Option(names = "--seconds", paramLabel = "S", defaultValue = "60", converter = CliNumbers.PositiveSeconds.class,
+            description = "simulated seconds of a job that"
             + " says none (default ${DEFAULT-VALUE})")
     double seconds;
 
@@ -100,6 +109,7 @@ final class EvaluateCommand implements Callable<Integer> {
         AtomicInteger done = new AtomicInteger();
         AtomicInteger failed = new AtomicInteger();
         AtomicInteger bad = new AtomicInteger();
+        String[] firstBad = {""};
         Map<Long, String> pending = new TreeMap<>();
         long[] nextOrdered = {-1};
         List<Long> order = new ArrayList<>();
@@ -107,10 +117,12 @@ final class EvaluateCommand implements Callable<Integer> {
         long start = System.nanoTime();
         try (Evaluator evaluator = new Evaluator(classpath, !contained, n);
                 BufferedReader in = jobs.equals("-") ? new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8))
-                        : Files.newBufferedReader(Path.of(jobs), StandardCharsets.UTF_8)) {
+                        : jobFile(Path.of(jobs))) {
+            BoundedLines lines = new BoundedLines(in, MAX_JOB_CHARS, (l, what) -> new InputFileException(
+                    jobs.equals("-") ? "standard input" : jobs, l, what + " (a job is one JSON object on one line)"));
             String line;
             long index = -1;
-            while ((line = in.readLine()) != null) {
+            while ((line = lines.next()) != null) {
                 index++;
                 if (line.isBlank() || line.stripLeading().startsWith("#") || index % slice.n() != slice.k() - 1) {
                     continue;
@@ -122,7 +134,9 @@ final class EvaluateCommand implements Callable<Integer> {
                 try {
                     job = EvaluateJson.job(index, line, controller, arena, seconds);
                 } catch (IllegalArgumentException e) {
-                    bad.incrementAndGet();
+                    if (bad.incrementAndGet() == 1) {
+                        firstBad[0] = "line " + (index + 1) + ": " + e.getMessage();
+                    }
                     emit(lock, pending, order, nextOrdered, sink, index,
                             EvaluateJson.error(index, EvaluateJson.idOf(line), "line " + (index + 1) + ": " + e.getMessage()));
                     continue;
@@ -148,7 +162,23 @@ final class EvaluateCommand implements Callable<Integer> {
         if (progress) {
             System.err.println();
         }
+        if (bad.get() > 0) {
+            System.err.println(ToolErrors.prefix(ErrorLine.TOOL) + bad.get() + " job line" + (bad.get() == 1 ? "" : "s")
+                    + " could not be read (first: " + Shown.visible(firstBad[0]) + "); their outcome lines say why");
+        }
         return bad.get() > 0 ? ExitCodes.BAD_INPUT : failed.get() > 0 ? ExitCodes.FAILED : ExitCodes.OK;
+    }
+
+    /**
+     * @param file a job file: a regular file, or a pipe (read as it comes, like standard input); a folder is refused
+     * @return a reader of it
+     */
+    private static BufferedReader jobFile(Path file) throws IOException {
+        if (Files.isDirectory(file)) {
+            throw new InputFileException(file.toString(), 0, "this is a folder; give a job file (JSON job lines), or - for"
+                    + " standard input");
+        }
+        return Files.newBufferedReader(file, StandardCharsets.UTF_8);
     }
 
     /** Write an outcome now, or (--ordered) once every job before it has been written. */

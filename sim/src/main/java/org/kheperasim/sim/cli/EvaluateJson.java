@@ -14,12 +14,17 @@ import org.kheperasim.api.Parameters;
 import org.kheperasim.link.tool.ExitCodes;
 import org.kheperasim.sim.eval.Job;
 import org.kheperasim.sim.eval.Outcome;
+import org.kheperasim.sim.files.InputFileException;
+import org.kheperasim.sim.files.TextFiles;
 import org.kheperasim.sim.grade.JsonValues;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.task.Score;
 
 /** The JSON lines of {@code evaluate}: a job read from one, an outcome written as one, shard outputs joined. */
 final class EvaluateJson {
+    /** The largest shard output {@code --join} reads, bytes (an outcome line is about 1 KB). */
+    static final long MAX_JOIN_BYTES = 256L << 20;
+
     private EvaluateJson() {
     }
 
@@ -52,6 +57,10 @@ final class EvaluateJson {
         }
         long seed = m.containsKey("seed") ? whole(m.get("seed"), "seed") : index + 1;
         double s = m.containsKey("seconds") ? number(m.get("seconds"), "seconds") : seconds;
+        if (!(s > 0 && s <= Job.MAX_SECONDS)) {
+            throw new IllegalArgumentException("\"seconds\": " + m.get("seconds") + " is out of range; give a simulated time"
+                    + " greater than 0 and at most " + (long) Job.MAX_SECONDS + ", e.g. 60");
+        }
         Object t = m.get("trace");
         return new Job(index, text(m, "id", ""), c, a, seed, s, parameters(m.get("parameters")), settings(m.get("settings")),
                 t == null ? null : Path.of(string(t, "trace")));
@@ -188,7 +197,8 @@ final class EvaluateJson {
         TreeMap<Long, String> lines = new TreeMap<>();
         boolean anyFailed = false;
         for (Path f : files) {
-            List<String> all = Files.readAllLines(f, StandardCharsets.UTF_8);
+            List<String> all = TextFiles.readUtf8(f, MAX_JOIN_BYTES, "evaluate output",
+                    (line, what) -> new InputFileException(f.toString(), line, what)).lines().toList();
             for (int i = 0; i < all.size(); i++) {
                 String line = all.get(i);
                 if (line.isBlank()) {

@@ -4,6 +4,7 @@ import java.math.BigDecimal;
 import java.math.MathContext;
 import java.util.Locale;
 import java.util.Map;
+import org.kheperasim.sim.text.Shown;
 
 /** A minimal JSON writer for the run summary: a few flat values, objects and arrays. */
 final class Json {
@@ -108,7 +109,7 @@ final class Json {
                 case '\r' -> out.append("\\r");
                 case '\t' -> out.append("\\t");
                 default -> {
-                    if (c < 0x20) {
+                    if (Shown.isControl(c)) { // C0, and what a terminal or renderer acts on
                         out.append(String.format(Locale.ROOT, "\\u%04x", (int) c));
                     } else {
                         out.append(c);

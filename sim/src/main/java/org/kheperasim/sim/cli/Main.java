@@ -31,7 +31,7 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
 
     /** @return a command line ready to execute, with the project's error handling */
     public static CommandLine commandLine() {
-        return HelpFormat.install(ToolErrors.install(new CommandLine(new Main()), "khepera-sim"));
+        return HelpFormat.install(ErrorLine.install(ToolErrors.install(new CommandLine(new Main()), ErrorLine.TOOL)));
     }
 
     /**
@@ -49,7 +49,7 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
         }
         CommandLine top = new CommandLine(new Lean());
         top.addSubcommand(args[0], type);
-        return HelpFormat.install(ToolErrors.install(top, "khepera-sim"));
+        return HelpFormat.install(ErrorLine.install(ToolErrors.install(top, ErrorLine.TOOL)));
     }
 
     /**
@@ -92,7 +92,12 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
      * @param args command-line arguments
      */
     public static void main(String[] args) {
-        int code = commandLineFor(args).execute(args);
+        int code;
+        try {
+            code = commandLineFor(args).execute(args);
+        } catch (OutOfMemoryError e) {
+            code = ErrorLine.outOfMemory(e);
+        }
         if (code != 0) {
             System.exit(code);
         }

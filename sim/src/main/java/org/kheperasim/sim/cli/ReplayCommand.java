@@ -12,8 +12,11 @@ import org.kheperasim.link.tool.ExitCodes;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFiles;
 import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.files.BoundedLines;
+import org.kheperasim.sim.files.TextFiles;
 import org.kheperasim.sim.replay.Replay;
 import org.kheperasim.sim.replay.ReplayFiles;
+import org.kheperasim.sim.trace.TraceFormatException;
 import org.kheperasim.sim.web.RunOutcome;
 import org.kheperasim.sim.web.RunPage;
 import picocli.CommandLine.Command;
@@ -45,6 +48,10 @@ final class ReplayCommand implements Callable<Integer> {
             throw new IllegalArgumentException("no trace or recording " + recording + "; give a trace written by"
                     + " 'run --trace FILE', a run recording folder or a robot-link recording");
         }
+        if (!Files.isDirectory(recording)) {   // before anything opens it: a pipe would hang, a device run on
+            TextFiles.checkFile(recording, ReplayFiles.MAX_FILE_BYTES, "replay",
+                    (line, what) -> new TraceFormatException(recording.toString(), line, what));
+        }
         if (arenaFile != null && Files.isDirectory(recording)) {
             throw new IllegalArgumentException("--arena " + arenaFile + ": the run recording " + recording
                     + " carries its own start.arena; give --arena only with a trace file");
@@ -63,7 +70,9 @@ final class ReplayCommand implements Callable<Integer> {
     private Arena arena() {
         Arena a = ArenaFiles.load(arenaFile, note -> { });
         try (BufferedReader in = Files.newBufferedReader(recording, StandardCharsets.UTF_8)) {
-            for (String line = in.readLine(); line != null && line.startsWith("#"); line = in.readLine()) {
+            BoundedLines lines = new BoundedLines(in, 1 << 16,
+                    (l, what) -> new TraceFormatException(recording.toString(), l, what + " (not a trace's header)"));
+            for (String line = lines.next(); line != null && line.startsWith("#"); line = lines.next()) {
                 String[] f = line.split(" ");
                 if (f.length >= 4 && f[1].equals("arena") && f[3].startsWith("sha256=")
                         && !f[3].substring(7).equals(ArenaFormat.sha256(a))) {

@@ -26,6 +26,7 @@ import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
 import org.kheperasim.sim.task.RunFacts;
 import org.kheperasim.sim.task.Score;
+import org.kheperasim.sim.text.Shown;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -274,7 +275,8 @@ final class RunCommand implements Callable<Integer> {
     static String summary(RunResult result, Score score) {
         boolean lone = result.robots().size() == 1;
         StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "%s in %s: %.1f s simulated in %.2f s (%.0fx real time)",
-                simpleName(result.controller()), result.arena(), result.simulatedSeconds(), result.wallSeconds(),
+                Shown.line(simpleName(result.controller())), Shown.line(result.arena()), result.simulatedSeconds(),
+                result.wallSeconds(),
                 result.realTimeFactor()));
         if (lone) {
             s.append("; ");
@@ -294,7 +296,8 @@ final class RunCommand implements Callable<Integer> {
         if (!lone) {
             for (int i = 0; i < result.robots().size(); i++) {
                 RunResult.RobotResult r = result.robots().get(i);
-                s.append(System.lineSeparator()).append("  robot ").append(i).append(" (").append(r.name()).append("): ");
+                s.append(System.lineSeparator()).append("  robot ").append(i).append(" (").append(Shown.line(r.name()))
+                        .append("): ");
                 robot(s, r);
             }
         }

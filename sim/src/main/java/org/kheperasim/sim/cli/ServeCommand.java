@@ -18,6 +18,7 @@ import org.kheperasim.sim.serve.ProtocolServer;
 import org.kheperasim.sim.serve.PtyBridge;
 import org.kheperasim.sim.serve.ServedArena;
 import org.kheperasim.sim.serve.ServedRobot;
+import org.kheperasim.sim.text.Shown;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -116,7 +117,7 @@ final class ServeCommand implements Callable<Integer> {
                 }
                 server.idleTimeout((long) (idleTimeout * 1000));
                 String who = robots.size() == 1 ? "" : "robot " + i + ": ";
-                server.addListener(e -> out.println(who + e.text()));
+                server.addListener(e -> out.println(who + Shown.line(e.text())));
                 servers.add(server);
             }
         } catch (Exception e) {
@@ -153,7 +154,7 @@ final class ServeCommand implements Callable<Integer> {
             if (pty != null) {
                 for (int i = 0; i < servers.size(); i++) {
                     java.nio.file.Path path = i == 0 ? pty : pty.resolveSibling(pty.getFileName() + "-" + i);
-                    PtyBridge bridge = PtyBridge.start(path, servers.get(i).port(), out::println);
+                    PtyBridge bridge = PtyBridge.start(path, servers.get(i).port(), note -> out.println(Shown.line(note)));
                     bridges.add(bridge);
                     out.println((servers.size() == 1 ? "" : "robot " + i + " ") + "pty: " + path + " (" + bridge.device()
                             + "; open it as a serial port)");

@@ -19,6 +19,7 @@ import org.kheperasim.sim.run.RunRecording;
 import org.kheperasim.sim.run.SettingsFile;
 import org.kheperasim.sim.run.Simulation;
 import org.kheperasim.sim.trace.TraceDiff;
+import org.kheperasim.sim.trace.TraceFormatException;
 import org.kheperasim.sim.trace.TraceReader;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -34,7 +35,7 @@ import picocli.CommandLine.Parameters;
             "RECORDING is a trace file (run --trace) or a run recording folder (with its run.trace)."},
         footer = "Exit status: 0 identical; 1 it differs; 2 bad input (an option, a file, a name the tool cannot use).")
 final class VerifyCommand implements Callable<Integer> {
-    private static final long MAX_TRACE_BYTES = 256L << 20;
+    private static final long MAX_TRACE_BYTES = ReplayFiles.MAX_FILE_BYTES;
 
     @Parameters(index = "0", paramLabel = "RECORDING|TRACE", description = "a trace file, or a run recording folder")
     Path recording;
@@ -52,13 +53,13 @@ final class VerifyCommand implements Callable<Integer> {
     public Integer call() {
         boolean folder = Files.isDirectory(recording);
         Path traceFile = folder ? recording.resolve("run.trace") : recording;
-        if (!Files.isRegularFile(traceFile)) {
+        if (!Files.exists(traceFile)) {
             throw new IllegalArgumentException(folder ? "the run recording " + recording + " has no run.trace to compare"
                     + " with; save the recording from the window (it keeps the run's trace), or verify a trace file"
                     : "no trace file " + recording + "; give a trace written by 'run --trace FILE' or a run recording folder");
         }
         String recorded = TextFiles.readUtf8(traceFile, MAX_TRACE_BYTES, "trace",
-                (line, what) -> new org.kheperasim.sim.trace.TraceFormatException(traceFile.toString(), line, what));
+                (line, what) -> new TraceFormatException(traceFile.toString(), line, what));
         TraceReader.Summary summary = TraceReader.parse(recorded, traceFile.toString());
         Map<String, String> h = summary.header();
         Arena arena = arena(folder, h.get("arena"));
@@ -66,8 +67,8 @@ final class VerifyCommand implements Callable<Integer> {
         Settings settings = folder && Files.isRegularFile(recording.resolve("run.settings"))
                 ? SettingsFile.load(recording.resolve("run.settings")) : settings(h.get("settings"));
         Simulation.Builder run = Simulation.builder().arena(arena).controller(h.get("controller"))
-                .seed(Long.parseLong(h.get("seed"))).settings(settings)
-                .sampleMillis(Long.parseLong(h.get("sample-ms"))).seconds(summary.lastSeconds()).classpath(classpath(folder));
+                .seed(whole(h, "seed", Long.MIN_VALUE)).settings(settings)
+                .sampleMillis(whole(h, "sample-ms", 1)).seconds(summary.lastSeconds()).classpath(classpath(folder));
         for (int i = 0; h.containsKey("robot-" + i); i++) {
             String[] own = h.get("robot-" + i).split(" settings ", 2);
             run.robot(i, own[0], settings(own.length > 1 ? own[1] : "defaults"));
@@ -128,6 +129,21 @@ final class VerifyCommand implements Callable<Integer> {
                     + ArenaFormat.sha256(a) + ", the trace names " + nameAndSha[1] + "); give the recorded one with --arena FILE");
         }
         return a;
+    }
+
+    /** @return the header's field as a whole number of at least {@code min}, or the trace's error naming it */
+    private long whole(Map<String, String> header, String key, long min) {
+        try {
+            long v = Long.parseLong(header.get(key).strip());
+            if (v >= min) {
+                return v;
+            }
+        } catch (NumberFormatException e) {
+            // said below
+        }
+        throw new TraceFormatException(recording.toString(), 0, "the header's " + key + " is '"
+                + header.get(key) + "', not a whole number" + (min > 0 ? " of at least " + min : "") + "; is it a trace"
+                + " written by run --trace?");
     }
 
     /** @return the settings a header describes: "defaults", or key=value pairs */

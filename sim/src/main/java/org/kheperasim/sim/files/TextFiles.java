@@ -11,9 +11,13 @@ import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.attribute.BasicFileAttributes;
 import java.util.Locale;
 
-/** Reads a text file a person wrote: UTF-8, strictly, and no larger than its kind of file can be. */
+/**
+ * Reads a text file a person wrote: UTF-8, strictly, no larger than its kind of file can be (checked
+ * before it is read), and only a regular file (a pipe or a device is refused before it is opened).
+ */
 public final class TextFiles {
 
     /** Makes a reader's own error for a line (0 = the whole file) and a message. */
@@ -36,21 +40,87 @@ public final class TextFiles {
      * @param kind     what the file is, for messages, e.g. {@code "arena file"}
      * @param errors   makes the reader's own error
      * @return the text
-     * @throws InputFileException   (from {@code errors}) when the file is too large or not UTF-8
+     * @throws InputFileException   (from {@code errors}) when the file is too large, not UTF-8 or not a
+     *     regular file ({@link #regularSize}), or does not fit in memory
      * @throws UncheckedIOException naming the file when it cannot be read at all
      */
     public static String readUtf8(Path file, long maxBytes, String kind, ErrorFactory errors) {
+        long size = checkFile(file, maxBytes, kind, errors);
         byte[] bytes;
         try (InputStream in = Files.newInputStream(file)) {
             bytes = in.readNBytes((int) Math.min(Integer.MAX_VALUE - 8, maxBytes + 1));
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read " + kind + " " + file + ": " + e, e);
+        } catch (OutOfMemoryError e) {
+            throw errors.error(0, noRoom(size, kind));
         }
-        if (bytes.length > maxBytes) {
-            throw errors.error(0, "the file is larger than " + size(maxBytes) + ", the limit for " + kind
-                    + "s; is it the right file?");
+        if (bytes.length > maxBytes) {   // it grew since
+            throw errors.error(0, tooLarge(bytes.length, maxBytes, kind));
         }
-        return decode(bytes, errors);
+        try {
+            return decode(bytes, errors);
+        } catch (OutOfMemoryError e) {
+            throw errors.error(0, noRoom(size, kind));
+        }
+    }
+
+    /**
+     * What {@link #readUtf8} checks before it opens a file: that it is a regular file ({@link #regularSize})
+     * no larger than the limit.
+     *
+     * @param file     the file
+     * @param maxBytes the largest file of this kind, bytes
+     * @param kind     what the file is, for messages
+     * @param errors   makes the reader's own error
+     * @return its size, bytes
+     * @throws InputFileException   (from {@code errors}) when it is not a regular file or too large
+     * @throws UncheckedIOException naming the file when it does not exist or cannot be looked at
+     */
+    public static long checkFile(Path file, long maxBytes, String kind, ErrorFactory errors) {
+        long size = regularSize(file, kind, errors);
+        if (size > maxBytes) {
+            throw errors.error(0, tooLarge(size, maxBytes, kind));
+        }
+        return size;
+    }
+
+    /**
+     * Checks, before opening it, that a file is one that can be read whole: a regular file (a folder,
+     * a pipe, a device such as {@code /dev/zero} or a terminal is refused, so that reading neither
+     * hangs waiting for a writer nor runs on without end).
+     *
+     * @param file   the file (a symbolic link is followed)
+     * @param kind   what the file is, for messages
+     * @param errors makes the reader's own error
+     * @return its size, bytes
+     * @throws InputFileException   (from {@code errors}) when it is not a regular file
+     * @throws UncheckedIOException naming the file when it does not exist or cannot be looked at
+     */
+    public static long regularSize(Path file, String kind, ErrorFactory errors) {
+        BasicFileAttributes a;
+        try {
+            a = Files.readAttributes(file, BasicFileAttributes.class);
+        } catch (IOException e) {
+            throw new UncheckedIOException("cannot read " + kind + " " + file + ": " + e, e);
+        }
+        if (a.isDirectory()) {
+            throw errors.error(0, "this is a folder; give the " + kind + " itself");
+        }
+        if (!a.isRegularFile()) {
+            throw errors.error(0, "this is not a regular file (a pipe, a device such as /dev/zero, a socket) and is not"
+                    + " read; save the " + kind + " as a file and give that");
+        }
+        return a.size();
+    }
+
+    private static String tooLarge(long size, long maxBytes, String kind) {
+        return "the file is larger than " + size(maxBytes) + ", the limit for " + kind + "s (it has " + size(size)
+                + "); is it the right file?";
+    }
+
+    private static String noRoom(long size, String kind) {
+        return "the file (" + size(size) + ") does not fit in this Java's memory as a " + kind + "; give Java more with"
+                + " java -Xmx4g -jar khepera-sim.jar ..., or a smaller file";
     }
 
     /**
@@ -88,6 +158,6 @@ public final class TextFiles {
     }
 
     private static String size(long bytes) {
-        return bytes >= 1 << 20 ? (bytes >> 20) + " MiB" : (bytes >> 10) + " KiB";
+        return bytes >= 1 << 20 ? (bytes >> 20) + " MiB" : bytes >= 1 << 10 ? (bytes >> 10) + " KiB" : bytes + " bytes";
     }
 }

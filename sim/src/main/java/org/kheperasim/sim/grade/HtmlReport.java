@@ -2,6 +2,7 @@ package org.kheperasim.sim.grade;
 
 import java.util.List;
 import java.util.Map;
+import org.kheperasim.sim.text.Shown;
 
 /**
  * The report as one HTML page: per arena the ranking, with each seed's score linked to its run's page,
@@ -73,7 +74,8 @@ final class HtmlReport {
         return "<span class=\"" + (r.status() == RunStatus.OK ? "ok" : "bad") + "\">" + esc(r.status().label()) + "</span>";
     }
 
+    /** @return {@code s} for HTML text or an attribute, its control characters escaped as {@link Shown#line} escapes them */
     static String esc(String s) {
-        return s.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
+        return Shown.line(s).replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
     }
 }

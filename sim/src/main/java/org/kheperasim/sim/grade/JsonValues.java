@@ -5,6 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.kheperasim.sim.text.Shown;
 
 /**
  * Just enough JSON for grading: reading a run's {@code --json} line and the grade report back
@@ -48,7 +49,7 @@ public final class JsonValues {
                 case '\r' -> out.append("\\r");
                 case '\t' -> out.append("\\t");
                 default -> {
-                    if (c < 0x20) {
+                    if (Shown.isControl(c)) { // C0, and what a terminal or renderer acts on
                         out.append(String.format(Locale.ROOT, "\\u%04x", (int) c));
                     } else {
                         out.append(c);

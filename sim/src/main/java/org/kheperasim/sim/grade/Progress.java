@@ -2,6 +2,7 @@ package org.kheperasim.sim.grade;
 
 import java.io.PrintStream;
 import java.util.Locale;
+import org.kheperasim.sim.text.Shown;
 
 /**
  * The progress of a grading on standard error: on a terminal a bar redrawn in place, elsewhere (a
@@ -51,7 +52,7 @@ final class Progress {
             }
         } else {
             out.println(String.format(Locale.ROOT, "[%d/%d] %s %s seed %d: %s %s%%; %s elapsed, about %s left", done, total,
-                    job.student(), ReportFiles.arenaLabel(job.arena()), job.seed(), r.status().label(),
+                    Shown.line(job.student()), Shown.line(ReportFiles.arenaLabel(job.arena())), job.seed(), r.status().label(),
                     ReportFiles.num(r.percent()), clock(elapsed), clock(left)));
         }
         out.flush();

@@ -10,6 +10,9 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import org.kheperasim.sim.files.AtomicFiles;
+import org.kheperasim.sim.files.InputFileException;
+import org.kheperasim.sim.files.TextFiles;
+import org.kheperasim.sim.text.Shown;
 
 /**
  * The grade report's files, written and read back: {@code results.csv} and {@code results.json}
@@ -38,6 +41,9 @@ public final class ReportFiles {
             runs = List.copyOf(runs);
         }
     }
+
+    /** The largest {@code results.json} read back, bytes (a run is about 300 bytes of it). */
+    private static final long MAX_JSON_BYTES = 256L << 20;
 
     private ReportFiles() {
     }
@@ -149,12 +155,8 @@ public final class ReportFiles {
      */
     @SuppressWarnings("unchecked")
     public static Report read(Path file) {
-        Object parsed;
-        try {
-            parsed = JsonValues.parse(Files.readString(file, StandardCharsets.UTF_8));
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot read " + file + ": " + e.getMessage(), e);
-        }
+        Object parsed = JsonValues.parse(TextFiles.readUtf8(file, MAX_JSON_BYTES, "grade report",
+                (line, what) -> new InputFileException(file.toString(), line, what)));
         if (!(parsed instanceof Map<?, ?> m) || !FORMAT.equals(m.get("format"))) {
             throw new IllegalArgumentException(file + " is not a grade report (no \"format\": \"" + FORMAT + "\")");
         }
@@ -186,7 +188,7 @@ public final class ReportFiles {
         }
         List<RunRecord> out = new ArrayList<>();
         for (String line : lines.subList(1, lines.size())) {
-            List<String> f = csvSplit(line);
+            List<String> f = csvSplit(line).stream().map(Shown::fromCsvCell).toList();
             out.add(new RunRecord(f.get(0), f.get(1), Long.parseLong(f.get(2)), RunStatus.ofWord(f.get(3)),
                     Double.parseDouble(f.get(4)), Double.parseDouble(f.get(5)), Double.parseDouble(f.get(6)),
                     Double.parseDouble(f.get(7)), f.get(8), f.get(10), f.get(9), f.size() > 11 ? f.get(11) : "",
@@ -219,8 +221,9 @@ public final class ReportFiles {
         return ((Number) o).doubleValue();
     }
 
+    /** A text cell: one line, control characters escaped, never a formula ({@link Shown#csvCell}); numbers are written as numbers. */
     private static String csvField(String s) {
-        return s.contains(",") || s.contains("\"") || s.contains("\n") ? "\"" + s.replace("\"", "\"\"") + "\"" : s;
+        return Shown.csvCell(s);
     }
 
     private static List<String> csvSplit(String line) {

@@ -5,11 +5,13 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.stream.Collectors;
+import org.kheperasim.sim.text.Shown;
 
 /**
  * The report as a terminal table: per arena, the students ranked, with each seed's score (and its
  * status when not ok), then every run not ok with its detail (the student's line where it threw), and every
- * run ok whose controller printed past the run's limit, with how much it printed and kept.
+ * run ok whose controller printed past the run's limit, with how much it printed and kept. Names and
+ * details are shown as {@link Shown#line} shows them: one line each, their control characters escaped.
  */
 final class TextTable {
     private TextTable() {
@@ -21,16 +23,17 @@ final class TextTable {
         runs.forEach(r -> counts.merge(r.status(), 1, Integer::sum));
         for (Map.Entry<String, List<Ranking.Entry>> e : Ranking.of(runs).entrySet()) {
             List<Ranking.Entry> entries = e.getValue();
-            int nameWidth = StrictMath.max(7, entries.stream().mapToInt(x -> x.student().length()).max().orElse(7));
+            int nameWidth = StrictMath.max(7, entries.stream().mapToInt(x -> Shown.line(x.student()).length()).max().orElse(7));
             double max = entries.isEmpty() || entries.get(0).runs().isEmpty() ? 0
                     : entries.stream().flatMap(x -> x.runs().stream()).mapToDouble(RunRecord::max).max().orElse(0);
-            sb.append("Arena ").append(e.getKey()).append(max > 0 ? " (" + ReportFiles.num(max) + " points)" : " (no tasks)")
+            sb.append("Arena ").append(Shown.line(e.getKey()))
+                    .append(max > 0 ? " (" + ReportFiles.num(max) + " points)" : " (no tasks)")
                     .append('\n');
             sb.append(String.format(Locale.ROOT, "%4s  %-" + nameWidth + "s  %7s  %7s  %s%n", "rank", "student", "score%",
                     "points", "score% by seed"));
             for (Ranking.Entry x : entries) {
                 String seeds = x.runs().stream().map(TextTable::seed).collect(Collectors.joining(" | "));
-                sb.append(String.format(Locale.ROOT, "%4s  %-" + nameWidth + "s  %7s  %7s  %s%n", x.ranked() ? x.rank() : "-", x.student(),
+                sb.append(String.format(Locale.ROOT, "%4s  %-" + nameWidth + "s  %7s  %7s  %s%n", x.ranked() ? x.rank() : "-", Shown.line(x.student()),
                         ReportFiles.num(x.meanPercent()), ReportFiles.num(x.meanPoints()), seeds));
             }
             List<RunRecord> failed = entries.stream().flatMap(x -> x.runs().stream()).filter(r -> r.status() != RunStatus.OK)
@@ -38,8 +41,8 @@ final class TextTable {
             if (!failed.isEmpty()) {
                 sb.append("Runs not ok:\n");
                 for (RunRecord r : failed) {
-                    sb.append("  ").append(r.student()).append(", seed ").append(r.seed()).append(": ").append(r.status().label())
-                            .append(r.detail().isEmpty() ? "" : ": " + r.detail()).append('\n');
+                    sb.append("  ").append(Shown.line(r.student())).append(", seed ").append(r.seed()).append(": ").append(r.status().label())
+                            .append(r.detail().isEmpty() ? "" : ": " + Shown.line(r.detail())).append('\n');
                 }
             }
             List<RunRecord> cut = entries.stream().flatMap(x -> x.runs().stream())
@@ -47,7 +50,7 @@ final class TextTable {
             if (!cut.isEmpty()) {
                 sb.append("Output cut at the run's limit:\n");
                 for (RunRecord r : cut) {
-                    sb.append("  ").append(r.student()).append(", seed ").append(r.seed()).append(": ")
+                    sb.append("  ").append(Shown.line(r.student())).append(", seed ").append(r.seed()).append(": ")
                             .append(ChildResults.outputNote(r.detail())).append('\n');
                 }
             }
@@ -59,8 +62,8 @@ final class TextTable {
                 .append("; ").append(madeIn(runs)).append("; ").append(reruns(runs)).append('\n');
         for (RunRecord r : runs) {
             if (r.madeAgain()) {
-                sb.append("  made again: ").append(r.student()).append(", ").append(r.arena()).append(", seed ").append(r.seed())
-                        .append(": the first time ").append(r.rerun()).append('\n');
+                sb.append("  made again: ").append(Shown.line(r.student())).append(", ").append(Shown.line(r.arena())).append(", seed ").append(r.seed())
+                        .append(": the first time ").append(Shown.line(r.rerun())).append('\n');
             }
         }
         return sb.toString();

@@ -8,6 +8,7 @@ import javax.swing.BorderFactory;
 import javax.swing.JComponent;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
+import org.kheperasim.sim.text.Shown;
 
 /**
  * The status bar: a message, the mouse's position in the arena, and the clock: the shown source's
@@ -74,9 +75,9 @@ final class StatusBar {
 
     /** @param text what went wrong, in red until the next message (a controller that failed, a compile error) */
     void alert(String text) {
-        lasting = text;
+        lasting = Shown.visible(text);   // it names a controller's failure: its message is the controller's text
         lastingRed = true;
-        set(text, true);
+        set(lasting, true);
         messageUntil = 0;
     }
 

@@ -19,8 +19,11 @@ import org.kheperasim.sim.trace.TraceFormatException;
  * beside it, or the bundled arena it names), or a robot-link recording of a real robot (drawn in an empty 4 × 4 ft arena).
  */
 public final class ReplayFiles {
-    /** Largest file read, bytes (a one-hour trace at 50 ms is about 11 MB a robot). */
-    public static final long MAX_FILE_BYTES = 1L << 30;
+    /**
+     * Largest file read, bytes: {@code verify}'s limit (a one-hour trace at 50 ms is about 11 MB a robot, so
+     * this is some 20 robot-hours); the whole file is held in memory, twice while it is decoded.
+     */
+    public static final long MAX_FILE_BYTES = 256L << 20;
 
     private ReplayFiles() {
     }

@@ -64,6 +64,9 @@ final class ControllerHints {
     }
 
     private static boolean looksLikeZip(Path p) {
+        if (!Files.isRegularFile(p)) {
+            return false;   // a pipe or a device: not opened (a pipe would wait for a writer for ever)
+        }
         try (InputStream in = Files.newInputStream(p)) {
             byte[] head = in.readNBytes(4);
             return head.length == 4 && head[0] == 'P' && head[1] == 'K';

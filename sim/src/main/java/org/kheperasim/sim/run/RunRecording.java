@@ -12,6 +12,8 @@ import java.util.stream.Stream;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.files.AtomicFiles;
+import org.kheperasim.sim.files.InputFileException;
+import org.kheperasim.sim.files.TextFiles;
 
 /**
  * A run recording: the folder that replays a run exactly, with the start arena, the stamped edits,
@@ -25,6 +27,8 @@ public final class RunRecording {
     /** The folder in a recording that holds the controller's classes. */
     public static final String CLASSES = "classes";
     private static final String REPLAY = "replay.txt";
+    /** The largest replay.txt read, bytes: it holds one command line and a few comments. */
+    private static final long MAX_REPLAY_TXT_BYTES = 1L << 20;
 
     private RunRecording() {
     }
@@ -131,13 +135,9 @@ public final class RunRecording {
         if (!Files.isRegularFile(replay)) {
             return List.of();
         }
-        List<String> words;
-        try {
-            words = words(Files.readAllLines(replay).stream().filter(l -> !l.startsWith("#") && !l.isBlank())
-                    .findFirst().orElse(""));
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot read " + replay + ": " + e.getMessage(), e);
-        }
+        List<String> words = words(TextFiles.readUtf8(replay, MAX_REPLAY_TXT_BYTES, "replay.txt",
+                (line, what) -> new InputFileException(replay.toString(), line, what)).lines()
+                .filter(l -> !l.startsWith("#") && !l.isBlank()).findFirst().orElse(""));
         int at = words.indexOf("--classpath");
         if (at < 0 || at + 1 >= words.size()) {
             return List.of();

@@ -25,6 +25,8 @@ public final class TraceReader {
 
     private static final int ROBOT_COLUMNS = 30;
     private static final int CAP_COLUMNS = 6;
+    /** The latest sample time, s: the longest run the command line makes ({@code run --seconds}). */
+    private static final double MAX_SECONDS = 1e8;
     private static final Pattern TIME = Pattern.compile("\\d{1,12}\\.\\d{3}");
     private static final Pattern FIXED = Pattern.compile("-?\\d{1,12}\\.\\d{3}");
     private static final Pattern INT = Pattern.compile("-?\\d{1,10}");
@@ -173,6 +175,10 @@ public final class TraceReader {
     private static double time(String source, int line, String token, double previous) {
         check(source, line, token, TIME, "t_s");
         double t = Double.parseDouble(token);
+        if (t > MAX_SECONDS) {
+            throw new TraceFormatException(source, line, "time " + token + " s is later than any run ends (at most "
+                    + (long) MAX_SECONDS + " s); is it the right file?");
+        }
         if (t < previous) {
             throw new TraceFormatException(source, line, "time " + token + " s comes before the previous line's; a trace's"
                     + " lines are in time order");

@@ -1,6 +1,7 @@
 package org.kheperasim.sim.web;
 
 import java.util.Locale;
+import org.kheperasim.sim.text.Shown;
 
 /**
  * Writes the page's description of a run as a JavaScript object literal in JSON form, safe inside
@@ -129,7 +130,7 @@ final class PageJson {
                 case '\r' -> out.append("\\r");
                 case '\t' -> out.append("\\t");
                 default -> {
-                    if (c < 0x20 || c == '<' || c == '>' || c == '&' || c == '\u2028' || c == '\u2029') {
+                    if (Shown.isControl(c) || c == '<' || c == '>' || c == '&') {   // isControl: also U+2028/9, bidi, C1
                         out.append(String.format(Locale.ROOT, "\\u%04x", (int) c));
                     } else {
                         out.append(c);

@@ -11,6 +11,8 @@ import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.ArenaFormatException;
 import org.kheperasim.sim.arena.wsu.StreamModel.Top;
 import org.kheperasim.sim.arena.wsu.WsuWorldObjects.WsuObject;
+import org.kheperasim.sim.files.InputFileException;
+import org.kheperasim.sim.files.TextFiles;
 
 /**
  * Reads a world (map) file of the original WSU Khepera Simulator into an {@link Arena}. Such a file
@@ -74,7 +76,8 @@ public final class WsuWorld {
     public static Imported importWorld(Path file, Consumer<String> warnings) {
         byte[] bytes;
         try {
-            long size = Files.size(file);
+            long size = TextFiles.regularSize(file, "WSU world file",
+                    (line, what) -> new InputFileException(file.toString(), 0, what));
             if (size > MAX_BYTES) {
                 throw new WsuWorldException(file.toString(), -1, "the file has " + size + " bytes, more than any WSU"
                         + " world (at most " + MAX_BYTES + " are read): it is not a world file");
