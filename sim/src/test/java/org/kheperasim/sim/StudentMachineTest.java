@@ -112,6 +112,29 @@ class StudentMachineTest {
         assertTrue(verify.out().startsWith("identical"), verify.out());
     }
 
+    /**
+     * {@code verify} and {@code bench} split {@code --classpath} at the system's path separator, as {@code run} and
+     * javac do: they split at ':' and ';' both, which cut a Windows path ({@code C:\\Users\\...}) at its drive
+     * letter. The same mistake seen from here: a folder whose name holds a ';' (the other system's separator).
+     */
+    @Test
+    void verifySplitsItsClasspathAtThisSystemsSeparatorOnly() throws Exception {
+        String other = File.pathSeparatorChar == ':' ? ";" : ":";
+        org.junit.jupiter.api.Assumptions.assumeTrue(other.equals(";"), "a folder name may hold ';' on Unix only");
+        Path folder = Files.createDirectories(home.resolve("dossier" + other + " é"));
+        Path source = folder.resolve("MyFirst.java");
+        Files.writeString(source, ReadmeSnippets.firstController());
+        Path classes = folder.resolve("classes");
+        assertTrue(ControllerCompiler.compile(source, classes).success());
+        Path trace = folder.resolve("run.trace");
+        Ran run = main("run", "--arena", "lab", "--classpath", classes.toString(), "--controller", "MyFirst", "--seconds", "5",
+                "--seed", "1", "--trace", trace.toString());
+        assertEquals(0, run.code(), run.out() + run.err());
+        Ran verify = main("verify", "--classpath", classes + File.pathSeparator + home, trace.toString());
+        assertEquals(0, verify.code(), verify.out() + verify.err());
+        assertTrue(verify.out().startsWith("identical"), verify.out());
+    }
+
     @Test
     void aCrlfControllersErrorsAreOnTheirOwnLines() throws Exception {
         Path folder = Files.createDirectories(home.resolve("Mes documents é"));
