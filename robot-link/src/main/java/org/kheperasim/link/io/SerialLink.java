@@ -13,6 +13,9 @@ import java.util.List;
  * path, so virtual ports (a socat pty pair), which jSerialComm does not enumerate, work too.
  */
 public final class SerialLink extends ByteLink {
+    /** A Windows port name: COM1, com10, or the long form {@code \\.\COM10} that Windows needs from COM10 on. */
+    private static final java.util.regex.Pattern WINDOWS_NAME =
+            java.util.regex.Pattern.compile("(?i)(\\\\\\\\\\.\\\\)?COM[0-9]+");
     /** Read timeout of one native read; a longer wait loops, a byte arriving ends it at once. */
     private static final int READ_SLICE_MILLIS = 20;
 
@@ -48,7 +51,13 @@ public final class SerialLink extends ByteLink {
      */
     public static SerialLink open(SerialSettings settings) throws IOException {
         String path = settings.path();
-        boolean windowsName = path.toUpperCase(java.util.Locale.ROOT).startsWith("COM");
+        boolean windows = System.getProperty("os.name", "").toLowerCase(java.util.Locale.ROOT).startsWith("windows");
+        boolean windowsName = WINDOWS_NAME.matcher(path).matches();
+        if (windowsName && !windows) {
+            throw new IOException("cannot open serial port " + path + ": COM names are Windows's, and this is "
+                    + System.getProperty("os.name") + ", where a serial port is a path such as /dev/ttyUSB0 (Linux) or"
+                    + " /dev/cu.usbserial-* (macOS); 'ports' lists the ports this machine has");
+        }
         if (!windowsName && !Files.exists(Path.of(path))) {
             throw new IOException("cannot open serial port " + path + ": it does not exist. Check that the cable or"
                     + " USB adapter is plugged in; 'ports' lists the ports this machine has");
@@ -66,12 +75,30 @@ public final class SerialLink extends ByteLink {
         port.setComPortTimeouts(SerialPort.TIMEOUT_READ_SEMI_BLOCKING, READ_SLICE_MILLIS, 0);
         // openPort()'s result is the truth; getLastErrorCode() is not reliable across platforms.
         if (!port.openPort()) {
-            throw new IOException("cannot open serial port " + path + " (OS error " + port.getLastErrorCode()
-                    + "): another program may hold it (close minicom, screen or another khepera-link), or you may"
-                    + " lack permission (on Linux: sudo usermod -aG dialout $USER, then log in again)");
+            throw new IOException(openFailure(path, port.getLastErrorCode(), windows));
         }
         SerialLink link = new SerialLink(port, settings);
         return link;
+    }
+
+    /**
+     * @param path the port as given
+     * @param errorCode the operating system's error number for the failed open
+     * @param windows whether this is Windows
+     * @return the one-line error for a port that would not open: what the error number means, and the fix
+     */
+    static String openFailure(String path, int errorCode, boolean windows) {
+        // 2 is "no such file" on Linux and macOS (ENOENT) and on Windows (ERROR_FILE_NOT_FOUND); 5 on Windows and
+        // 13 on Linux and macOS are "access denied".
+        if (errorCode == 2) {
+            return "cannot open serial port " + path + " (OS error 2): there is no such port. Check that the cable or USB"
+                    + " adapter is plugged in and the port's name (Device Manager, under Ports, on Windows); 'ports' lists"
+                    + " the ports this machine has";
+        }
+        String permission = windows ? "" : " (on Linux: sudo usermod -aG dialout $USER, then log in again)";
+        return "cannot open serial port " + path + " (OS error " + errorCode + "): another program may hold it (close"
+                + (windows ? " PuTTY, Tera Term" : " minicom, screen") + " or another khepera-link), or you may lack"
+                + " permission" + permission;
     }
 
     private static int stopBits(int bits) {

@@ -35,6 +35,7 @@ public final class FakeKhepera implements AutoCloseable {
     private final List<String> received = Collections.synchronizedList(new ArrayList<>());
     private final Thread thread;
     private volatile LinkTiming timing;
+    private volatile long replyDelayMillis;
 
     // Faults, each used once unless stated.
     private final AtomicInteger dropReplies = new AtomicInteger();
@@ -59,6 +60,7 @@ public final class FakeKhepera implements AutoCloseable {
     private volatile int barrier;
     private volatile int resistivity;
     private final AtomicInteger replies = new AtomicInteger();
+    private final AtomicInteger lateReplies = new AtomicInteger();
 
     /**
      * @param in command bytes from the host
@@ -121,6 +123,9 @@ public final class FakeKhepera implements AutoCloseable {
         if (timing != null) {
             LockSupport.parkNanos(timing.exchangeNanos(text.length() + 1, answer.length() + 2));
         }
+        if (replyDelayMillis > 0) {
+            LockSupport.parkNanos(replyDelayMillis * 1_000_000L);
+        }
         if (dropReplies.get() > 0 && dropReplies.getAndDecrement() > 0) {
             return;
         }
@@ -130,6 +135,10 @@ public final class FakeKhepera implements AutoCloseable {
             Thread t = new Thread(() -> {
                 LockSupport.parkNanos(late * 1_000_000L);
                 write(lateAnswer + KheperaProtocol.REPLY_END);
+                synchronized (lateReplies) {
+                    lateReplies.incrementAndGet();
+                    lateReplies.notifyAll();
+                }
             }, "fake-khepera-late-reply");
             t.setDaemon(true);
             t.start();
@@ -291,6 +300,11 @@ public final class FakeKhepera implements AutoCloseable {
 
     // ------------------------------------------------------------------ faults
 
+    /** @param millis answer every command this much later: a robot (or the fake) starved by a loaded machine */
+    public void setReplyDelay(long millis) {
+        replyDelayMillis = millis;
+    }
+
     /** @param n replies to swallow (the command is still obeyed) */
     public void dropReplies(int n) {
         dropReplies.set(n);
@@ -350,6 +364,26 @@ public final class FakeKhepera implements AutoCloseable {
     /** @return the arm position last commanded */
     public int arm() {
         return arm;
+    }
+
+    /**
+     * Wait until this many late replies have been written (a test that needs one on the line, whatever the load).
+     *
+     * @param n late replies written so far
+     * @param maxMillis the longest wait
+     * @throws IllegalStateException when they were not written in time
+     */
+    public void awaitLateReplies(int n, long maxMillis) throws InterruptedException {
+        long end = System.nanoTime() + maxMillis * 1_000_000L;
+        synchronized (lateReplies) {
+            while (lateReplies.get() < n) {
+                long left = (end - System.nanoTime()) / 1_000_000L;
+                if (left <= 0) {
+                    throw new IllegalStateException(lateReplies.get() + " of " + n + " late replies written in " + maxMillis + " ms");
+                }
+                lateReplies.wait(left);
+            }
+        }
     }
 
     /** @return replies sent */

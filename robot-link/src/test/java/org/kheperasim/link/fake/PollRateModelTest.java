@@ -28,8 +28,14 @@ import org.kheperasim.link.timing.LinkTiming;
  * core busy. On a quiet machine the first window agrees within a few per cent; the figures are
  * printed. {@code khepera-link bench} is the measurement to quote. Tagged {@code timing}: CI runs it
  * again with both cores busy.
+ *
+ * <p>Tagged {@code realtime} too: the rate it checks is the wall clock's, which holds on an idle machine and
+ * beside two busy loops but not at load 30 on 2 cores (it failed 2 of 5 whole-suite runs there), so the
+ * default {@code mvn -B verify} leaves it out and {@code .ci/run}'s busy pass runs it
+ * ({@code kheperasim.excludedGroups} in the parent pom).
  */
 @Tag("timing")
+@Tag("realtime")
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class PollRateModelTest {
     private static final int[] PROXIMITY = {15, 22, 18, 9, 25, 14, 19, 21};

@@ -117,7 +117,8 @@ class WsuControllerPtyTest {
     private RobotRun.Result run(FakeRobotOnPty fake, Class<?> controller, RobotSettings settings, long millis,
             RobotScript script) throws Exception {
         SerialLink link = SerialLink.open(SerialSettings.khepera(fake.hostPath(), 38400));
-        try (Session s = new Session(link, LinkTiming.atBaud(38400), new Session.Options(150, 3, 100, 2000))) {
+        // No fault is injected: a reply may take 1 s (150 ms timed out answered commands on a machine at load 30).
+        try (Session s = new Session(link, LinkTiming.atBaud(38400), new Session.Options(1000, 3, 100, 2000))) {
             s.open();
             RobotRun run = new RobotRun(new RobotBackend(s, settings, out), controller, out);
             return RobotScript.play(script, fake.robot(), run, millis);

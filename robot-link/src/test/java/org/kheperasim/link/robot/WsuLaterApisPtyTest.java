@@ -153,7 +153,8 @@ class WsuLaterApisPtyTest {
 
     private RobotRun.Result run(FakeRobotOnPty fake, Class<?> controller, RobotSettings settings) throws Exception {
         SerialLink link = SerialLink.open(SerialSettings.khepera(fake.hostPath(), 38400));
-        try (Session s = new Session(link, LinkTiming.atBaud(38400), new Session.Options(150, 3, 100, 2000))) {
+        // No fault is injected: a reply may take 1 s (150 ms timed out answered commands on a machine at load 30).
+        try (Session s = new Session(link, LinkTiming.atBaud(38400), new Session.Options(1000, 3, 100, 2000))) {
             s.open();
             return new RobotRun(new RobotBackend(s, settings, out), controller, out).run(20_000);
         }

@@ -36,7 +36,7 @@ final class BenchCommand implements Callable<Integer> {
             description = "a bundled controller (${COMPLETION-CANDIDATES}) or a class name (default: ${DEFAULT-VALUE})")
     String controller;
 
-    @Option(names = "--classpath", paramLabel = "PATHS", split = "[:;]",
+    @Option(names = "--classpath", paramLabel = "PATHS", split = "${sys:path.separator}",
             description = "folders and jars with compiled controllers (for your own --controller)")
     List<java.nio.file.Path> classpath = new ArrayList<>();
 

@@ -44,7 +44,7 @@ final class VerifyCommand implements Callable<Integer> {
             description = "the arena the trace was recorded in (default: start.arena in a recording or beside the trace, the arena file of the same name beside it, or the bundled arena it names)")
     Path arenaFile;
 
-    @Option(names = "--classpath", paramLabel = "PATHS", split = "[:;]",
+    @Option(names = "--classpath", paramLabel = "PATHS", split = "${sys:path.separator}",
             description = "where the recorded controller's classes are (default: a recording's own, as its replay.txt"
                     + " names them; not needed for a bundled controller)")
     List<Path> classpath = new ArrayList<>();

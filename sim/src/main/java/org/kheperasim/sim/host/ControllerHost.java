@@ -329,7 +329,7 @@ public final class ControllerHost implements HostedController {
     /** The watchdog saw no progress for the hang timeout while this controller held the turn. */
     void hung(Participant who, double realSeconds) {
         String thread = who.index == 0 ? "" : " (in thread " + who + " that it started)";
-        boolean returnsAtOnce = who.index == 0 && doWorkReturnsAtOnce();
+        boolean returnsAtOnce = who.index == 0 && doWorkReturnsAtOnce(realSeconds);
         say(ConsoleLine.Kind.ERROR, ControllerFailures.hung(name + " (" + type.getName() + ")", clock.now(), thread,
                 realSeconds, returnsAtOnce));
         if (who.index == 0) {
@@ -353,15 +353,19 @@ public final class ControllerHost implements HostedController {
 
     /**
      * Is the hung controller a {@link org.kheperasim.api.Controller} whose {@code doWork()} keeps
-     * returning without a robot call (an empty one, say), rather than looping inside? Looked at for
-     * a moment of real time, on the way to reporting it hung.
+     * returning without a robot call (an empty one, say), rather than looping inside? Looked at on the
+     * way to reporting it hung, until its {@code doWork()} returns once more, for half the time it has
+     * been stalled (0.05 to 1 s): a loaded machine (load 30 on 2 cores) may not run its thread at all
+     * for tens of milliseconds, and a fixed 50 ms then told an empty {@code doWork()} about a loop.
+     *
+     * @param stalledSeconds real time it has gone without progress
      */
-    private boolean doWorkReturnsAtOnce() {
+    private boolean doWorkReturnsAtOnce(double stalledSeconds) {
         long before = Controllers.doWorkRounds(controller);
         if (before < 0) {
             return false;
         }
-        long deadline = System.nanoTime() + 50_000_000L;
+        long deadline = System.nanoTime() + (long) (StrictMath.min(1.0, StrictMath.max(0.05, stalledSeconds / 2)) * 1e9);
         while (System.nanoTime() < deadline) {
             java.util.concurrent.locks.LockSupport.parkNanos(2_000_000L);
             if (Controllers.doWorkRounds(controller) != before) {

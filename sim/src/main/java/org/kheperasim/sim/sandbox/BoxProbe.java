@@ -15,6 +15,13 @@ import java.util.concurrent.TimeUnit;
  * get it.
  */
 public final class BoxProbe {
+    /**
+     * The folders the sandbox's programs (bwrap, setpriv, prlimit) are looked for in, instead of the PATH and
+     * /usr/bin, /bin, /usr/sbin, /sbin: for bubblewrap installed elsewhere, and for trying a machine without
+     * it ({@code -Dkheperasim.sandbox.path=/nonexistent}).
+     */
+    public static final String PATH_PROPERTY = "kheperasim.sandbox.path";
+
     private static volatile Optional<String> cached;
 
     private BoxProbe() {

@@ -114,9 +114,10 @@ record RuntimeFiles(Path javaHome, List<Path> files, Path setpriv, Path prlimit)
         return new ArrayList<>(out);
     }
 
-    /** @return the program on the PATH (or in /usr/bin, /bin) */
+    /** @return the program on the PATH (or in /usr/bin, /bin), or in {@link BoxProbe#PATH_PROPERTY}'s folders when it is set */
     static Path onPath(String program) {
-        String path = System.getenv().getOrDefault("PATH", "") + ":/usr/bin:/bin:/usr/sbin:/sbin";
+        String given = System.getProperty(BoxProbe.PATH_PROPERTY);
+        String path = given != null ? given : System.getenv().getOrDefault("PATH", "") + ":/usr/bin:/bin:/usr/sbin:/sbin";
         for (String dir : path.split(":")) {
             Path p = dir.isEmpty() ? null : Path.of(dir, program);
             if (p != null && Files.isExecutable(p)) {

@@ -32,8 +32,14 @@ import org.kheperasim.sim.engine.World;
  * up to three windows of about 40 cycles, stopping at the first that agrees within 10 %. Tagged
  * {@code timing}: {@code .ci/run} runs it again with both cores busy (held to 10 % both ways, it
  * took up to ten windows, 20 s, in a loaded build, and a saturated machine could fail it).
+ *
+ * <p>Tagged {@code realtime} too: the rate it checks is the wall clock's, which holds on an idle machine and
+ * beside two busy loops but not at load 30 on 2 cores (it failed 2 of 5 whole-suite runs there), so the
+ * default {@code mvn -B verify} leaves it out and {@code .ci/run}'s busy pass runs it
+ * ({@code kheperasim.excludedGroups} in the parent pom).
  */
 @Tag("timing")
+@Tag("realtime")
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class PollRateAgreementTest {
     private static final String ARENA = "khepera-arena 1\nname t\nsize 1219.2 1219.2\nrobot 600 600 90\n"

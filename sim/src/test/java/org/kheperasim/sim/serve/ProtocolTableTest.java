@@ -194,7 +194,13 @@ class ProtocolTableTest {
         }
     }
 
+    /**
+     * Tagged {@code realtime}: a reply's lateness on the wall clock (the best of 30 within 3 ms, the median within
+     * 50 ms) holds on an idle machine and beside two busy loops, not at load 30 on 2 cores; the default
+     * {@code mvn -B verify} leaves it out and {@code .ci/run}'s busy pass runs it.
+     */
     @Test
+    @Tag("realtime")
     void repliesArriveAtTheirWireTimeAtTheSetBaud() throws Exception {
         for (int baud : new int[] {9600, 38400}) {
             Settings settings = EXACT.with("link.baud", Integer.toString(baud));
