@@ -12,6 +12,7 @@ import org.kheperasim.sim.grade.GradePlan;
 import org.kheperasim.sim.grade.Grader;
 import org.kheperasim.sim.grade.ReportFiles;
 import org.kheperasim.sim.grade.ReportMerge;
+import org.kheperasim.sim.text.Shown;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
@@ -98,7 +99,7 @@ final class GradeCommand implements Callable<Integer> {
     /** A grading whose every run failed for one reason says so last, on standard error, and exits 1. */
     static int failedAlike(ReportFiles.Report report) {
         return CommonFailure.of(report.runs()).map(line -> {
-            System.err.println(ToolErrors.prefix("khepera-sim") + line);
+            System.err.println(ToolErrors.prefix("khepera-sim") + Shown.visible(line));
             System.err.flush();
             return ExitCodes.FAILED;
         }).orElse(ExitCodes.OK);

@@ -49,6 +49,21 @@ public final class AtomicFiles {
     }
 
     /**
+     * Renames a finished file, atomically where the file system can (a working file kept under another name).
+     *
+     * @param from the file
+     * @param to   its new name, in the same folder; replaced if it exists
+     * @throws IOException naming what failed
+     */
+    public static void rename(Path from, Path to) throws IOException {
+        try {
+            Files.move(from, to, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+        } catch (AtomicMoveNotSupportedException e) {
+            Files.move(from, to, StandardCopyOption.REPLACE_EXISTING);
+        }
+    }
+
+    /**
      * Saves text as UTF-8, atomically.
      *
      * @param file where, possibly through a symbolic link, in an existing folder

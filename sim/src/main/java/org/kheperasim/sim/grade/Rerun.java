@@ -3,7 +3,7 @@ package org.kheperasim.sim.grade;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
+import org.kheperasim.sim.files.AtomicFiles;
 
 /**
  * The grader's guard for a run whose own result differed from its replay although its JVM ended
@@ -35,7 +35,7 @@ final class Rerun {
             return first;
         }
         if (first.log() != null && Files.isRegularFile(first.log())) {
-            Files.move(first.log(), firstLog(first.log()), StandardCopyOption.REPLACE_EXISTING);
+            AtomicFiles.rename(first.log(), firstLog(first.log()));
         }
         return combine(first, again.make());
     }

@@ -39,7 +39,6 @@ public final class ControllerHost implements HostedController {
      * {@code killControl()} at its next API call or loop, holding the turn, just before it unwinds
      * (never the run's owner or another thread of the simulator's, see {@link #checkStop}).
      */
-    private volatile boolean killWanted;
 
     /**
      * Construct the controller (it does not start until the engine first runs it).
@@ -237,8 +236,7 @@ public final class ControllerHost implements HostedController {
      */
     void checkStop() {
         if (life.stopRequested()) {
-            if (killWanted && Thread.currentThread() == threads.main().runner) {
-                killWanted = false;
+            if (Thread.currentThread() == threads.main().runner && life.takeKill()) {
                 Controllers.requestStop(controller);
             }
             throw new ControllerStoppedError("controller " + name + " was stopped");
@@ -259,7 +257,7 @@ public final class ControllerHost implements HostedController {
             return;
         }
         if (!life.status().ended()) {
-            killWanted = true;
+            life.wantKill();
             life.on(ControllerLife.Event.STOP);
             clock.switchTo(threads.main());
             lockstep.awaitOwner(STOP_GRACE_MILLIS * 1_000_000L);
@@ -334,7 +332,7 @@ public final class ControllerHost implements HostedController {
                 realSeconds, returnsAtOnce));
         if (who.index == 0) {
             // Let go before it is interrupted: if that ends it, it must not pass the turn.
-            killWanted = true;
+            life.wantKill();
             boolean ends = life.on(ControllerLife.Event.HUNG);
             threads.main().interrupt();
             if (ends) {
@@ -380,7 +378,7 @@ public final class ControllerHost implements HostedController {
         // Its own thread calls its killControl() when it sees the stop, at its next loop or call; asked
         // again (every watch period while it makes no progress), it is not asked twice.
         if (life.state().phase() == ControllerLife.Phase.RUNNING) {
-            killWanted = true;
+            life.wantKill();
         }
         life.on(ControllerLife.Event.STOP);
     }

@@ -159,6 +159,8 @@ final class ControllerLife {
     private boolean signalled;
     /** Set once its own thread is over, so its end is never waited for or signalled again. */
     private volatile boolean ownThreadOver;
+    /** Its {@code killControl()} is still to be called, by its own thread, at its next look at the stop. */
+    private boolean killPending;
     private volatile Throwable failure;
     private volatile String lastError;
 
@@ -248,6 +250,21 @@ final class ControllerLife {
             signal.settled();
         }
         return true;
+    }
+
+    /**
+     * Ask for the controller's {@code killControl()}: asked to stop, or hung, while it ran. Its own
+     * thread calls it (never the simulator's: it is the controller's code), once.
+     */
+    synchronized void wantKill() {
+        killPending = true;
+    }
+
+    /** @return true once after {@link #wantKill}: the caller, the controller's own thread, calls {@code killControl()} */
+    synchronized boolean takeKill() {
+        boolean k = killPending;
+        killPending = false;
+        return k;
     }
 
     /** @return true once its own thread is over */

@@ -4,10 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -18,9 +14,9 @@ import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
-import org.kheperasim.sim.cli.Main;
 import org.kheperasim.sim.text.HostileText;
 import org.kheperasim.sim.text.Shown;
+import org.kheperasim.testfixtures.Cli;
 
 /**
  * Issue 35 item 6, end to end: students whose folder names are formulas, hold a line end or ESC, and
@@ -44,26 +40,14 @@ class HostileTextGradeTest {
             HostileText.forger(subs.resolve(s));
         }
         Path out = dir.resolve("report");
-        ByteArrayOutputStream o = new ByteArrayOutputStream();
-        ByteArrayOutputStream e = new ByteArrayOutputStream();
-        PrintStream oldOut = System.out;
-        PrintStream oldErr = System.err;
-        int code;
-        try {
-            System.setOut(new PrintStream(o, true, StandardCharsets.UTF_8));
-            System.setErr(new PrintStream(e, true, StandardCharsets.UTF_8));
-            var cl = Main.commandLine();
-            cl.setOut(new PrintWriter(System.out, true));
-            cl.setErr(new PrintWriter(System.err, true));
-            code = cl.execute("grade", "--submissions", subs.toString(), "--arenas", "lab", "--seeds", "1", "--seconds", "2",
-                    "--jobs", "2", "--out", out.toString(), "--no-sandbox", "--wall-limit", "90", "--heap-mb", "128");
-        } finally {
-            System.setOut(oldOut);
-            System.setErr(oldErr);
-        }
-        String printed = o.toString(StandardCharsets.UTF_8);
-        String progress = e.toString(StandardCharsets.UTF_8);
-        assertEquals(0, code, printed + progress);
+        Cli.Printed p = Cli.main("grade", "--submissions", subs.toString(), "--arenas", "lab", "--seeds", "1", "--seconds",
+                "2", "--jobs", "2", "--out", out.toString(), "--no-sandbox", "--wall-limit", "90", "--heap-mb", "128");
+        int code = p.code();
+        String printed = p.out();
+        String progress = p.err();
+        // Every student's run threw the same way: grade says so in one line, and exits 1 (item 4).
+        assertEquals(1, code, printed + progress);
+        assertTrue(progress.contains("every run of this grading failed the same way"), progress);
         HostileText.assertNoRawControl("grade's output", printed);
         HostileText.assertNoRawControl("grade's progress", progress);
         String report = Files.readString(out.resolve("report.txt"));
