@@ -164,6 +164,38 @@ public final class Controllers {
     }
 
     /**
+     * End a {@link Controller}'s {@code doWork()} loop after the current round, as its
+     * {@code killControl()} does, without calling any of the controller's code: a field written, so
+     * the simulator may do it from its own threads (a {@code doWork()} that returns at once without a
+     * robot call never reaches a point where the controller's own thread could be asked). Its own
+     * {@code killControl()}, if it overrides it, is the controller's thread's to call.
+     *
+     * @param controller a controller's thread; nothing happens when it is not a {@link Controller}
+     */
+    public static void endDoWorkLoop(Thread controller) {
+        if (!(controller instanceof Controller)) {
+            return;
+        }
+        try {
+            ACTIVE.setBoolean(controller, false);
+        } catch (ReflectiveOperationException | RuntimeException e) {
+            // Cannot happen for the API's own field; the controller's thread is asked at its next call.
+        }
+    }
+
+    private static final java.lang.reflect.Field ACTIVE = activeField();
+
+    private static java.lang.reflect.Field activeField() {
+        try {
+            java.lang.reflect.Field f = Controller.class.getDeclaredField("active");
+            f.setAccessible(true);
+            return f;
+        } catch (NoSuchFieldException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
+
+    /**
      * How many times a {@link Controller}'s {@code doWork()} has returned so far, for telling a
      * {@code doWork()} that keeps returning without a robot call (no simulated time passes) from one
      * that loops inside.

@@ -258,6 +258,7 @@ public final class ControllerHost implements HostedController {
         }
         if (!life.status().ended()) {
             life.wantKill();
+            Controllers.endDoWorkLoop(controller);
             life.on(ControllerLife.Event.STOP);
             clock.switchTo(threads.main());
             lockstep.awaitOwner(STOP_GRACE_MILLIS * 1_000_000L);
@@ -333,6 +334,7 @@ public final class ControllerHost implements HostedController {
         if (who.index == 0) {
             // Let go before it is interrupted: if that ends it, it must not pass the turn.
             life.wantKill();
+            Controllers.endDoWorkLoop(controller);
             boolean ends = life.on(ControllerLife.Event.HUNG);
             threads.main().interrupt();
             if (ends) {
@@ -379,6 +381,7 @@ public final class ControllerHost implements HostedController {
         // again (every watch period while it makes no progress), it is not asked twice.
         if (life.state().phase() == ControllerLife.Phase.RUNNING) {
             life.wantKill();
+            Controllers.endDoWorkLoop(controller);
         }
         life.on(ControllerLife.Event.STOP);
     }

@@ -82,4 +82,24 @@ class HangMessageTest {
         assertTrue(m.contains("A loop that waits for something must read a sensor or call Thread.sleep inside it"), m);
         assertFalse(m.contains("returns without"), m);
     }
+
+    /**
+     * A hung doWork() that returns at once never reaches a robot call, where its thread could be asked to
+     * stop: the simulator ends its doWork() loop itself (a field, no code of the controller's), so its
+     * thread ends instead of spinning on a core for the rest of the JVM's life (in the window, every later
+     * run; with virtual threads, a carrier lost for good, and every later run stalled).
+     */
+    @Test
+    void aHungEmptyDoWorkLeavesNoThreadBehind() throws InterruptedException {
+        hangMessage("org.kheperasim.testcontrollers.EmptyDoWork");
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+        while (alive("EmptyDoWork") && System.nanoTime() < deadline) {
+            Thread.sleep(20);
+        }
+        assertFalse(alive("EmptyDoWork"), "the hung controller's thread still runs after its run ended");
+    }
+
+    private static boolean alive(String name) {
+        return Thread.getAllStackTraces().keySet().stream().anyMatch(t -> t.getName().equals(name) && t.isAlive());
+    }
 }
