@@ -102,6 +102,9 @@ public final class PtyBridge implements AutoCloseable {
         byte[] buffer = new byte[4096];
         while (!closed) {
             int events = pty.poll(connection == null ? 0 : READ_WAIT_MILLIS);
+            if (events < 0) {
+                continue; // a failed look (a signal) says nothing: a client that is not there must not be connected
+            }
             boolean present = (events & PtyDevice.POLLHUP) == 0;
             if (!present) {
                 if (connection != null || (events & PtyDevice.POLLIN) != 0) {
@@ -186,12 +189,23 @@ public final class PtyBridge implements AutoCloseable {
         // server has seen the last one go never reads what was meant for it (a reply written just before it closed).
         stopReplies();
         // Only while nobody has it open: a client that opened it meanwhile keeps its first bytes and its settings.
-        while (pty.poll(0) == (PtyDevice.POLLIN | PtyDevice.POLLHUP) && pty.read(buffer) > 0) {
-            // Bytes of a client that has gone: for nobody.
-        }
-        if ((pty.poll(0) & PtyDevice.POLLHUP) != 0) {
-            pty.discardPending();
-            pty.makeRaw();
+        // The slave is locked meanwhile (an open fails at once and is retried, as after a busy port), so that no
+        // client can open it between the look that found nobody and the flush, which would throw away its first
+        // command (CI once saw a client of PtyClientsTest wait in vain for its first reply).
+        boolean locked = pty.lockSlave(true);
+        try {
+            while (pty.poll(0) == (PtyDevice.POLLIN | PtyDevice.POLLHUP) && pty.read(buffer) > 0) {
+                // Bytes of a client that has gone: for nobody.
+            }
+            int events = pty.poll(0);
+            if (events > 0 && (events & PtyDevice.POLLHUP) != 0) {
+                pty.discardPending();
+                pty.makeRaw();
+            }
+        } finally {
+            if (locked) {
+                pty.lockSlave(false);
+            }
         }
         drop();
         if (had) {

@@ -36,6 +36,8 @@ final class PtyDevice implements AutoCloseable {
 
         int tcflush(int fd, int queues);
 
+        int ioctl(int fd, NativeLong request, int[] argument);
+
         int poll(int[] fds, NativeLong count, int timeoutMillis);
 
         NativeLong read(int fd, byte[] buffer, NativeLong count);
@@ -50,6 +52,8 @@ final class PtyDevice implements AutoCloseable {
     private static final int TCIOFLUSH = 2;
     static final int POLLIN = 0x1;
     static final int POLLHUP = 0x10;
+    /** ioctl TIOCSPTLCK (_IOW('T', 0x31, int)) where the ioctl numbers are the generic ones; 0 elsewhere (no lock). */
+    private static final long TIOCSPTLCK = genericIoctls() ? 0x40045431L : 0;
     /** Larger than any platform's struct termios. */
     private static final int TERMIOS_BYTES = 256;
 
@@ -115,6 +119,26 @@ final class PtyDevice implements AutoCloseable {
         }
     }
 
+    private static boolean genericIoctls() {
+        String arch = System.getProperty("os.arch", "");
+        return arch.equals("amd64") || arch.equals("x86_64") || arch.equals("aarch64") || arch.equals("x86")
+                || arch.equals("i386") || arch.startsWith("arm") || arch.startsWith("riscv");
+    }
+
+    /**
+     * Lock or unlock the slave: while locked, a program's open of it fails (EIO) at once, so what the
+     * bridge does between a look and an act (throwing away what a client left) cannot reach a client
+     * that opened in between. Where the lock is not known (an unusual architecture), does nothing.
+     *
+     * @return whether the slave is now in the state asked
+     */
+    boolean lockSlave(boolean locked) {
+        if (TIOCSPTLCK == 0) {
+            return false;
+        }
+        return libc.ioctl(master, new NativeLong(TIOCSPTLCK), new int[] {locked ? 1 : 0}) == 0;
+    }
+
     /** Throw away what waits in either direction: what a client that left wrote, and replies it never read. */
     void discardPending() {
         libc.tcflush(master, TCIOFLUSH);
@@ -122,12 +146,13 @@ final class PtyDevice implements AutoCloseable {
 
     /**
      * @param timeoutMillis how long to wait for input, ms (0: look only)
-     * @return the poll events: {@link #POLLIN} input waits, {@link #POLLHUP} no program has the slave open
+     * @return the poll events: {@link #POLLIN} input waits, {@link #POLLHUP} no program has the slave open;
+     *         -1 when the look failed (interrupted by a signal): it tells nothing, look again
      */
     int poll(int timeoutMillis) {
         int[] fds = {master, POLLIN};
         int n = libc.poll(fds, new NativeLong(1), timeoutMillis);
-        return n <= 0 ? 0 : (fds[1] >>> 16) & 0xffff;
+        return n < 0 ? -1 : n == 0 ? 0 : (fds[1] >>> 16) & 0xffff;
     }
 
     /**
