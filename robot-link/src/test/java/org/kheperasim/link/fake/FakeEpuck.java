@@ -84,8 +84,11 @@ public final class FakeEpuck implements AutoCloseable {
             case 'D' -> { speedLeft = arg(f, 1, speedLeft); speedRight = arg(f, 2, speedRight); reply = "d"; }
             case 'E' -> reply = "e," + speedLeft + "," + speedRight;
             case 'F' -> { leds = bit(leds, 9, arg(f, 1, 0)); reply = "f"; }
-            case 'H' -> reply = "\n\"A\"         Accelerometer\r\n\"D,#,#\"     Set motor speed left,right\r\n"
-                    + "\"N\"         Proximity\r\n\"Q\"         Get motor position left,right\r\n\"V\"         Version of SerCom";
+            case 'H' -> reply = "\n\"A\"         Accelerometer\r\n"
+                    + "\"D,#,#\"     Set motor speed left,right\r\n"
+                    + "\"N\"         Proximity\r\n"
+                    + "\"Q\"         Get motor position left,right\r\n"
+                    + "\"V\"         Version of SerCom";
             case 'L' -> {
                 int n = arg(f, 1, 0);
                 int a = arg(f, 2, 0);

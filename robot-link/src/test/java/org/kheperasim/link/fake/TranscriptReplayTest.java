@@ -19,7 +19,8 @@ import org.kheperasim.link.io.TcpLink;
 class TranscriptReplayTest {
 
     private static int replay(String transcript, OnSocket<?> robot) throws Exception {
-        try (Link link = TcpLink.connect("127.0.0.1", Integer.parseInt(robot.url().replaceAll(".*:", "")), LineEnd.LF, 5000)) {
+        int port = Integer.parseInt(robot.url().replaceAll(".*:", ""));
+        try (Link link = TcpLink.connect("127.0.0.1", port, LineEnd.LF, 5000)) {
             return Transcript.load(transcript).replay(link, 2000);
         }
     }

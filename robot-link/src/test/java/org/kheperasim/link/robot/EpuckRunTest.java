@@ -101,7 +101,8 @@ class EpuckRunTest {
             assertEquals(RobotRun.End.STOPPED, r.end(), r.detail() + " " + console);
             List<String> got = fake.received();
             assertEquals("V", got.get(0), "the session opens with the e-puck's version command");
-            assertTrue(got.contains("D,6,6") && got.indexOf("D,6,6") < got.indexOf("D,4,-4"), "the moves in order: " + got);
+            assertTrue(got.contains("D,6,6") && got.indexOf("D,6,6") < got.indexOf("D,4,-4"),
+                    "the moves in order: " + got);
             assertTrue(got.contains("Q") && got.contains("N") && got.contains("O"), "polled with N, O, Q");
             assertTrue(got.stream().noneMatch(l -> l.startsWith("H") || l.startsWith("T") || l.startsWith("B")),
                     "no Khepera letter reached the e-puck: " + RobotScript.tail(got));
@@ -116,7 +117,8 @@ class EpuckRunTest {
         long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
         while (!robot.received().contains(line)) {
             if (System.nanoTime() > until) {
-                throw new AssertionError("the e-puck did not receive " + line + "; the last: " + RobotScript.tail(robot.received()));
+                throw new AssertionError("the e-puck did not receive " + line + "; the last: "
+                        + RobotScript.tail(robot.received()));
             }
             Thread.sleep(5);
         }
