@@ -140,6 +140,10 @@ public final class Grader {
             for (int i = 0; i < jobs.size(); i++) {
                 Journal.Entry e = journal.done().get(jobs.get(i).index());
                 if (e == null) { // only past the grading's deadline
+                    if (o.deadline() == null) {
+                        throw new IllegalStateException("run " + ReportFiles.runId(jobs.get(i)) + " was not made (the grading"
+                                + " was stopped); grade again on the same --out to make it");
+                    }
                     records.add(GradeDeadline.notMade(jobs.get(i), arenas.get(jobs.get(i).arena()), o.deadline()));
                     continue;
                 }

@@ -22,7 +22,7 @@ import org.kheperasim.sim.grade.JsonValues;
  * The ready Gradescope folder ({@code docs/examples/gradescope}) as Gradescope runs it: its
  * {@code run_autograder}, unchanged, under a root laid out as Gradescope lays out {@code /autograder}
  * ({@code source/} with the zip's files, {@code submission/} with the student's, {@code results/}),
- * with its {@code grade.conf} cut to 2 seeds of 10 simulated seconds. A working controller gets a test per
+ * with its {@code grade.conf} cut to 2 seeds of 3 simulated seconds. A working controller gets a test per
  * arena and seed, each with its own points (partial credit, never all or nothing), the hidden arena's
  * hidden; one that does not compile is reported not gradable with the compiler's line.
  */
@@ -49,8 +49,8 @@ class GradescopeAutograderTest {
         Path source = Files.createDirectories(root.resolve("source"));
         Files.copy(READY.resolve("run_autograder"), source.resolve("run_autograder"));
         String conf = Files.readString(READY.resolve("grade.conf")).replace("SEEDS=10", "SEEDS=2")
-                .replace("SECONDS_PER_RUN=60", "SECONDS_PER_RUN=10");
-        assertTrue(conf.contains("SEEDS=2") && conf.contains("SECONDS_PER_RUN=10") && conf.contains("HIDDEN=\"two-rooms\""), conf);
+                .replace("SECONDS_PER_RUN=60", "SECONDS_PER_RUN=3");
+        assertTrue(conf.contains("SEEDS=2") && conf.contains("SECONDS_PER_RUN=3") && conf.contains("HIDDEN=\"two-rooms\""), conf);
         Files.writeString(source.resolve("grade.conf"), conf);
         Path submission = Files.createDirectories(root.resolve("submission"));
         for (String f : files) {
