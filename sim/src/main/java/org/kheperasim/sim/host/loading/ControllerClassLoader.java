@@ -95,7 +95,7 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         this.roots = open(classpath);
         this.hierarchy = new ClassHierarchy(this::localClassFile, parent);
         this.check = new ControllerCheck(new ControllerPolicy(Allowlist.bundled(), hierarchy), this::localClassFile,
-                n -> locations.getOrDefault(n, n + ".class"));
+                n -> locations.getOrDefault(n, n + ".class"), !contained);
     }
 
     /** @return the stand-ins its code locks for objects it does not own */
@@ -230,15 +230,15 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         String failure = "Cannot load class " + name + " from " + found.location() + ": ";
         byte[] bytes = found.bytes();
         try {
-            if (contained) {
-                // The check reads class files through the same cache: what is defined is what was checked,
-                // even if the file changes on disk meanwhile.
-                String internalName = name.replace('.', '/');
-                locations.putIfAbsent(internalName, found.location());
-                bytes = classFiles.compute(internalName, (n, read) -> read != null && read.isPresent() ? read
-                        : java.util.Optional.of(found.bytes())).get();
-                check.checkReachable(internalName); // a bad class file's error names its file already
-            }
+            // The check reads class files through the same cache: what is defined is what was checked,
+            // even if the file changes on disk meanwhile. For trusted code it only reads them: a class
+            // file too new or malformed that the controller reaches is refused before its run, in one
+            // line, not when its code first runs into it.
+            String internalName = name.replace('.', '/');
+            locations.putIfAbsent(internalName, found.location());
+            bytes = classFiles.compute(internalName, (n, read) -> read != null && read.isPresent() ? read
+                    : java.util.Optional.of(found.bytes())).get();
+            check.checkReachable(internalName); // a bad class file's error names its file already
         } catch (ControllerPolicyError e) {
             throw withCause(new ControllerPolicyError(failure + e.getMessage()), e);
         }
