@@ -148,7 +148,7 @@ public final class ControllerCompiler {
         Path copyDir = Files.createTempDirectory("khepera-import");
         try {
             Path copy = copyDir.resolve(source.getFileName().toString());
-            Files.writeString(copy, MissingImports.withApiImport(text), StandardCharsets.UTF_8);
+            org.kheperasim.sim.files.AtomicFiles.write(copy, MissingImports.withApiImport(text));
             List<Path> files = new ArrayList<>(together);
             files.set(0, copy);
             return compileAll(javac, files, classes, false, sourcepath);
