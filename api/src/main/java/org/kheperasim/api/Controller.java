@@ -93,13 +93,13 @@ public abstract class Controller extends Thread {
         return sensor(sensor).getLightValue();
     }
 
-    /** @return all the robot's live sensors, in its index order (the Khepera's eight: 0..7) */
     /** @return the live sensor of that index; a robot without it refuses, naming itself and its sensors */
     private Sensor sensor(IrSensor sensor) {
         int i = sensor.index();
         return i < sensors.length ? sensors[i] : robot.getSensor(sensor);
     }
 
+    /** @return all the robot's live sensors, in its index order (the Khepera's eight: 0..7) */
     protected final Sensor[] sensors() {
         return sensors;
     }

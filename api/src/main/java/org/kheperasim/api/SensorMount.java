@@ -13,7 +13,10 @@ package org.kheperasim.api;
  */
 public record SensorMount(int index, String name, double xMm, double yMm, double headingDeg) {
 
-    /** @param s a Khepera sensor @return its mount */
+    /**
+     * @param s a Khepera sensor
+     * @return its mount
+     */
     public static SensorMount of(IrSensor s) {
         return new SensorMount(s.index(), s.name(), s.xMm(), s.yMm(), s.headingDeg());
     }

@@ -104,13 +104,13 @@ public abstract class StepController {
         return sensor(sensor).getLightValue();
     }
 
-    /** @return the robot's sensors, live, in its order (the Khepera's eight: see {@link IrSensor}) */
     /** @return the live sensor of that index; a robot without it refuses, naming itself and its sensors */
     private Sensor sensor(IrSensor sensor) {
         int i = sensor.index();
         return i < sensors.length ? sensors[i] : robot.getSensor(sensor);
     }
 
+    /** @return the robot's sensors, live, in its order (the Khepera's eight: see {@link IrSensor}) */
     protected final Sensor[] sensors() {
         return sensors;
     }
