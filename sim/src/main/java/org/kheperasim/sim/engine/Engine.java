@@ -403,8 +403,9 @@ public final class Engine {
     /** @return the world as it is now */
     public Snapshot snapshot() {
         List<RobotView> views = new ArrayList<>(robots.size());
-        int[] prox = new int[0];
-        int[] light = new int[0];
+        int first = robots.isEmpty() ? 0 : robots.get(0).type().sensorCount();
+        int[] prox = new int[first];
+        int[] light = new int[first];
         for (SimRobot r : robots) {
             if (prox.length != r.type().sensorCount()) {
                 prox = new int[r.type().sensorCount()];
