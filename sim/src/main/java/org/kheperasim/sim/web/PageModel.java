@@ -48,7 +48,17 @@ final class PageModel {
                 .put("robotsInRun", tape.robotsInRun()).put("capMoves", tape.caps().size());
         j.array("robots");
         for (int i = 0; i < robots.size(); i++) {
-            j.begin().put("name", robots.get(i).name).put("n", packed.kept()[i]).put("sensors", robots.get(i).sensors != null).end();
+            j.begin().put("name", robots.get(i).name).put("n", packed.kept()[i]).put("sensors", robots.get(i).sensors != null);
+            RobotType type = robots.get(i).type;
+            if (!type.equals(RobotTypes.KHEPERA1)) {
+                // Another robot than the model's: its own body and sensors (a Khepera's page is as it was).
+                j.put("radius", type.body().radiusMm()).array("mounts");
+                for (RobotType.Sensor s : type.sensors()) {
+                    j.array().value(s.xMm()).value(s.yMm()).value(s.headingDeg()).endArray();
+                }
+                j.endArray();
+            }
+            j.end();
         }
         j.endArray();
         j.array("arenas");
