@@ -14,7 +14,6 @@ import org.kheperasim.sim.arena.Wall;
  * (the simulator reports only the side): walls (and the arena's edge), lamps, other robots and caps.
  */
 final class ContactFinder {
-    private static final double R = Arena.ROBOT_RADIUS_MM;
     /** How near counts as touching: the simulator's own margin (0.5 mm), and the trace's rounding. */
     private static final double TOUCH_MM = 0.501;
 
@@ -88,7 +87,7 @@ final class ContactFinder {
         Arena a = arenaAt.apply(s.nanos[k]);
         for (int c = 0; c < samples.caps.size() && c < a.caps().size(); c++) {
             TraceSamples.CapState cap = samples.capAt(c, s.nanos[k]);
-            double gap = StrictMath.hypot(s.x[k] - cap.x(), s.y[k] - cap.y()) - a.caps().get(c).radius() - R;
+            double gap = StrictMath.hypot(s.x[k] - cap.x(), s.y[k] - cap.y()) - a.caps().get(c).radius() - radius(a, robot);
             if (cap.heldBy() != robot && gap <= TOUCH_MM) {
                 double rel = StrictMath.atan2(cap.y() - s.y[k], cap.x() - s.x[k]) - StrictMath.toRadians(s.heading[k]);
                 return org.kheperasim.sim.engine.Contact.ofAngle(rel).name();
@@ -126,6 +125,7 @@ final class ContactFinder {
         double y = s.y[k];
         long t = s.nanos[k];
         Arena a = arenaAt.apply(t);
+        double R = radius(a, robot);
         n.offer(StrictMath.min(StrictMath.min(x, a.width() - x), StrictMath.min(y, a.height() - y)) - R, Obstacle.WALL);
         for (Wall w : a.walls()) {
             n.offer(segmentDistance(x, y, w.x1(), w.y1(), w.x2(), w.y2()) - w.thickness() / 2 - R, Obstacle.WALL);
@@ -137,7 +137,7 @@ final class ContactFinder {
             TraceSamples.Series o = samples.robots.get(j);
             int i = o.indexAt(t);
             if (j != robot && i >= 0) {
-                n.offer(StrictMath.hypot(x - o.x[i], y - o.y[i]) - 2 * R, Obstacle.ROBOT);
+                n.offer(StrictMath.hypot(x - o.x[i], y - o.y[i]) - (R + radius(a, j)), Obstacle.ROBOT);
             }
         }
         for (int c = 0; c < samples.caps.size() && c < a.caps().size(); c++) {
@@ -156,5 +156,10 @@ final class ContactFinder {
         double u = len2 == 0 ? 0 : ((px - x1) * dx + (py - y1) * dy) / len2;
         u = StrictMath.max(0, StrictMath.min(1, u));
         return StrictMath.hypot(px - (x1 + u * dx), py - (y1 + u * dy));
+    }
+
+    /** @return robot {@code i}'s body radius in arena {@code a} (its type's), mm */
+    private static double radius(Arena a, int i) {
+        return a.robotType(i < a.robots().size() ? i : 0).body().radiusMm();
     }
 }

@@ -4,6 +4,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
+import org.kheperasim.sim.engine.robot.RobotType;
 
 /**
  * A complete arena: its size, where the robots start, and the fixed and movable objects on the
@@ -23,12 +24,12 @@ import java.util.Set;
  * @param caps    movable bottle caps, in the order that gives them their grid ids
  * @param regions named rectangles, names unique
  * @param assignment what a run is scored on (tasks, time limit); {@link Assignment#NONE} for none
+ * @param robotKinds each robot's type, in the order of {@code robots} (the arena's {@code robot}
+ *     line names it; {@link RobotKind#DEFAULT}, the Khepera I, when it does not)
  */
 public record Arena(String name, double width, double height, List<Pose> robots, List<Wall> walls,
-                    List<Light> lights, List<Cap> caps, List<Region> regions, Assignment assignment) {
-
-    /** Body radius of the robot (a Khepera I is a 55 mm disc), mm. */
-    public static final double ROBOT_RADIUS_MM = 27.5;
+                    List<Light> lights, List<Cap> caps, List<Region> regions, Assignment assignment,
+                    List<RobotKind> robotKinds) {
 
     /**
      * @throws IllegalArgumentException if the name is not an identifier, the size is not positive or
@@ -50,6 +51,11 @@ public record Arena(String name, double width, double height, List<Pose> robots,
         caps = List.copyOf(caps);
         regions = List.copyOf(regions);
         java.util.Objects.requireNonNull(assignment, "assignment");
+        robotKinds = List.copyOf(robotKinds);
+        if (robotKinds.size() != robots.size()) {
+            throw new IllegalArgumentException("arena '" + name + "' has " + robots.size() + " robots but "
+                    + robotKinds.size() + " robot types; give each robot its type");
+        }
         if (robots.isEmpty()) {
             throw new IllegalArgumentException("arena '" + name + "' has no robot; add a start pose");
         }
@@ -63,7 +69,26 @@ public record Arena(String name, double width, double height, List<Pose> robots,
     }
 
     /**
-     * An arena without an assignment.
+     * An arena whose robots are all Khepera Is ({@link RobotKind#DEFAULT}).
+     *
+     * @param name    identifier of letters, digits, {@code _} and {@code -}
+     * @param width   extent along x, mm
+     * @param height  extent along y, mm
+     * @param robots  start poses
+     * @param walls   fixed walls
+     * @param lights  fixed lamps
+     * @param caps    movable bottle caps
+     * @param regions named rectangles
+     * @param assignment what a run is scored on
+     */
+    public Arena(String name, double width, double height, List<Pose> robots, List<Wall> walls,
+                 List<Light> lights, List<Cap> caps, List<Region> regions, Assignment assignment) {
+        this(name, width, height, robots, walls, lights, caps, regions, assignment,
+                java.util.Collections.nCopies(robots.size(), RobotKind.DEFAULT));
+    }
+
+    /**
+     * An arena without an assignment, its robots all Khepera Is.
      *
      * @param name    identifier of letters, digits, {@code _} and {@code -}
      * @param width   extent along x, mm
@@ -81,7 +106,45 @@ public record Arena(String name, double width, double height, List<Pose> robots,
 
     /** @param a the assignment @return this arena with that assignment */
     public Arena withAssignment(Assignment a) {
-        return new Arena(name, width, height, robots, walls, lights, caps, regions, a);
+        return new Arena(name, width, height, robots, walls, lights, caps, regions, a, robotKinds);
+    }
+
+    /** @param i a robot's index @return that robot's type */
+    public RobotType robotType(int i) {
+        return robotKinds.get(i).type();
+    }
+
+    /**
+     * @param newRobots start poses for a copy of this arena
+     * @return the robot kinds for them: these, cut or filled with the default where the count changed
+     */
+    public List<RobotKind> kindsFor(List<Pose> newRobots) {
+        List<RobotKind> out = new java.util.ArrayList<>(robotKinds.subList(0, StrictMath.min(robotKinds.size(), newRobots.size())));
+        while (out.size() < newRobots.size()) {
+            out.add(RobotKind.DEFAULT);
+        }
+        return out;
+    }
+
+    /**
+     * @param kind a robot type for the robots whose line names none ({@code --robot-file})
+     * @return this arena with those robots of that type; the robots whose line names a type keep it
+     */
+    public Arena withDefaultRobot(RobotKind kind) {
+        List<RobotKind> kinds = new java.util.ArrayList<>();
+        for (RobotKind k : robotKinds) {
+            kinds.add(k.isDefault() ? kind : k);
+        }
+        return new Arena(name, width, height, robots, walls, lights, caps, regions, assignment, kinds);
+    }
+
+    /** @return the widest robot's body radius, mm */
+    public double widestRobotMm() {
+        double r = 0;
+        for (RobotKind k : robotKinds) {
+            r = StrictMath.max(r, k.type().body().radiusMm());
+        }
+        return r;
     }
 
     /**

@@ -20,11 +20,11 @@ final class RobotClearance {
      */
     static void check(Arena arena, List<Integer> robotLines, String source) {
         OccupancyGrid grid = OccupancyGrid.of(arena);
-        double radius = Arena.ROBOT_RADIUS_MM;
         double cell = grid.cellSize();
         List<Pose> robots = arena.robots();
         for (int i = 0; i < robots.size(); i++) {
             Pose p = robots.get(i);
+            double radius = arena.robotType(i).body().radiusMm();
             double best = radius;
             int bestCol = 0;
             int bestRow = 0;

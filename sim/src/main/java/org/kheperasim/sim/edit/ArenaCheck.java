@@ -43,7 +43,7 @@ public final class ArenaCheck {
             }
         }
         for (RobotView r : live) {
-            double clear = Arena.ROBOT_RADIUS_MM;
+            double clear = r.type().body().radiusMm();
             for (Wall w : edited.walls()) {
                 if (!before.walls().contains(w) && segmentDistance(r.x(), r.y(), w) < clear + w.thickness() / 2) {
                     return String.format(java.util.Locale.ROOT,

@@ -40,7 +40,7 @@ public final class ItemHits {
     public static Item hit(Arena a, double x, double y, double tol) {
         for (int i = a.robots().size() - 1; i >= 0; i--) {
             Pose p = a.robots().get(i);
-            if (StrictMath.hypot(x - p.x(), y - p.y()) <= Arena.ROBOT_RADIUS_MM + tol) {
+            if (StrictMath.hypot(x - p.x(), y - p.y()) <= a.robotType(i).body().radiusMm() + tol) {
                 return new Item(Item.Kind.ROBOT, i);
             }
         }

@@ -5,14 +5,13 @@ import java.util.Arrays;
 /**
  * Where the robots' bodies are, so that they meet each other: a uniform grid of buckets over the
  * arena, each listing the robots whose centre lies in it, so that a robot finds its neighbours
- * without looking at every other robot (contacts do not grow with N²). Every robot is a disc of
- * {@link Khepera#BODY_RADIUS_MM}. Updated whenever a robot moves; read by the robots' contacts,
+ * without looking at every other robot (contacts do not grow with N²). Every robot is a disc of its
+ * type's radius. Updated whenever a robot moves; read by the robots' contacts,
  * glides and proximity beams, and by the caps (a cap cannot be pushed into a robot).
  */
 final class Bodies {
     /** Bucket size: a little more than a body's diameter. */
     static final double CELL_MM = 64;
-    private static final double R = Khepera.BODY_RADIUS_MM;
 
     private final int cols;
     private final int rows;
@@ -21,6 +20,9 @@ final class Bodies {
     private int[] cellOf = new int[0];
     private double[] x = new double[0];
     private double[] y = new double[0];
+    private double[] radius = new double[0];
+    /** The widest body's radius, mm. */
+    private double maxRadius;
     private int count;
     /** While robots move on two threads: their buckets are put right afterwards ({@link #relinkDeferred}). */
     private boolean deferring;
@@ -47,8 +49,18 @@ final class Bodies {
         return y[i];
     }
 
-    /** Robot {@code i} (the next index) joins at (px, py). */
-    void add(int i, double px, double py) {
+    /** @return robot {@code i}'s body radius, mm */
+    double radius(int i) {
+        return radius[i];
+    }
+
+    /** @return the widest body's radius, mm (0 before any robot joins) */
+    double maxRadius() {
+        return maxRadius;
+    }
+
+    /** Robot {@code i} (the next index), a disc of radius {@code r} mm, joins at (px, py). */
+    void add(int i, double px, double py, double r) {
         if (i != count) {
             throw new IllegalArgumentException("robots join in order: expected " + count + ", got " + i);
         }
@@ -58,10 +70,13 @@ final class Bodies {
             int room = StrictMath.max(8, x.length + (x.length >> 1));
             x = Arrays.copyOf(x, room);
             y = Arrays.copyOf(y, room);
+            radius = Arrays.copyOf(radius, room);
             next = Arrays.copyOf(next, room);
             cellOf = Arrays.copyOf(cellOf, room);
         }
         cellOf[i] = -1;
+        radius[i] = r;
+        maxRadius = StrictMath.max(maxRadius, r);
         moved(i, px, py);
     }
 
@@ -187,7 +202,7 @@ final class Bodies {
         if (count < 2) {
             return -1;
         }
-        double reach = within + R;
+        double reach = within + maxRadius;
         // A centre farther than this (a margin past `reach` for rounding) is surely beyond `within`:
         // no square root is taken for it.
         double far = reach + 1e-6 + reach * 1e-12;
@@ -223,11 +238,11 @@ final class Bodies {
         if (d2 > far * far) {
             return which;
         }
-        return StrictMath.sqrt(d2) - R <= within ? k : which;
+        return StrictMath.sqrt(d2) - radius[k] <= within ? k : which;
     }
 
     /**
-     * How far a disc may move before it comes within {@code touch} of another robot's centre: the
+     * How far a disc of radius {@code own} may move before it touches another robot's body: the
      * largest fraction t in [0, 1] of the move (dx, dy) from (px, py). A disc already that close may
      * move away, not nearer.
      *
@@ -237,7 +252,7 @@ final class Bodies {
      *     in a crowd) names them, which gives the same answer without scanning the buckets
      * @param amongCount how many of {@code among} count
      */
-    double freeFraction(int exclude, double px, double py, double touch, double dx, double dy, int[] among, int amongCount) {
+    double freeFraction(int exclude, double px, double py, double own, double dx, double dy, int[] among, int amongCount) {
         if (count == 0 || count == 1 && exclude == 0) {
             return 1;
         }
@@ -245,11 +260,12 @@ final class Bodies {
         if (a == 0) {
             return 1;
         }
-        double reach = touch + StrictMath.sqrt(a);
+        double step = StrictMath.sqrt(a);
+        double reach = own + maxRadius + step;
         double t = 1;
         if (among != null) {
             for (int j = 0; j < amongCount && t > 0; j++) {
-                t = approach(among[j], exclude, px, py, touch, dx, dy, a, reach, t);
+                t = approach(among[j], exclude, px, py, own, dx, dy, a, step, t);
             }
             return t;
         }
@@ -260,7 +276,7 @@ final class Bodies {
         for (int r = r0; r <= r1; r++) {
             for (int c = c0; c <= c1; c++) {
                 for (int k = head[r * cols + c]; k >= 0 && t > 0; k = next[k]) {
-                    t = approach(k, exclude, px, py, touch, dx, dy, a, reach, t);
+                    t = approach(k, exclude, px, py, own, dx, dy, a, step, t);
                 }
             }
         }
@@ -268,11 +284,13 @@ final class Bodies {
     }
 
     /** @return the free fraction {@code t} so far, cut short where the move meets robot {@code k} (0: it may not move nearer it at all) */
-    private double approach(int k, int exclude, double px, double py, double touch, double dx, double dy, double a, double reach,
+    private double approach(int k, int exclude, double px, double py, double own, double dx, double dy, double a, double step,
             double t) {
         if (k == exclude) {
             return t;
         }
+        double touch = own + radius[k];
+        double reach = touch + step;
         double jx = x[k] - px;
         double jy = y[k] - py;
         double d2 = jx * jx + jy * jy;

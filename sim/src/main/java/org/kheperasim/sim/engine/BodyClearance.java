@@ -10,20 +10,23 @@ import org.kheperasim.sim.arena.DistanceField;
  */
 final class BodyClearance {
     private final DistanceField field;
+    /** The body's radius, mm. */
+    private final double radius;
     private double value;
     private boolean known;
     /** The field's lower bound of the clearance where it was last looked up. */
     private final ClearanceProof anchor = new ClearanceProof();
 
-    BodyClearance(DistanceField field, double x, double y) {
+    BodyClearance(DistanceField field, double x, double y, double radius) {
         this.field = field;
+        this.radius = radius;
         set(at(x, y));
     }
 
     /** @return the clearance of a centre at (px, py): the fast estimate, refined where contact is possible */
     double at(double px, double py) {
         double c = field.clearance(px, py);
-        return c < Khepera.BODY_RADIUS_MM + DriveBody.NEAR_MM ? field.preciseClearance(px, py) : c;
+        return c < radius + DriveBody.NEAR_MM ? field.preciseClearance(px, py) : c;
     }
 
     /** @return the clearance where the body is, (x, y) */
@@ -51,7 +54,7 @@ final class BodyClearance {
      */
     double freeTravel(double x, double y) {
         // Both clearance estimates are upper bounds of the true clearance, within 2.2 cells of it.
-        return here(x, y) - DriveBody.NEAR_MM - Khepera.BODY_RADIUS_MM - DriveBody.CONTACT_EPSILON_MM;
+        return here(x, y) - DriveBody.NEAR_MM - radius - DriveBody.CONTACT_EPSILON_MM;
     }
 
     /**
@@ -67,7 +70,7 @@ final class BodyClearance {
             anchor.set(x, y, here);
             below = StrictMath.max(below, here);
         }
-        return below - DriveBody.NEAR_MM - Khepera.BODY_RADIUS_MM - DriveBody.CONTACT_EPSILON_MM;
+        return below - DriveBody.NEAR_MM - radius - DriveBody.CONTACT_EPSILON_MM;
     }
 
     /** The arena was edited: forget the bounds and look the clearance up again. */

@@ -23,8 +23,11 @@ final class CapContacts {
 
     /** The robot whose parts push: other robots block the caps it pushes. */
     private final int robot;
+    /** The robot's body radius, mm. */
+    private final double bodyRadius;
 
-    CapContacts(Caps caps, GripperModel gripper, int robot) {
+    CapContacts(Caps caps, GripperModel gripper, int robot, double bodyRadius) {
+        this.bodyRadius = bodyRadius;
         this.caps = caps;
         this.gripper = gripper;
         this.robot = robot;
@@ -36,7 +39,7 @@ final class CapContacts {
      */
     double reachMm() {
         if (!gripper.armLow()) {
-            return Khepera.BODY_RADIUS_MM;
+            return bodyRadius;
         }
         int held = gripper.heldCap();
         if (held < 0) {
@@ -170,7 +173,7 @@ final class CapContacts {
         if (part == 0) {
             qx = px;
             qy = py;
-            radius = Khepera.BODY_RADIUS_MM;
+            radius = bodyRadius;
         } else if (part == 3) {
             qx = px + pc * GripperTurret.GRIP_MM;
             qy = py + ps * GripperTurret.GRIP_MM;

@@ -148,7 +148,7 @@ final class Caps {
      */
     double reach(int i, double dx, double dy, int depth, int pusher) {
         double t = StrictMath.min(staticReach(i, dx, dy),
-                bodies.freeFraction(pusher, x[i], y[i], r[i] + Khepera.BODY_RADIUS_MM, dx, dy, null, 0));
+                bodies.freeFraction(pusher, x[i], y[i], r[i], dx, dy, null, 0));
         if (t == 0) {
             return 0;
         }

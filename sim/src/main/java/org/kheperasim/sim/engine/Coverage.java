@@ -24,10 +24,10 @@ final class Coverage {
     private static final int TILE_SHIFT = 5;
     private static final int TILE = 1 << TILE_SHIFT;
     /** The body's footprint in cells, as (dc, dr) pairs, and its leading edge for each of the 8 steps. */
-    private static final int[] FOOTPRINT = footprint(OccupancyGrid.CELL_MM);
-    private static final int[][] EDGES = edges(FOOTPRINT);
+    private final int[] footprint;
+    private final int[][] edges;
     /** No footprint cell is farther than this from the centre's cell along either axis. */
-    private static final int REACH = reach(FOOTPRINT);
+    private final int reach;
 
     private final World world;
     private final OccupancyGrid grid;
@@ -47,7 +47,16 @@ final class Coverage {
      * @param startX where the robot starts, mm: the regions it starts in are entered at time 0
      * @param startY where the robot starts, mm
      */
-    Coverage(World world, double startX, double startY) {
+    /**
+     * @param world the world
+     * @param startX the start, mm
+     * @param startY the start, mm
+     * @param radius the body's radius, mm
+     */
+    Coverage(World world, double startX, double startY, double radius) {
+        this.footprint = footprint(OccupancyGrid.CELL_MM, radius);
+        this.edges = edges(footprint);
+        this.reach = reach(footprint);
         this.world = world;
         this.grid = world.grid();
         this.tilesAcross = (grid.cols() + TILE - 1) >> TILE_SHIFT;
@@ -69,7 +78,7 @@ final class Coverage {
             lastCol = col;
             lastRow = row;
             if (firstVisit(col, row)) {
-                stamp(col, row, FOOTPRINT);
+                stamp(col, row, footprint);
             }
             return;
         }
@@ -88,7 +97,7 @@ final class Coverage {
             lastRow += dr;
             // The last centre cell's footprint is covered: a new one adds its leading edge only.
             if (firstVisit(lastCol, lastRow)) {
-                stamp(lastCol, lastRow, EDGES[(dr + 1) * 3 + (dc + 1)]);
+                stamp(lastCol, lastRow, edges[(dr + 1) * 3 + (dc + 1)]);
             }
         }
     }
@@ -112,7 +121,7 @@ final class Coverage {
         int cols = grid.cols();
         int rows = grid.rows();
         // Well inside the grid (the usual case) no cell needs its own bounds check.
-        boolean inside = col >= REACH && row >= REACH && col + REACH < cols && row + REACH < rows;
+        boolean inside = col >= reach && row >= reach && col + reach < cols && row + reach < rows;
         int lastT = -1;
         long[] tile = null;
         for (int k = 0; k < offsets.length; k += 2) {
@@ -279,13 +288,13 @@ final class Coverage {
         }
     }
 
-    private static int[] footprint(double cell) {
-        int reach = (int) StrictMath.ceil(Khepera.BODY_RADIUS_MM / cell);
+    private static int[] footprint(double cell, double radius) {
+        int reach = (int) StrictMath.ceil(radius / cell);
         int[] tmp = new int[(2 * reach + 1) * (2 * reach + 1) * 2];
         int n = 0;
         for (int dr = -reach; dr <= reach; dr++) {
             for (int dc = -reach; dc <= reach; dc++) {
-                if (StrictMath.hypot(dc * cell, dr * cell) <= Khepera.BODY_RADIUS_MM) {
+                if (StrictMath.hypot(dc * cell, dr * cell) <= radius) {
                     tmp[n++] = dc;
                     tmp[n++] = dr;
                 }

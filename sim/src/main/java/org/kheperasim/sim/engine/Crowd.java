@@ -20,7 +20,6 @@ import java.util.List;
  */
 final class Crowd implements Bodies.Visitor {
     /** Two robots' centres farther apart than this neither touch nor report a contact, mm. */
-    private static final double TOUCH_MM = 2 * Khepera.BODY_RADIUS_MM + DriveBody.CONTACT_EPSILON_MM + 1e-6;
     /** Robot ids are packed below the tick in an event's key. */
     private static final int ID_BITS = 24;
 
@@ -121,7 +120,7 @@ final class Crowd implements Bodies.Visitor {
             looking = r;
             lookingReach = r.travelPerTickMm() * n;
             first[id] = sightCount;
-            bodies.visit(id, r.x(), r.y(), lookingReach + fastest * n + unseen + Khepera.BODY_RADIUS_MM, this);
+            bodies.visit(id, r.x(), r.y(), lookingReach + fastest * n + unseen + bodies.maxRadius(), this);
             first[id + 1] = sightCount;
         }
         // Each unit's members in robot order, listed from its root (its lowest id).
@@ -145,15 +144,20 @@ final class Crowd implements Bodies.Visitor {
         // The same for both robots of a pair (a sum is exact to swap): one must not find the other
         // within sight while the other finds no one and moves on its own.
         double apart = StrictMath.sqrt(dx * dx + dy * dy) - (lookingReach + o.travelPerTickMm() * ticks);
-        if (apart - StrictMath.max(looking.unseenMm(), o.unseenMm()) - Khepera.BODY_RADIUS_MM < 0) {
+        if (apart - StrictMath.max(looking.unseenMm(), o.unseenMm()) - StrictMath.max(looking.radiusMm(), o.radiusMm()) < 0) {
             if (sightCount == sight.length) {
                 sight = Arrays.copyOf(sight, sightCount * 2);
             }
             sight[sightCount++] = k;
         }
-        if (apart < TOUCH_MM) {
+        if (apart < touch(looking, o)) {
             union(looking.id(), k);
         }
+    }
+
+    /** @return how near two robots' centres come when their bodies touch, with the contact margin and rounding, mm */
+    private static double touch(SimRobot a, SimRobot b) {
+        return a.radiusMm() + b.radiusMm() + DriveBody.CONTACT_EPSILON_MM + 1e-6;
     }
 
     private int find(int id) {
@@ -230,7 +234,7 @@ final class Crowd implements Bodies.Visitor {
                 SimRobot rb = robots.get(unit[b]);
                 double closing = ra.travelPerTickMm() + rb.travelPerTickMm();
                 if (closing > 0) {
-                    double gap = StrictMath.hypot(ra.x() - rb.x(), ra.y() - rb.y()) - TOUCH_MM - 1e-6;
+                    double gap = StrictMath.hypot(ra.x() - rb.x(), ra.y() - rb.y()) - touch(ra, rb) - 1e-6;
                     k = gap <= 0 ? 0 : (long) StrictMath.min(k, StrictMath.floor(gap / closing));
                 }
             }

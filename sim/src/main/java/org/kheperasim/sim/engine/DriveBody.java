@@ -3,6 +3,7 @@ package org.kheperasim.sim.engine;
 import org.kheperasim.sim.arena.DistanceField;
 import org.kheperasim.sim.arena.OccupancyGrid;
 import org.kheperasim.sim.engine.noise.CounterNoise;
+import org.kheperasim.sim.engine.robot.RobotType;
 
 /**
  * The robot's body on its two wheels: pose, wheel speeds with their calibration and noise, the exact
@@ -22,6 +23,9 @@ final class DriveBody {
 
     private final DistanceField field;
     private final double mmPerPulse;
+    /** The body's radius and the wheel base, mm (the robot type's). */
+    private final double radius;
+    private final double wheelBase;
     private final Wheels wheels;
 
     private double x;
@@ -46,20 +50,27 @@ final class DriveBody {
     /** The last arc's trigonometry, reused while the turn per move does not change. */
     private final ArcTrig trig = new ArcTrig();
 
-    DriveBody(World world, int self, double x, double y, double headingDeg, RobotModel.Motors motors, double readingNoise,
-            double calibrationLeft, double calibrationRight, CounterNoise noiseLeft, CounterNoise noiseRight) {
+    DriveBody(World world, int self, double x, double y, double headingDeg, RobotType type, RobotModel.Motors motors,
+            double readingNoise, double calibrationLeft, double calibrationRight, CounterNoise noiseLeft, CounterNoise noiseRight) {
         this.field = world.field();
         this.bodies = world.bodies();
         this.self = self;
         this.mmPerPulse = motors.mmPerPulse();
-        this.wheels = new Wheels(motors, readingNoise, calibrationLeft, calibrationRight, noiseLeft, noiseRight);
+        this.radius = type.body().radiusMm();
+        this.wheelBase = type.drive().wheelBaseMm();
+        this.wheels = new Wheels(type.drive(), motors, readingNoise, calibrationLeft, calibrationRight, noiseLeft, noiseRight);
         this.x = x;
         this.y = y;
         double h = StrictMath.toRadians(headingDeg);
         this.cos = StrictMath.cos(h);
         this.sin = StrictMath.sin(h);
-        this.room = new BodyClearance(field, x, y);
-        bodies.add(self, x, y);
+        this.room = new BodyClearance(field, x, y, radius);
+        bodies.add(self, x, y, radius);
+    }
+
+    /** @return the body's radius, mm */
+    double radius() {
+        return radius;
     }
 
     // ------------------------------------------------------------------ wheels
@@ -182,10 +193,10 @@ final class DriveBody {
         double fraction = 1;
         boolean nowBlocked = false;
         // NaN compares false: no wall within touch.
-        if (newClearance < Khepera.BODY_RADIUS_MM && newClearance < room.here(x, y)) {
+        if (newClearance < radius && newClearance < room.here(x, y)) {
             double clearance = room.here(x, y);
-            fraction = clearance > Khepera.BODY_RADIUS_MM
-                    ? (clearance - Khepera.BODY_RADIUS_MM) / (clearance - newClearance) : 0;
+            fraction = clearance > radius
+                    ? (clearance - radius) / (clearance - newClearance) : 0;
             nx = x + fraction * stepLen * midCos;
             ny = y + fraction * stepLen * midSin;
             newClearance = nearWall(nx, ny);
@@ -198,7 +209,7 @@ final class DriveBody {
             // Another robot stops this one as a wall does: it goes only as far as touching it.
             double tx = nx - x;
             double ty = ny - y;
-            double f = bodies.freeFraction(self, x, y, 2 * Khepera.BODY_RADIUS_MM, tx, ty, mates, mateCount);
+            double f = bodies.freeFraction(self, x, y, radius, tx, ty, mates, mateCount);
             if (f < 1) {
                 nx = x + f * tx;
                 ny = y + f * ty;
@@ -243,8 +254,8 @@ final class DriveBody {
         }
         count(common, diff, fraction);
         int other = bodies.count() > 1
-                ? bodies.firstTouching(self, x, y, Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM, mates, mateCount) : -1;
-        if (newClearance <= Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM) {
+                ? bodies.firstTouching(self, x, y, radius + CONTACT_EPSILON_MM, mates, mateCount) : -1;
+        if (newClearance <= radius + CONTACT_EPSILON_MM) {
             touching(field.nearestObstacleX(x, y), field.nearestObstacleY(x, y));
         } else if (other >= 0) {
             touching(bodies.x(other), bodies.y(other));
@@ -261,7 +272,7 @@ final class DriveBody {
      * and the value is looked up only if needed later, at the same place).
      */
     private double nearWall(double px, double py) {
-        return field.clearanceBelow(px, py) > Khepera.BODY_RADIUS_MM + CONTACT_EPSILON_MM ? Double.NaN : room.at(px, py);
+        return field.clearanceBelow(px, py) > radius + CONTACT_EPSILON_MM ? Double.NaN : room.at(px, py);
     }
 
     /**
@@ -287,14 +298,14 @@ final class DriveBody {
         double dt = ticks * TICK_S;
         double dl = wheels.left() * dt;
         double dr = wheels.right() * dt;
-        trig.half((dr - dl) / Khepera.WHEEL_BASE_MM);
+        trig.half((dr - dl) / wheelBase);
         return (dl + dr) * 0.5;
     }
 
     /** The turn of an arc of {@code ticks} ticks, rad (as {@link #halfArc} computes it). */
     private double turn(long ticks) {
         double dt = ticks * TICK_S;
-        return (wheels.right() * dt - wheels.left() * dt) / Khepera.WHEEL_BASE_MM;
+        return (wheels.right() * dt - wheels.left() * dt) / wheelBase;
     }
 
     private double diff(long ticks) {

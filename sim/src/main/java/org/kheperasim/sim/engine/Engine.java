@@ -1,10 +1,11 @@
 package org.kheperasim.sim.engine;
 
+import org.kheperasim.sim.engine.robot.RobotType;
+import org.kheperasim.sim.engine.robot.RobotTypes;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
 import java.util.function.Function;
-import org.kheperasim.api.IrSensor;
 import org.kheperasim.sim.arena.Pose;
 
 /**
@@ -67,10 +68,24 @@ public final class Engine {
      * @param name a name for reports
      * @param start start pose
      * @param settings its settings
-     * @return the robot
+     * @return the robot, a {@link RobotTypes#KHEPERA1}
      */
     public SimRobot addRobot(String name, Pose start, Settings settings) {
-        SimRobot r = new SimRobot(robots.size(), name, world, start, settings, seeds.split());
+        return addRobot(name, start, settings, RobotTypes.KHEPERA1);
+    }
+
+    /**
+     * Add a robot of a given type. Each robot gets its own random stream, split from the seed in
+     * the order robots are added.
+     *
+     * @param name a name for reports
+     * @param start start pose
+     * @param settings its settings
+     * @param type its type: body, wheels, sensors
+     * @return the robot
+     */
+    public SimRobot addRobot(String name, Pose start, Settings settings, RobotType type) {
+        SimRobot r = new SimRobot(robots.size(), name, world, start, settings, type, seeds.split());
         robots.add(r);
         if (recorder != null) {
             r.record(recorder);
@@ -388,13 +403,18 @@ public final class Engine {
     /** @return the world as it is now */
     public Snapshot snapshot() {
         List<RobotView> views = new ArrayList<>(robots.size());
-        int[] prox = new int[IrSensor.COUNT];
-        int[] light = new int[IrSensor.COUNT];
+        int first = robots.isEmpty() ? 0 : robots.get(0).type().sensorCount();
+        int[] prox = new int[first];
+        int[] light = new int[first];
         for (SimRobot r : robots) {
+            if (prox.length != r.type().sensorCount()) {
+                prox = new int[r.type().sensorCount()];
+                light = new int[prox.length];
+            }
             r.copyVisible(timeNanos(), prox, light);
             views.add(new RobotView(r.id(), r.name(), r.x(), r.y(), r.headingDeg(), r.speedLeft(), r.speedRight(),
                     r.encoderLeft(), r.encoderRight(), r.contact(), prox, light, r.collisions(),
-                    r.distanceTravelledMm(), driverStatus.get(r.id()).apply(r), r.gripper().view(), r.leds()));
+                    r.distanceTravelledMm(), driverStatus.get(r.id()).apply(r), r.gripper().view(), r.leds(), r.type()));
         }
         List<VisionView> vision = new ArrayList<>();
         for (SimRobot r : robots) {

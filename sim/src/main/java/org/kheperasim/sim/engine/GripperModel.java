@@ -64,7 +64,7 @@ final class GripperModel {
         if (target == GripperState.OPEN && heldCap >= 0) {
             double gx = body.x() + body.cos() * GripperTurret.GRIP_MM;
             double gy = body.y() + body.sin() * GripperTurret.GRIP_MM;
-            caps.drop(heldCap, gx, gy, body.x(), body.y(), Khepera.BODY_RADIUS_MM);
+            caps.drop(heldCap, gx, gy, body.x(), body.y(), body.radius());
             heldCap = -1;
         }
     }
@@ -114,7 +114,7 @@ final class GripperModel {
             double dy = caps.y(i) - body.y();
             double lx = dx * body.cos() + dy * body.sin();
             double ly = dy * body.cos() - dx * body.sin();
-            if (lx >= Khepera.BODY_RADIUS_MM - 1 && lx <= GripperTurret.FINGER_TIP_MM && StrictMath.abs(ly) < inner) {
+            if (lx >= body.radius() - 1 && lx <= GripperTurret.FINGER_TIP_MM && StrictMath.abs(ly) < inner) {
                 double score = StrictMath.abs(lx - GripperTurret.GRIP_MM) + StrictMath.abs(ly);
                 if (score < bestScore) {
                     bestScore = score;

@@ -1,13 +1,12 @@
 package org.kheperasim.sim.engine;
 
 import java.util.List;
-import org.kheperasim.api.IrSensor;
 import org.kheperasim.sim.arena.Light;
 import org.kheperasim.sim.arena.OccupancyGrid;
 import org.kheperasim.sim.engine.noise.CounterNoise;
 
 /**
- * The eight ambient-light sensors: each adds up the lamps it faces and that reach it unshadowed
+ * The robot's ambient-light sensors: each adds up the lamps it faces and that reach it unshadowed
  * (falling off with distance), maps the exposure between darkness and brightness, and applies the
  * paper's flicker in darkness and a relative noise in light. Walls and lamp bodies cast shadows;
  * caps do not.
@@ -54,7 +53,7 @@ final class LightSensing {
     /** The reply characters of a dark sample, when every sensor's flicker keeps its number of digits. */
     private int darkChars() {
         int chars = 0;
-        for (int i = 0; i < IrSensor.COUNT; i++) {
+        for (int i = 0; i < placement.count; i++) {
             // Without a flicker the reading is the dark level itself. With one, the flicker factor is
             // monotone in its uniform draw, so its extremes bound the reading.
             int n = SensorPlacement.digits(SensorPlacement.reading(dark[i]));
@@ -90,7 +89,7 @@ final class LightSensing {
 
     /** The eight readings of a sample in darkness ({@link #deferDark}): each sensor's dark level and flicker. */
     void fillDark(long sample, int[] out) {
-        for (int i = 0; i < IrSensor.COUNT; i++) {
+        for (int i = 0; i < placement.count; i++) {
             out[i] = SensorPlacement.reading(darkValue(i, sample * DRAWS));
         }
     }
@@ -119,7 +118,7 @@ final class LightSensing {
         if (!lights.isEmpty()) {
             placement.place(x, y, c, s);
         }
-        for (int i = 0; i < IrSensor.COUNT; i++) {
+        for (int i = 0; i < placement.count; i++) {
             double exposure = 0;
             if (!dead[i]) {
                 for (int k = 0; k < lights.size(); k++) {

@@ -169,11 +169,11 @@ public final class LinearCamera {
     private double nearestRobot(double px, double py, double dx, double dy) {
         Bodies bodies = world.bodies();
         double best = Double.POSITIVE_INFINITY;
-        double r = Khepera.BODY_RADIUS_MM;
         for (int j = 0; j < bodies.count(); j++) {
             if (j == self) {
                 continue;
             }
+            double r = bodies.radius(j);
             double ox = bodies.x(j) - px;
             double oy = bodies.y(j) - py;
             double along = ox * dx + oy * dy;

@@ -1,6 +1,5 @@
 package org.kheperasim.sim.engine;
 
-import org.kheperasim.api.IrSensor;
 import org.kheperasim.sim.engine.noise.CounterNoise;
 
 /**
@@ -10,9 +9,9 @@ import org.kheperasim.sim.engine.noise.CounterNoise;
  * indices, so changing one setting never shifts another's draw.
  */
 final class Miscalibration {
-    final double[] proxGain = new double[IrSensor.COUNT];
-    final double[] proxOffset = new double[IrSensor.COUNT];
-    final double[] lightDark = new double[IrSensor.COUNT];
+    final double[] proxGain;
+    final double[] proxOffset;
+    final double[] lightDark;
     final double calibrationLeft;
     final double calibrationRight;
 
@@ -20,7 +19,11 @@ final class Miscalibration {
         double scale = model.noise().robot();
         RobotModel.Proximity p = model.proximity();
         RobotModel.Light l = model.light();
-        for (int i = 0; i < IrSensor.COUNT; i++) {
+        int n = model.type().sensorCount();
+        proxGain = new double[n];
+        proxOffset = new double[n];
+        lightDark = new double[n];
+        for (int i = 0; i < n; i++) {
             double g = systematic.gaussian(3L * i);
             double o = systematic.uniform(3L * i + 1) * 2 - 1;
             double d = systematic.gaussian(3L * i + 2);

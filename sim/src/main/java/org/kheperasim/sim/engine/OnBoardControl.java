@@ -1,5 +1,7 @@
 package org.kheperasim.sim.engine;
 
+import org.kheperasim.sim.engine.robot.RobotType;
+
 /**
  * The robot as a protocol client drives it directly (the protocol server): each command acts at
  * once, as on the robot when its characters have arrived. Speed, position ({@code C}, {@code J})
@@ -32,13 +34,20 @@ public final class OnBoardControl {
     private final SimRobot robot;
     private final DriveBody body;
     private final GripperModel gripper;
-    private final PositionControl left = new PositionControl();
-    private final PositionControl right = new PositionControl();
+    private final PositionControl left;
+    private final PositionControl right;
+    /** The motor controller's period, ns, and the speed limit, units: the robot type's. */
+    private final long motorPeriod;
+    private final int speedLimit;
     private MotorMode mode = MotorMode.SPEED;
     private long nextUpdate = Long.MAX_VALUE;
     private int leds;
 
-    OnBoardControl(SimRobot robot, DriveBody body, GripperModel gripper) {
+    OnBoardControl(SimRobot robot, DriveBody body, GripperModel gripper, RobotType.Drive drive) {
+        this.left = new PositionControl(drive);
+        this.right = new PositionControl(drive);
+        this.motorPeriod = drive.motorPeriodNanos();
+        this.speedLimit = drive.maxSpeed();
         this.robot = robot;
         this.body = body;
         this.gripper = gripper;
@@ -110,19 +119,19 @@ public final class OnBoardControl {
 
     /**
      * Raw PWM ({@code P}), approximated: the simulator has no motor model, so a duty of d/255 gives
-     * about d/2 speed units (full duty ≈ 127 units ≈ 1 m/s, the robot's top speed).
+     * about the robot's top speed times d/255 (the Khepera: 127 units ≈ 1 m/s).
      *
      * @param l left PWM, -255..255
      * @param r right PWM, -255..255
      */
     public void drivePwm(int l, int r) {
         leave(MotorMode.PWM);
-        body.wheels().setSpeeds(pwmToSpeed(l), pwmToSpeed(r));
+        body.wheels().setSpeeds(pwmToSpeed(l, speedLimit), pwmToSpeed(r, speedLimit));
     }
 
-    /** @param pwm -255..255 @return the speed it gives, units */
-    public static int pwmToSpeed(int pwm) {
-        return (int) StrictMath.rint(StrictMath.max(-255, StrictMath.min(255, pwm)) * 127.0 / 255.0);
+    /** @param pwm -255..255 @param limit the robot's top speed, units @return the speed it gives, units */
+    public static int pwmToSpeed(int pwm, int limit) {
+        return (int) StrictMath.rint(StrictMath.max(-255, StrictMath.min(255, pwm)) * (double) limit / 255.0);
     }
 
     /**
@@ -157,7 +166,7 @@ public final class OnBoardControl {
     /** Update a position move when its 10 ms period has come round; returns when it is next due, ns. */
     long due(long now) {
         if (now >= nextUpdate) {
-            nextUpdate = now + Khepera.MOTOR_PERIOD_NANOS;
+            nextUpdate = now + motorPeriod;
             body.wheels().setSpeeds(left.update(body.encoderLeftExact()), right.update(body.encoderRightExact()));
         }
         return nextUpdate;

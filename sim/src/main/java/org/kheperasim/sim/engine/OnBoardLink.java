@@ -1,7 +1,6 @@
 package org.kheperasim.sim.engine;
 
 import org.kheperasim.api.GripperState;
-import org.kheperasim.api.IrSensor;
 
 /**
  * A controller running on the robot's own processor (on-board): no serial link between it and the
@@ -80,9 +79,5 @@ final class OnBoardLink {
 
     int askedRight() {
         return askedRight;
-    }
-
-    static int count() {
-        return IrSensor.COUNT;
     }
 }

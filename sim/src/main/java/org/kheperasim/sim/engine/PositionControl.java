@@ -1,5 +1,7 @@
 package org.kheperasim.sim.engine;
 
+import org.kheperasim.sim.engine.robot.RobotType;
+
 /**
  * The Khepera's position mode for one wheel ({@code C,l,r} with the profile set by
  * {@code J,max_l,acc_l,max_r,acc_r}): every motor period (10 ms) the wheel's speed moves toward the
@@ -15,27 +17,34 @@ package org.kheperasim.sim.engine;
  * its error and never reports "on target".
  */
 public final class PositionControl {
-    /** The reset default for the maximum speed of a position move, speed units. */
-    public static final int DEFAULT_MAX_SPEED = 20;
-    /** The reset default acceleration, 1/256 speed unit per 10 ms. */
-    public static final int DEFAULT_ACCELERATION = 64;
     /** The acceleration unit: 1/256 of a speed unit per 10 ms. */
     public static final double ACCELERATION_SCALE = 1.0 / 256;
     /** Closer than this to the target, pulses, counts as on target. */
     public static final double ON_TARGET_PULSES = 0.5;
 
-    private int maxSpeed = DEFAULT_MAX_SPEED;
-    private int acceleration = DEFAULT_ACCELERATION;
+    /** The robot's speed limit, speed units. */
+    private final int speedLimit;
+    private int maxSpeed;
+    private int acceleration;
     private int target;
     private double speed;
     private boolean active;
+
+    /**
+     * @param drive the robot's drive: its speed limit and the reset defaults of a move's profile
+     */
+    public PositionControl(RobotType.Drive drive) {
+        this.speedLimit = drive.maxSpeed();
+        this.maxSpeed = drive.moveSpeed();
+        this.acceleration = drive.acceleration();
+    }
 
     /**
      * @param maxSpeed maximum speed of a move, speed units (pulses per 10 ms), taken as its magnitude
      * @param acceleration acceleration, 1/256 speed unit per 10 ms, taken as its magnitude
      */
     public void profile(int maxSpeed, int acceleration) {
-        this.maxSpeed = StrictMath.min(127, StrictMath.abs(maxSpeed));
+        this.maxSpeed = StrictMath.min(speedLimit, StrictMath.abs(maxSpeed));
         this.acceleration = StrictMath.abs(acceleration);
     }
 

@@ -1,22 +1,22 @@
 package org.kheperasim.sim.engine;
 
-import org.kheperasim.api.IrSensor;
 import org.kheperasim.sim.arena.DistanceField;
 import org.kheperasim.sim.arena.OccupancyGrid;
 import org.kheperasim.sim.arena.RayHit;
 import org.kheperasim.sim.engine.noise.CounterNoise;
+import org.kheperasim.sim.engine.robot.ProximityProfile;
+import org.kheperasim.sim.engine.robot.Response;
 
 /**
- * The eight infrared proximity sensors: each casts five beams over the occupancy grid (the centre
- * ray and two pairs either side model the IR cone), weighs the nearest hit by the response profile
- * and the surface's reflectance, then applies the sensor's gain, offset, noise and spikes.
+ * The robot's infrared proximity sensors: each casts beams over the occupancy grid (the centre ray
+ * and a pair either side for each further angle of the robot's {@link Response}: the IR cone),
+ * weighs the nearest hit by the response along that beam and the surface's reflectance, then
+ * applies the sensor's gain, offset, noise and spikes.
  *
  * <p>Sample {@code k}'s noise is drawn at fixed indices of each sensor's own stream, so a sample's
  * value depends only on the pose, the world and {@code k}.
  */
 final class ProximitySensing {
-    private static final double[] RAY_ANGLES_DEG = {0, 12, -12, 24, -24};
-    private static final double[] RAY_WEIGHTS = {1.0, 0.85, 0.85, 0.5, 0.5};
     /** Draws per sample in each sensor's stream: the Gaussian, the spike test, the spike value. */
     private static final int DRAWS = 4;
 
@@ -24,20 +24,27 @@ final class ProximitySensing {
     private final DistanceField field;
     private final Caps caps;
     private final SensorPlacement placement;
-    private final ProximityProfile profile;
+    /** How many sensors the robot has. */
+    private final int count;
+    /** Each beam's response along it, and its weight: the axis first, then each pair. */
+    private final ProximityProfile[] rayProfile;
+    private final double[] rayWeight;
     private final double range;
+    /** No sensor sits farther than this from the robot's centre, mm. */
+    private final double reach;
+    private final int maxReading;
     /**
      * Every beam of a sensor lies in the disc of this radius whose centre is this far ahead of the
      * sensor (the circle through the sensor and the outermost beams' ends), mm.
      */
     private final double coneMid;
-    private final double[] rayCos = new double[RAY_ANGLES_DEG.length];
-    private final double[] raySin = new double[RAY_ANGLES_DEG.length];
+    private final double[] rayCos;
+    private final double[] raySin;
     private final double[] reflectance;
     private final double maxReflectance;
     private final double[] gain;
     private final double[] offset;
-    private final double[] noiseScale = new double[IrSensor.COUNT];
+    private final double[] noiseScale;
     private final boolean[] dead;
     private final double noiseAbs;
     private final double noiseRel;
@@ -47,11 +54,11 @@ final class ProximitySensing {
     /** The other robots a sample may see: their bodies reflect the beams too. */
     private final RobotsInReach robots;
     /**
-     * The last proofs that the field leaves a disc empty, for the robot's centre ({@code [COUNT]})
+     * The last proofs that the field leaves a disc empty, for the robot's centre ({@code [count]})
      * and each sensor's cone: a disc whose centre has moved less than the proof's slack is still
      * empty, without a lookup.
      */
-    private final ClearanceProof[] proven = new ClearanceProof[IrSensor.COUNT + 1];
+    private final ClearanceProof[] proven;
 
     /**
      * False only in the test that checks the shortcuts: every beam of every sample is then marched
@@ -62,7 +69,7 @@ final class ProximitySensing {
     /** The robot's gripper, whose lowered arm some settings put in front of sensors; null: never. */
     private GripperModel arm;
     /** The sensors that read as touching the lowered arm ({@code gripper.armInView}). */
-    private final boolean[] armBlinds = new boolean[IrSensor.COUNT];
+    private final boolean[] armBlinds;
 
     /**
      * How far a cap's cells on the grid reach beyond its disc (mm): a cell is the cap's when its
@@ -86,22 +93,39 @@ final class ProximitySensing {
         this.placement = placement;
         RobotModel.Proximity p = model.proximity();
         double reading = model.noise().reading();
-        this.profile = p.profile();
-        this.range = profile.rangeMm();
-        this.robots = new RobotsInReach(world.bodies(), self, SensorPlacement.REACH_MM + range + Khepera.BODY_RADIUS_MM);
+        Response response = p.profile();
+        this.count = placement.count;
+        this.reach = placement.reachMm;
+        this.maxReading = model.type().proximity().maxReading();
+        this.range = response.rangeMm();
+        this.robots = new RobotsInReach(world.bodies(), self, reach + range);
+        this.proven = new ClearanceProof[count + 1];
         for (int k = 0; k < proven.length; k++) {
             proven[k] = new ClearanceProof();
         }
-        this.coneMid = range / (2 * StrictMath.cos(StrictMath.toRadians(RAY_ANGLES_DEG[RAY_ANGLES_DEG.length - 1])));
-        for (int r = 0; r < RAY_ANGLES_DEG.length; r++) {
-            rayCos[r] = StrictMath.cos(StrictMath.toRadians(RAY_ANGLES_DEG[r]));
-            raySin[r] = StrictMath.sin(StrictMath.toRadians(RAY_ANGLES_DEG[r]));
+        double[] angles = response.anglesDeg();
+        int rays = 2 * angles.length - 1;
+        rayCos = new double[rays];
+        raySin = new double[rays];
+        rayProfile = new ProximityProfile[rays];
+        rayWeight = new double[rays];
+        // The axis, then +a and -a for each further angle a: for the Khepera 0, 12, -12, 24, -24.
+        for (int r = 0; r < rays; r++) {
+            int j = (r + 1) / 2;
+            double deg = r == 0 ? 0 : r % 2 == 1 ? angles[j] : -angles[j];
+            rayCos[r] = StrictMath.cos(StrictMath.toRadians(deg));
+            raySin[r] = StrictMath.sin(StrictMath.toRadians(deg));
+            rayProfile[r] = response.along(j);
+            rayWeight[r] = response.weight(j);
         }
+        this.coneMid = range / (2 * StrictMath.cos(StrictMath.toRadians(angles[angles.length - 1])));
+        this.noiseScale = new double[count];
+        this.armBlinds = new boolean[count];
         this.reflectance = p.reflectance();
         this.maxReflectance = StrictMath.max(StrictMath.max(reflectance[1], reflectance[4]), StrictMath.max(reflectance[2], reflectance[3]));
         this.gain = calibration.proxGain;
         this.offset = calibration.proxOffset;
-        for (int i = 0; i < IrSensor.COUNT; i++) {
+        for (int i = 0; i < count; i++) {
             noiseScale[i] = p.noiseScale()[i] * reading;
         }
         this.dead = p.dead();
@@ -137,13 +161,13 @@ final class ProximitySensing {
     boolean open(double robotX, double robotY) {
         // Caps are not in the distance field: bound the beams' empty stretch by the nearest cap too.
         capFree = caps.count() == 0 ? Double.POSITIVE_INFINITY
-                : caps.nearestSurface(robotX, robotY) - CAP_CELLS_MM - SensorPlacement.REACH_MM;
+                : caps.nearestSurface(robotX, robotY) - CAP_CELLS_MM - reach;
         robots.gather(robotX, robotY);
         // Only walls and lamps within any beam's reach: the distance field alone can prove a beam empty.
         boolean wallsOnly = capFree >= range && robots.count() == 0;
         // Nothing within range of any sensor: every beam is empty (no sensor is farther than
-        // REACH_MM from the centre, and the field's lower bound of the clearance is exceeded).
-        return wallsOnly && discEmpty(IrSensor.COUNT, robotX, robotY, SensorPlacement.REACH_MM + range);
+        // reach from the centre, and the field's lower bound of the clearance is exceeded).
+        return wallsOnly && discEmpty(count, robotX, robotY, reach + range);
     }
 
     /**
@@ -180,7 +204,7 @@ final class ProximitySensing {
 
     /** The readings of a sample where {@link #open} found nothing in reach: no beam response, only noise. */
     void sampleOpen(long sample, int[] out) {
-        for (int i = 0; i < IrSensor.COUNT; i++) {
+        for (int i = 0; i < count; i++) {
             out[i] = reading(i, 0, sample);
         }
     }
@@ -192,7 +216,7 @@ final class ProximitySensing {
         // lamps and caps (the other robots, not in the grid, are looked at on their own).
         boolean noCaps = capFree >= range && shortcuts;
         placement.place(robotX, robotY, c, s);
-        for (int i = 0; i < IrSensor.COUNT; i++) {
+        for (int i = 0; i < count; i++) {
             double px = placement.x[i];
             double py = placement.y[i];
             double dx = placement.dx[i];
@@ -234,10 +258,10 @@ final class ProximitySensing {
     void armInView(GripperModel gripper, String mode) {
         switch (mode) {
             case "front" -> {
-                armBlinds[2] = true;
-                armBlinds[3] = true;
+                armBlinds[StrictMath.min(2, count - 1)] = true;
+                armBlinds[StrictMath.min(3, count - 1)] = true;
             }
-            case "wsu" -> java.util.Arrays.fill(armBlinds, 0, 6, true);
+            case "wsu" -> java.util.Arrays.fill(armBlinds, 0, StrictMath.min(6, count), true);
             default -> {
                 return;
             }
@@ -248,7 +272,7 @@ final class ProximitySensing {
     /** Sensor i's reading for a beam response {@code raw}: gain, offset, noise and spikes. */
     private int reading(int i, double raw, long sample) {
         if (arm != null && armBlinds[i] && arm.armLow()) {
-            raw = StrictMath.max(raw, reflectance[OccupancyGrid.WALL] * profile.valueAt(0));
+            raw = StrictMath.max(raw, reflectance[OccupancyGrid.WALL] * rayProfile[0].valueAt(0));
         }
         double value = raw * gain[i] + offset[i];
         if (noiseScale[i] > 0) {
@@ -259,7 +283,7 @@ final class ProximitySensing {
                 value = n.uniform(k + 2) * 1023;
             }
         }
-        return dead[i] ? 0 : SensorPlacement.reading(value);
+        return dead[i] ? 0 : maxReading == 1023 ? SensorPlacement.reading(value) : SensorPlacement.reading(value, maxReading);
     }
 
     /**
@@ -273,7 +297,7 @@ final class ProximitySensing {
         for (int r = 0; r < rayCos.length; r++) {
             // A hit beyond `reach` could not beat the strongest response so far: march no farther.
             double reach = raw == 0 || !shortcuts ? range
-                    : profile.distanceBeyondWhichAtMost(raw / (RAY_WEIGHTS[r] * maxReflectance)) + 1e-9;
+                    : rayProfile[r].distanceBeyondWhichAtMost(raw / (rayWeight[r] * maxReflectance)) + 1e-9;
             if (reach <= skip) {
                 continue;
             }
@@ -303,7 +327,7 @@ final class ProximitySensing {
                 }
             }
             if (d != Double.POSITIVE_INFINITY) {
-                double v = RAY_WEIGHTS[r] * reflect * profile.valueAt(d);
+                double v = rayWeight[r] * reflect * rayProfile[r].valueAt(d);
                 if (v > raw) {
                     raw = v;
                 }

@@ -1,6 +1,5 @@
 package org.kheperasim.sim.engine;
 
-import org.kheperasim.api.IrSensor;
 import org.kheperasim.link.timing.LinkTiming;
 import org.kheperasim.link.timing.PollStep;
 
@@ -63,6 +62,8 @@ final class RobotLink {
     }
 
     private final LinkTiming timing;
+    /** How many sensor values a proximity or light reply carries. */
+    private final int sensors;
     private final Robot robot;
     private final CommandQueue commands = new CommandQueue();
     private long lineFreeAt;
@@ -92,7 +93,8 @@ final class RobotLink {
     private final long[] commandNanos = new long[CYCLE.length];
     private final long[] lineNanos = new long[64];
 
-    RobotLink(LinkTiming timing, Robot robot) {
+    RobotLink(LinkTiming timing, Robot robot, int sensors) {
+        this.sensors = sensors;
         this.timing = timing;
         this.robot = robot;
         for (int k = 0; k < CYCLE.length; k++) {
@@ -102,7 +104,7 @@ final class RobotLink {
             lineNanos[n] = timing.wireNanos(n);
         }
         for (int k = 0; k < CYCLE.length; k++) {
-            int n = CYCLE[k] == PollStep.ENCODERS ? 2 : IrSensor.COUNT;
+            int n = CYCLE[k] == PollStep.ENCODERS ? 2 : sensors;
             sampled[k] = new int[n];
             visible[k] = new int[n];
             sampledKey[k] = -1;
@@ -265,7 +267,7 @@ final class RobotLink {
                 proximityReplies++;
             } else if (k == LIGHT) {
                 sampledKey[k] = robot.pollLight(now, values);
-                chars = sampledKey[k] >= 0 ? 1 + IrSensor.COUNT + 2 + robot.deferredLightChars() : readingsReplyChars(values);
+                chars = sampledKey[k] >= 0 ? 1 + sensors + 2 + robot.deferredLightChars() : readingsReplyChars(values);
             } else {
                 take(CYCLE[k], now, values);
                 chars = LinkTiming.replyChars(CYCLE[k], values);
@@ -366,8 +368,8 @@ final class RobotLink {
 
     /** Copy the values the controller sees at {@code now} into a snapshot's arrays. */
     void copyVisible(long now, int[] prox, int[] light) {
-        System.arraycopy(seen(PROXIMITY, now), 0, prox, 0, IrSensor.COUNT);
-        System.arraycopy(seen(LIGHT, now), 0, light, 0, IrSensor.COUNT);
+        System.arraycopy(seen(PROXIMITY, now), 0, prox, 0, sensors);
+        System.arraycopy(seen(LIGHT, now), 0, light, 0, sensors);
     }
 
     /** @return the proximity replies taken so far (one per poll cycle) */

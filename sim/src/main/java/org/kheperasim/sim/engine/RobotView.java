@@ -1,6 +1,8 @@
 package org.kheperasim.sim.engine;
 
 import java.util.Arrays;
+import org.kheperasim.sim.engine.robot.RobotType;
+import org.kheperasim.sim.engine.robot.RobotTypes;
 
 /**
  * An immutable picture of one robot at one instant.
@@ -23,15 +25,24 @@ import java.util.Arrays;
  * @param gripper the gripper turret's state
  * @param leds the robot's two LEDs as set by the protocol's {@code L} command: bit 0 the lateral LED,
  *     bit 1 the front LED, 1 = on (always 0 in a run with a controller: the api has no LEDs)
+ * @param type the robot's type: what the window draws (body, sensors) and the trace names
  */
 public record RobotView(int id, String name, double x, double y, double headingDeg, int speedLeft, int speedRight,
         int encoderLeft, int encoderRight, Contact contact, int[] proximity, int[] light, int collisions,
-        double distanceMm, String controller, GripperView gripper, int leds) {
+        double distanceMm, String controller, GripperView gripper, int leds, RobotType type) {
 
     /** Copies the arrays, so the view cannot change. */
     public RobotView {
         proximity = proximity.clone();
         light = light.clone();
+    }
+
+    /** A view of a {@link RobotTypes#KHEPERA1}. */
+    public RobotView(int id, String name, double x, double y, double headingDeg, int speedLeft, int speedRight,
+            int encoderLeft, int encoderRight, Contact contact, int[] proximity, int[] light, int collisions,
+            double distanceMm, String controller, GripperView gripper, int leds) {
+        this(id, name, x, y, headingDeg, speedLeft, speedRight, encoderLeft, encoderRight, contact, proximity, light,
+                collisions, distanceMm, controller, gripper, leds, RobotTypes.KHEPERA1);
     }
 
     /** @param led 0 lateral, 1 front @return true when that LED is on */
@@ -51,12 +62,17 @@ public record RobotView(int id, String name, double x, double y, double headingD
         return light.clone();
     }
 
-    /** @param i sensor index 0..7 @return its proximity value */
+    /** @return how many sensors the robot has */
+    public int sensorCount() {
+        return proximity.length;
+    }
+
+    /** @param i sensor index, 0 to {@link #sensorCount()} - 1 @return its proximity value */
     public int proximity(int i) {
         return proximity[i];
     }
 
-    /** @param i sensor index 0..7 @return its light value */
+    /** @param i sensor index, 0 to {@link #sensorCount()} - 1 @return its light value */
     public int light(int i) {
         return light[i];
     }

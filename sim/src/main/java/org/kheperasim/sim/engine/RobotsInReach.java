@@ -10,11 +10,17 @@ import java.util.Arrays;
 final class RobotsInReach {
     private final Bodies bodies;
     private final int self;
-    /** Another robot's centre farther than this from the sampling robot's is out of every beam's reach, mm. */
-    private final double reachable;
-    /** Centres of the other robots within reach of a sample's beams, and how many. */
+    /** How far from the sampling robot's centre its beams reach, mm. */
+    private final double beamReach;
+    /**
+     * Another robot's centre farther than this from the sampling robot's is out of every beam's
+     * reach, mm: the beams' reach and the widest body ({@link #gather} sets it).
+     */
+    private double reachable;
+    /** Centres and radii of the other robots within reach of a sample's beams, and how many. */
     private double[] nearX = new double[4];
     private double[] nearY = new double[4];
+    private double[] nearR = new double[4];
     private int near;
     /** Of those, the ones whose bodies reach into the present sensor's cone (indices), and how many. */
     private int[] cone = new int[4];
@@ -31,12 +37,12 @@ final class RobotsInReach {
     /**
      * @param bodies every robot's body
      * @param self the sampling robot
-     * @param reachable how far from its centre another robot's centre may be for a beam to reach its body, mm
+     * @param beamReach how far from its centre a beam reaches, mm
      */
-    RobotsInReach(Bodies bodies, int self, double reachable) {
+    RobotsInReach(Bodies bodies, int self, double beamReach) {
         this.bodies = bodies;
         this.self = self;
-        this.reachable = reachable;
+        this.beamReach = beamReach;
     }
 
     /**
@@ -58,6 +64,7 @@ final class RobotsInReach {
         }
         gatherX = robotX;
         gatherY = robotY;
+        reachable = beamReach + bodies.maxRadius();
         if (scope == null) {
             bodies.visit(self, robotX, robotY, reachable, gather);
             return;
@@ -80,9 +87,11 @@ final class RobotsInReach {
         if (near == nearX.length) {
             nearX = Arrays.copyOf(nearX, near * 2);
             nearY = Arrays.copyOf(nearY, near * 2);
+            nearR = Arrays.copyOf(nearR, near * 2);
         }
         nearX[near] = gatherX + dx;
         nearY[near] = gatherY + dy;
+        nearR[near] = bodies.radius(k);
         near++;
     }
 
@@ -93,8 +102,8 @@ final class RobotsInReach {
      */
     void inCone(double x, double y, double radius) {
         inCone = 0;
-        double clear = radius + Khepera.BODY_RADIUS_MM + 1e-6;
         for (int k = 0; k < near; k++) {
+            double clear = radius + nearR[k] + 1e-6;
             double ex = nearX[k] - x;
             double ey = nearY[k] - y;
             if (ex * ex + ey * ey <= clear * clear) {
@@ -117,7 +126,7 @@ final class RobotsInReach {
         for (int k = 0; k < near; k++) {
             double ex = nearX[k] - px;
             double ey = nearY[k] - py;
-            best = StrictMath.min(best, StrictMath.sqrt(ex * ex + ey * ey) - Khepera.BODY_RADIUS_MM);
+            best = StrictMath.min(best, StrictMath.sqrt(ex * ex + ey * ey) - nearR[k]);
         }
         return best;
     }
@@ -128,9 +137,9 @@ final class RobotsInReach {
      */
     double along(double px, double py, double rx, double ry) {
         double best = Double.POSITIVE_INFINITY;
-        double rr = Khepera.BODY_RADIUS_MM * Khepera.BODY_RADIUS_MM;
         for (int j = 0; j < inCone; j++) {
             int k = cone[j];
+            double rr = nearR[k] * nearR[k];
             double wx = nearX[k] - px;
             double wy = nearY[k] - py;
             double b = wx * rx + wy * ry;

@@ -1,6 +1,5 @@
 package org.kheperasim.sim.engine;
 
-import org.kheperasim.api.IrSensor;
 
 /**
  * The robot's own sensor scan. The Khepera's microcontroller reads its eight infrared channels,
@@ -46,13 +45,18 @@ final class Scans {
     private long index = -1;
     private final double[] pose = new double[4];
     private boolean heading;
-    private final int[] prox = new int[IrSensor.COUNT];
-    private final int[] lux = new int[IrSensor.COUNT];
+    /** How many sensors the robot has. */
+    private final int count;
+    private final int[] prox;
+    private final int[] lux;
     private boolean proxDone;
     private boolean luxDone;
     private final int[] ids = {};
 
-    Scans(SamplePose sense, ProximitySensing proximity, LightSensing light, Coverage coverage, boolean lamps) {
+    Scans(SamplePose sense, ProximitySensing proximity, LightSensing light, Coverage coverage, boolean lamps, int count) {
+        this.count = count;
+        this.prox = new int[count];
+        this.lux = new int[count];
         this.sense = sense;
         this.proximity = proximity;
         this.light = light;
@@ -152,7 +156,7 @@ final class Scans {
         if (!proxDone) {
             computeProximity(true);
         }
-        System.arraycopy(prox, 0, out, 0, IrSensor.COUNT);
+        System.arraycopy(prox, 0, out, 0, count);
     }
 
     /**
@@ -164,7 +168,7 @@ final class Scans {
         if (!luxDone) {
             computeLight();
         }
-        System.arraycopy(lux, 0, out, 0, IrSensor.COUNT);
+        System.arraycopy(lux, 0, out, 0, count);
     }
 
     /** @return sensor {@code i}'s proximity value in the latest scan at {@code now} (a program on the robot reads it) */
@@ -193,8 +197,8 @@ final class Scans {
         if (!luxDone) {
             computeLight();
         }
-        System.arraycopy(prox, 0, proxOut, 0, IrSensor.COUNT);
-        System.arraycopy(lux, 0, lightOut, 0, IrSensor.COUNT);
+        System.arraycopy(prox, 0, proxOut, 0, count);
+        System.arraycopy(lux, 0, lightOut, 0, count);
     }
 
     /**

@@ -1,27 +1,38 @@
 package org.kheperasim.sim.engine;
 
-import org.kheperasim.api.IrSensor;
+import org.kheperasim.sim.engine.robot.RobotType;
 
 /**
- * Where each of the eight sensors is in the arena, and which way it looks, for the robot's pose:
+ * Where each of the robot's sensors is in the arena, and which way it looks, for the robot's pose:
  * shared by the proximity and the light sensing.
  */
 final class SensorPlacement {
+    /** How many sensors the robot has. */
+    final int count;
     /** No sensor sits farther than this from the robot's centre, mm. */
-    static final double REACH_MM = 26.5;
+    final double reachMm;
+    private final double[] localX;
+    private final double[] localY;
+    private final double[] localCos;
+    private final double[] localSin;
+    final double[] x;
+    final double[] y;
+    final double[] dx;
+    final double[] dy;
 
-    private final double[] localX = new double[IrSensor.COUNT];
-    private final double[] localY = new double[IrSensor.COUNT];
-    private final double[] localCos = new double[IrSensor.COUNT];
-    private final double[] localSin = new double[IrSensor.COUNT];
-    final double[] x = new double[IrSensor.COUNT];
-    final double[] y = new double[IrSensor.COUNT];
-    final double[] dx = new double[IrSensor.COUNT];
-    final double[] dy = new double[IrSensor.COUNT];
-
-    SensorPlacement() {
-        for (IrSensor s : IrSensor.values()) {
-            int i = s.index();
+    SensorPlacement(RobotType type) {
+        count = type.sensorCount();
+        reachMm = type.sensorReachMm();
+        localX = new double[count];
+        localY = new double[count];
+        localCos = new double[count];
+        localSin = new double[count];
+        x = new double[count];
+        y = new double[count];
+        dx = new double[count];
+        dy = new double[count];
+        for (int i = 0; i < count; i++) {
+            RobotType.Sensor s = type.sensor(i);
             localX[i] = s.xMm();
             localY[i] = s.yMm();
             double h = StrictMath.toRadians(s.headingDeg());
@@ -32,7 +43,7 @@ final class SensorPlacement {
 
     /** Place the sensors for a robot at (px, py) heading (c, s). */
     void place(double px, double py, double c, double s) {
-        for (int i = 0; i < IrSensor.COUNT; i++) {
+        for (int i = 0; i < count; i++) {
             x[i] = px + c * localX[i] - s * localY[i];
             y[i] = py + s * localX[i] + c * localY[i];
             dx[i] = c * localCos[i] - s * localSin[i];
@@ -52,7 +63,18 @@ final class SensorPlacement {
         return (int) (v + 0.5);
     }
 
-    /** @param reading a reading, 0..1023 @return how many decimal digits a reply writes for it */
+    /** @return the reading for a model value: rounded and clamped to 0..max */
+    static int reading(double v, int max) {
+        if (v <= 0) {
+            return 0;
+        }
+        if (v >= max) {
+            return max;
+        }
+        return (int) (v + 0.5);
+    }
+
+    /** @param reading a reading, 0..9999 @return how many decimal digits a reply writes for it */
     static int digits(int reading) {
         return reading < 10 ? 1 : reading < 100 ? 2 : reading < 1000 ? 3 : 4;
     }

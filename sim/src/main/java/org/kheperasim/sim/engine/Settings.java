@@ -5,6 +5,8 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.SortedMap;
 import java.util.TreeMap;
+import org.kheperasim.sim.engine.robot.Response;
+import org.kheperasim.sim.engine.robot.RobotTypes;
 
 /**
  * The simulation's settings: link speed, the time model, and every sensor's and motor's gain,
@@ -15,6 +17,8 @@ import java.util.TreeMap;
  * {@code khepera-sim settings} to list them all with their defaults and meanings.
  */
 public final class Settings {
+    /** How many sensors the per-sensor settings ({@code prox.3.gain}) name: 0..7. */
+    public static final int PER_SENSOR = 8;
 
     private enum Kind { NUMBER, FLAG, PROFILE, STEPPING, CHOICE }
 
@@ -51,7 +55,7 @@ public final class Settings {
         num("light.flickerRate", "0.02", 0, 1, "probability that a reading in darkness deviates (the paper: 2%)");
         num("light.flickerDepth", "0.005", 0, 1, "largest relative deviation of such a reading (the paper: 0.005)");
         num("light.noiseRel", "0.01", 0, 1, "per-reading noise of the light signal, standard deviation (relative)");
-        for (int i = 0; i < 8; i++) {
+        for (int i = 0; i < PER_SENSOR; i++) {
             num("prox." + i + ".gain", "1", 0, 10, "gain of proximity sensor " + i);
             num("prox." + i + ".noise", "1", 0, 100, "noise multiplier of proximity sensor " + i);
             flag("prox." + i + ".dead", "dead proximity sensor " + i + " (reads 0)");
@@ -157,7 +161,7 @@ public final class Settings {
                     throw new IllegalArgumentException("setting " + key + "=" + value + ": must be true or false");
                 }
             }
-            case PROFILE -> ProximityProfile.named(v);
+            case PROFILE -> RobotTypes.profile(v);
             case CHOICE -> {
                 if (!CHOICES.get(key).contains(v)) {
                     throw new IllegalArgumentException("setting " + key + "=" + value + ": must be one of "
@@ -211,9 +215,9 @@ public final class Settings {
         return overrides.getOrDefault(key, def.defaultValue);
     }
 
-    /** @return the proximity response profile */
-    public ProximityProfile proximityProfile() {
-        return ProximityProfile.named(raw("prox.profile"));
+    /** @return the proximity response that {@code prox.profile} names */
+    public Response proximityProfile() {
+        return RobotTypes.profile(raw("prox.profile"));
     }
 
     /** @return the settings that differ from the defaults, sorted by key */

@@ -2,13 +2,13 @@ package org.kheperasim.sim.engine;
 
 import java.util.Map;
 import java.util.SplittableRandom;
-import org.kheperasim.api.IrSensor;
 import org.kheperasim.link.timing.LinkTiming;
 import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.engine.noise.CounterNoise;
+import org.kheperasim.sim.engine.robot.RobotType;
 
 /**
- * One simulated Khepera, assembled from the parts it models: the {@link DriveBody} on its wheels,
+ * One simulated robot of a {@link RobotType}, assembled from the parts it models: the {@link DriveBody} on its wheels,
  * the {@link ProximitySensing} and {@link LightSensing}, the {@link GripperModel} with its
  * {@link CapContacts}, the {@link RobotLink} its controller talks through (and the {@link LinkEnd}
  * where the link meets the parts), the robot's own
@@ -24,7 +24,7 @@ public final class SimRobot {
     private final Settings settings;
     private final RobotModel model;
     private final DriveBody body;
-    private final SensorPlacement placement = new SensorPlacement();
+    private final SensorPlacement placement;
     private final ProximitySensing proximity;
     private final LightSensing light;
     private final GripperModel gripper;
@@ -62,37 +62,39 @@ public final class SimRobot {
      * @param world the world it lives in
      * @param start its start pose
      * @param settings sensor, motor and link settings
+     * @param type the robot's type: body, wheels, sensors
      * @param random this robot's own random stream (split from the run's seed): each noise source's
      *     key is drawn from it in a fixed order, so adding a source at the end shifts no other
      */
-    SimRobot(int id, String name, World world, Pose start, Settings settings, SplittableRandom random) {
+    SimRobot(int id, String name, World world, Pose start, Settings settings, RobotType type, SplittableRandom random) {
         this.id = id;
         this.name = name;
         this.world = world;
         this.settings = settings;
-        this.model = RobotModel.of(settings);
+        this.model = RobotModel.of(settings, type);
+        this.placement = new SensorPlacement(type);
         CounterNoise systematic = new CounterNoise(random.nextLong());
-        CounterNoise[] proxNoise = streams(random);
-        CounterNoise[] lightNoise = streams(random);
+        CounterNoise[] proxNoise = streams(random, type.sensorCount());
+        CounterNoise[] lightNoise = streams(random, type.sensorCount());
         CounterNoise motorLeft = new CounterNoise(random.nextLong());
         CounterNoise motorRight = new CounterNoise(random.nextLong());
         Miscalibration calibration = new Miscalibration(model, systematic);
-        this.body = new DriveBody(world, id, start.x(), start.y(), start.headingDeg(), model.motors(),
+        this.body = new DriveBody(world, id, start.x(), start.y(), start.headingDeg(), type, model.motors(),
                 model.noise().reading(), calibration.calibrationLeft, calibration.calibrationRight, motorLeft, motorRight);
         this.sense = new SamplePose(body);
         this.proximity = new ProximitySensing(world, id, placement, model, calibration, proxNoise);
         this.light = new LightSensing(world, placement, model, calibration, lightNoise);
         this.gripper = new GripperModel(id, world, body, model.gripper());
         proximity.armInView(gripper, settings.raw("gripper.armInView"));
-        this.capContacts = new CapContacts(world.capSet(), gripper, id);
+        this.capContacts = new CapContacts(world.capSet(), gripper, id, body.radius());
         this.gripperPort = new GripperPort(gripper);
-        this.onBoard = new OnBoardControl(this, body, gripper);
-        this.coverage = new Coverage(world, start.x(), start.y());
-        this.unseenMm = SensorPlacement.REACH_MM + model.proximity().profile().rangeMm() + 1;
+        this.onBoard = new OnBoardControl(this, body, gripper, type.drive());
+        this.coverage = new Coverage(world, start.x(), start.y(), body.radius());
+        this.unseenMm = placement.reachMm + model.proximity().profile().rangeMm() + 1;
         this.glides = new Glides(model, body, gripper, capContacts, coverage);
-        this.scans = new Scans(sense, proximity, light, coverage, !world.arena().lights().isEmpty());
+        this.scans = new Scans(sense, proximity, light, coverage, !world.arena().lights().isEmpty(), type.sensorCount());
         this.end = new LinkEnd(body, sense, gripper, light, scans);
-        this.link = new RobotLink(model.link().timing(), end);
+        this.link = new RobotLink(model.link().timing(), end, type.sensorCount());
         this.controls = new ControllerLink(this, link);
         // The turret's stream is drawn last, so that it shifts none of the others.
         this.camera = new LinearCamera(world, id, body, VisionModel.of(settings), new CounterNoise(random.nextLong()));
@@ -102,8 +104,8 @@ public final class SimRobot {
         link.prime();
     }
 
-    private static CounterNoise[] streams(SplittableRandom random) {
-        CounterNoise[] out = new CounterNoise[IrSensor.COUNT];
+    private static CounterNoise[] streams(SplittableRandom random, int count) {
+        CounterNoise[] out = new CounterNoise[count];
         for (int i = 0; i < out.length; i++) {
             out[i] = new CounterNoise(random.nextLong());
         }
@@ -245,6 +247,16 @@ public final class SimRobot {
     /** @return another robot's surface farther than this from the centre is out of every sensor's reach, mm */
     double unseenMm() {
         return unseenMm;
+    }
+
+    /** @return the body's radius, mm */
+    double radiusMm() {
+        return body.radius();
+    }
+
+    /** @return the robot's type: its body, wheels and sensors */
+    public RobotType type() {
+        return model.type();
     }
 
 

@@ -1,15 +1,19 @@
 package org.kheperasim.sim.engine;
 
 import org.kheperasim.sim.engine.noise.CounterNoise;
+import org.kheperasim.sim.engine.robot.RobotType;
 
 /**
  * The two wheels' speeds: the commanded speeds (units), and the speeds they really turn at (mm/s),
- * with each wheel's calibration and its speed noise, redrawn every {@link
- * Khepera#MOTOR_NOISE_PERIOD_NANOS}.
+ * with each wheel's calibration and its speed noise, redrawn every noise period of the robot's
+ * drive ({@link RobotType.Drive#noisePeriodNanos}).
  */
 final class Wheels {
     private static final double TICK_S = Engine.TICK_NANOS / 1e9;
 
+    /** Wheel speed of one speed unit, mm/s, and the noise period, ns: the robot type's. */
+    private final double mmPerUnit;
+    private final long noisePeriod;
     private final double calibrationLeft;
     private final double calibrationRight;
     private final double noiseSigmaLeft;
@@ -25,8 +29,10 @@ final class Wheels {
     private double left;
     private double right;
 
-    Wheels(RobotModel.Motors motors, double readingNoise, double calibrationLeft, double calibrationRight,
-            CounterNoise noiseLeft, CounterNoise noiseRight) {
+    Wheels(RobotType.Drive drive, RobotModel.Motors motors, double readingNoise, double calibrationLeft,
+            double calibrationRight, CounterNoise noiseLeft, CounterNoise noiseRight) {
+        this.mmPerUnit = drive.mmPerSecondPerUnit();
+        this.noisePeriod = drive.noisePeriodNanos();
         this.calibrationLeft = calibrationLeft;
         this.calibrationRight = calibrationRight;
         this.noiseSigmaLeft = motors.noiseLeft() * readingNoise;
@@ -45,8 +51,8 @@ final class Wheels {
     /** Redraw the wheels' speed noise when its period has come round; returns when it is next due, ns. */
     long noiseDue(long now) {
         if (now >= nextNoiseNanos) {
-            long period = now / Khepera.MOTOR_NOISE_PERIOD_NANOS;
-            nextNoiseNanos = (period + 1) * Khepera.MOTOR_NOISE_PERIOD_NANOS;
+            long period = now / noisePeriod;
+            nextNoiseNanos = (period + 1) * noisePeriod;
             if (noiseSigmaLeft > 0 || noiseSigmaRight > 0) {
                 noiseFactorLeft = 1 + noiseSigmaLeft * noiseLeft.gaussian(period);
                 noiseFactorRight = 1 + noiseSigmaRight * noiseRight.gaussian(period);
@@ -57,8 +63,8 @@ final class Wheels {
     }
 
     private void refresh() {
-        left = speedLeft * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationLeft * noiseFactorLeft;
-        right = speedRight * Khepera.MM_PER_S_PER_SPEED_UNIT * calibrationRight * noiseFactorRight;
+        left = speedLeft * mmPerUnit * calibrationLeft * noiseFactorLeft;
+        right = speedRight * mmPerUnit * calibrationRight * noiseFactorRight;
     }
 
     /** @return true when both wheels stand still */

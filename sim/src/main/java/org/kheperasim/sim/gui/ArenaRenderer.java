@@ -1,5 +1,6 @@
 package org.kheperasim.sim.gui;
 
+import org.kheperasim.sim.engine.robot.RobotType;
 import org.kheperasim.sim.edit.EditorModel;
 import org.kheperasim.sim.edit.Item;
 import org.kheperasim.sim.edit.ItemHits;
@@ -20,7 +21,6 @@ import java.awt.geom.Rectangle2D;
 import java.util.List;
 import java.util.Set;
 import org.kheperasim.api.GripperState;
-import org.kheperasim.api.IrSensor;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.Cap;
 import org.kheperasim.sim.arena.Light;
@@ -196,14 +196,14 @@ public final class ArenaRenderer {
         for (int i = 0; i < arena.robots().size(); i++) {
             Pose p = arena.robots().get(i);
             if (!live) {
-                drawRobot(g, view, p.x(), p.y(), p.headingDeg(), null, null, false, 0);
+                drawRobot(g, view, arena.robotType(i), p.x(), p.y(), p.headingDeg(), null, null, false, 0);
             } else if (options.startPoses()) {
-                drawStartGhost(g, view, p);
+                drawStartGhost(g, view, p, arena.robotType(i).body().radiusMm());
             }
         }
         if (live) {
             for (RobotView r : snapshot.robots()) {
-                drawRobot(g, view, r.x(), r.y(), r.headingDeg(), r.gripper(), options.beams() ? r.proximity() : null, true,
+                drawRobot(g, view, r.type(), r.x(), r.y(), r.headingDeg(), r.gripper(), options.beams() ? r.proximity() : null, true,
                         r.leds());
             }
         }
@@ -260,25 +260,27 @@ public final class ArenaRenderer {
         g.draw(c);
     }
 
-    private static void drawStartGhost(Graphics2D g, ViewTransform view, Pose p) {
+    private static void drawStartGhost(Graphics2D g, ViewTransform view, Pose p, double radius) {
         g.setColor(new Color(0x802E8B57, true));
         g.setStroke(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {3f, 3f}, 0f));
-        g.draw(circle(view, p.x(), p.y(), Arena.ROBOT_RADIUS_MM));
+        g.draw(circle(view, p.x(), p.y(), radius));
     }
 
     /** Draws a robot: body, wheels, heading, gripper turret, its two LEDs (bit 0, bit 1 of {@code leds}), optional beams. */
-    static void drawRobot(Graphics2D g, ViewTransform view, double x, double y, double headingDeg, GripperView gripper,
-            int[] beams, boolean live, int leds) {
-        double r = Arena.ROBOT_RADIUS_MM;
+    static void drawRobot(Graphics2D g, ViewTransform view, RobotType type, double x, double y, double headingDeg,
+            GripperView gripper, int[] beams, boolean live, int leds) {
+        double r = type.body().radiusMm();
         double h = StrictMath.toRadians(headingDeg);
         double cos = StrictMath.cos(h);
         double sin = StrictMath.sin(h);
         if (beams != null) {
-            for (IrSensor s : IrSensor.values()) {
+            int max = type.proximity().maxReading();
+            for (int i = 0; i < type.sensorCount() && i < beams.length; i++) {
+                RobotType.Sensor s = type.sensor(i);
                 double sx = x + s.xMm() * cos - s.yMm() * sin;
                 double sy = y + s.xMm() * sin + s.yMm() * cos;
                 double a = h + StrictMath.toRadians(s.headingDeg());
-                double v = StrictMath.min(1023, StrictMath.max(0, beams[s.index()])) / 1023.0;
+                double v = StrictMath.min(max, StrictMath.max(0, beams[i])) / (double) max;
                 double len = 50;
                 g.setColor(new Color(1f, 0.1f, 0.1f, (float) (0.15 + 0.7 * v)));
                 g.setStroke(new BasicStroke((float) StrictMath.max(1, view.len(2))));
@@ -289,8 +291,9 @@ public final class ArenaRenderer {
         g.setColor(new Color(0x202020));
         g.setStroke(new BasicStroke((float) StrictMath.max(1, view.len(6)), BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER));
         for (int side = -1; side <= 1; side += 2) {
-            double wx = x - side * 24 * sin;
-            double wy = y + side * 24 * cos;
+            // Drawn just inside the body's edge (the Khepera's: 24 mm from the centre).
+            double wx = x - side * (r - 3.5) * sin;
+            double wy = y + side * (r - 3.5) * cos;
             g.draw(new Line2D.Double(view.sx(wx - 10 * cos), view.sy(wy - 10 * sin), view.sx(wx + 10 * cos), view.sy(wy + 10 * sin)));
         }
         Ellipse2D body = circle(view, x, y, r);
@@ -348,7 +351,7 @@ public final class ArenaRenderer {
             switch (it.kind()) {
                 case ROBOT -> {
                     Pose p = arena.robots().get(it.index());
-                    g.draw(circle(view, p.x(), p.y(), Arena.ROBOT_RADIUS_MM + 4));
+                    g.draw(circle(view, p.x(), p.y(), arena.robotType(it.index()).body().radiusMm() + 4));
                     double hx = p.x() + HEADING_HANDLE_MM * StrictMath.cos(StrictMath.toRadians(p.headingDeg()));
                     double hy = p.y() + HEADING_HANDLE_MM * StrictMath.sin(StrictMath.toRadians(p.headingDeg()));
                     g.draw(new Line2D.Double(view.sx(p.x()), view.sy(p.y()), view.sx(hx), view.sy(hy)));

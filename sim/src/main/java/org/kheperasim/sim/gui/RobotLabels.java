@@ -5,7 +5,6 @@ import java.awt.Color;
 import java.awt.Font;
 import java.awt.Graphics2D;
 import java.awt.geom.Ellipse2D;
-import org.kheperasim.sim.engine.Khepera;
 import org.kheperasim.sim.engine.RobotView;
 import org.kheperasim.sim.engine.Snapshot;
 
@@ -25,7 +24,7 @@ final class RobotLabels {
         }
         g.setFont(g.getFont().deriveFont(Font.BOLD, 11f));
         for (RobotView r : snapshot.robots()) {
-            double radius = view.len(Khepera.BODY_RADIUS_MM);
+            double radius = view.len(r.type().body().radiusMm());
             if (r.id() == selected) {
                 g.setColor(new Color(0x1E6FFF));
                 g.setStroke(new BasicStroke(2.5f));

@@ -2,7 +2,6 @@ package org.kheperasim.sim.gui;
 
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
-import org.kheperasim.sim.engine.Khepera;
 import org.kheperasim.sim.engine.RobotView;
 import org.kheperasim.sim.engine.Snapshot;
 
@@ -47,7 +46,7 @@ final class RobotSelection {
             return -1;
         }
         for (RobotView r : s.robots()) {
-            if (StrictMath.hypot(r.x() - x, r.y() - y) <= Khepera.BODY_RADIUS_MM) {
+            if (StrictMath.hypot(r.x() - x, r.y() - y) <= r.type().body().radiusMm()) {
                 return r.id();
             }
         }
@@ -58,7 +57,7 @@ final class RobotSelection {
     static int startAt(org.kheperasim.sim.arena.Arena arena, double x, double y) {
         for (int i = 0; i < arena.robots().size(); i++) {
             org.kheperasim.sim.arena.Pose p = arena.robots().get(i);
-            if (StrictMath.hypot(p.x() - x, p.y() - y) <= Khepera.BODY_RADIUS_MM) {
+            if (StrictMath.hypot(p.x() - x, p.y() - y) <= arena.robotType(i).body().radiusMm()) {
                 return i;
             }
         }

@@ -4,7 +4,7 @@ import java.util.List;
 import org.kheperasim.api.GripperState;
 import org.kheperasim.sim.engine.Contact;
 import org.kheperasim.sim.engine.GripperTurret;
-import org.kheperasim.sim.engine.Khepera;
+import org.kheperasim.sim.engine.robot.RobotTypes;
 import org.kheperasim.sim.trace.TraceFormatException;
 
 /**
@@ -18,7 +18,6 @@ final class LinkRecordingReader {
     static final String MAGIC = "# khepera-link recording";
     private static final int COLUMNS = 21;
     /** Wheel travel per pulse, mm: the default of the setting {@code encoder.mmPerPulse}. */
-    private static final double MM_PER_PULSE = 0.08;
 
     private LinkRecordingReader() {
     }
@@ -67,9 +66,9 @@ final class LinkRecordingReader {
                 ch[RobotSeries.SPEED] = Integer.parseInt(f[19]);
                 ch[RobotSeries.SPEED + 1] = Integer.parseInt(f[20]);
                 if (!first) {
-                    double dl = (posL - prevL) * MM_PER_PULSE;
-                    double dr = (posR - prevR) * MM_PER_PULSE;
-                    double turn = (dr - dl) / Khepera.WHEEL_BASE_MM;
+                    double dl = (posL - prevL) * RobotTypes.KHEPERA1.drive().mmPerPulse();
+                    double dr = (posR - prevR) * RobotTypes.KHEPERA1.drive().mmPerPulse();
+                    double turn = (dr - dl) / RobotTypes.KHEPERA1.drive().wheelBaseMm();
                     double mid = heading + turn / 2;
                     x += (dl + dr) / 2 * StrictMath.cos(mid);
                     y += (dl + dr) / 2 * StrictMath.sin(mid);

@@ -1,8 +1,9 @@
 package org.kheperasim.sim.web;
 
+import org.kheperasim.sim.engine.robot.RobotType;
+import org.kheperasim.sim.engine.robot.RobotTypes;
 import java.util.List;
 import org.kheperasim.api.GripperState;
-import org.kheperasim.api.IrSensor;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.Cap;
 import org.kheperasim.sim.arena.Light;
@@ -47,7 +48,17 @@ final class PageModel {
                 .put("robotsInRun", tape.robotsInRun()).put("capMoves", tape.caps().size());
         j.array("robots");
         for (int i = 0; i < robots.size(); i++) {
-            j.begin().put("name", robots.get(i).name).put("n", packed.kept()[i]).put("sensors", robots.get(i).sensors != null).end();
+            j.begin().put("name", robots.get(i).name).put("n", packed.kept()[i]).put("sensors", robots.get(i).sensors != null);
+            RobotType type = robots.get(i).type;
+            if (!type.equals(RobotTypes.KHEPERA1)) {
+                // Another robot than the model's: its own body and sensors (a Khepera's page is as it was).
+                j.put("radius", type.body().radiusMm()).array("mounts");
+                for (RobotType.Sensor s : type.sensors()) {
+                    j.array().value(s.xMm()).value(s.yMm()).value(s.headingDeg()).endArray();
+                }
+                j.endArray();
+            }
+            j.end();
         }
         j.endArray();
         j.array("arenas");
@@ -121,10 +132,10 @@ final class PageModel {
 
     /** What the drawing needs of the robot: the same numbers the simulator uses, not copies in the page. */
     private static void model(PageJson j) {
-        j.begin("model").put("robotRadius", Arena.ROBOT_RADIUS_MM).put("armUp", GripperTurret.ARM_UP)
+        j.begin("model").put("robotRadius", RobotTypes.KHEPERA1.body().radiusMm()).put("armUp", GripperTurret.ARM_UP)
                 .put("armDown", GripperTurret.ARM_DOWN).put("capRadius", Cap.DEFAULT_RADIUS);
         j.array("sensors");
-        for (IrSensor s : IrSensor.values()) {
+        for (RobotType.Sensor s : RobotTypes.KHEPERA1.sensors()) {
             j.array().value(s.xMm()).value(s.yMm()).value(s.headingDeg()).endArray();
         }
         j.endArray().array("contacts");

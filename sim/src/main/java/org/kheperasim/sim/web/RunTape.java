@@ -56,6 +56,9 @@ final class RunTape {
         long failedMs = -1;
         String failedStatus;
 
+        /** The robot's type: what the page draws. */
+        org.kheperasim.sim.engine.robot.RobotType type = org.kheperasim.sim.engine.robot.RobotTypes.KHEPERA1;
+
         Track(String name, boolean keepSensors) {
             this.name = name;
             sensors = keepSensors ? new IntList[16] : null;
@@ -91,9 +94,11 @@ final class RunTape {
             object.add(g.objectPresent() ? 1 : 0);
             held.add(g.heldCap() + 1);
             if (sensors != null) {
+                // Eight columns whatever the robot, as in a trace: 0 for a sensor it does not have.
+                int n = r.sensorCount();
                 for (int i = 0; i < 8; i++) {
-                    sensors[i].add(r.proximity(i));
-                    sensors[8 + i].add(r.light(i));
+                    sensors[i].add(i < n ? r.proximity(i) : 0);
+                    sensors[8 + i].add(i < n ? r.light(i) : 0);
                 }
             }
             if (failedMs < 0 && r.controller() != null) {
@@ -152,6 +157,7 @@ final class RunTape {
         for (int i = 0; i < StrictMath.min(views.size(), MAX_ROBOTS); i++) {
             if (i == robots.size()) {
                 robots.add(new Track(views.get(i).name(), i < SENSOR_ROBOTS));
+                robots.get(i).type = views.get(i).type();
             }
             robots.get(i).add(ms, views.get(i));
         }

@@ -154,7 +154,7 @@
     }
     var names = ['t', 'x', 'y', 'h', 'sl', 'sr', 'el', 'er', 'contact', 'arm', 'fingers', 'obj', 'held'];
     var robots = RUN.robots.map(function (r) {
-      var o = { name: r.name, n: r.n, sens: null, m: 0 };
+      var o = { name: r.name, n: r.n, sens: null, m: 0, radius: r.radius || M.robotRadius, mounts: r.mounts || M.sensors };
       names.forEach(function (k) { o[k] = column(r.n); });
       if (r.sensors) {
         o.m = Math.floor((r.n - 1) / RUN.sensorStride) + 1;
@@ -346,10 +346,10 @@
 
   function drawRobot(g, v, r, k, showBeams) {
     var x = r.x[k] / 10, y = r.y[k] / 10, h = r.h[k] / 10 * Math.PI / 180, cos = Math.cos(h), sin = Math.sin(h);
-    var R = M.robotRadius, side, i;
+    var R = r.radius, side, i;
     if (showBeams && r.sens) {
       var j = Math.min(r.m - 1, Math.floor(k / RUN.sensorStride));
-      M.sensors.forEach(function (s, si) {
+      r.mounts.slice(0, 8).forEach(function (s, si) {
         var sx = x + s[0] * cos - s[1] * sin, sy = y + s[0] * sin + s[1] * cos, a = h + s[2] * Math.PI / 180;
         var val = Math.min(1023, Math.max(0, r.sens[si][j])) / 1023;
         g.strokeStyle = 'rgba(255,26,26,' + (0.15 + 0.7 * val).toFixed(3) + ')';
@@ -469,7 +469,7 @@
     if (robots.length > 1) {
       g.font = 'bold 11px sans-serif';
       robots.forEach(function (r, i) {
-        var x = v.x(r.x[ks[i]] / 10), y = v.y(r.y[ks[i]] / 10), rad = v.len(M.robotRadius);
+        var x = v.x(r.x[ks[i]] / 10), y = v.y(r.y[ks[i]] / 10), rad = v.len(r.radius);
         if (i === selected) {
           g.strokeStyle = C.selection;
           g.lineWidth = 2.5;

@@ -1,5 +1,7 @@
 package org.kheperasim.sim.arena;
 
+import org.kheperasim.sim.engine.robot.RobotTypes;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.kheperasim.sim.arena.OccupancyGrid.FLOOR;
@@ -77,7 +79,7 @@ class MazeArenaTest {
     @Test
     void aWallFollowingRobotFitsEverywhereAndPassesThroughEveryCellRegion() {
         DistanceField df = DistanceField.of(grid);
-        double need = Arena.ROBOT_RADIUS_MM + FOLLOW_GAP;
+        double need = RobotTypes.KHEPERA1.body().radiusMm() + FOLLOW_GAP;
         Pose start = maze.robots().get(0);
         assertTrue(df.clearance(start.x(), start.y()) > need);
         int first = grid.row(start.y()) * grid.cols() + grid.col(start.x());

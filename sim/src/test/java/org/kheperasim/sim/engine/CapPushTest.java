@@ -1,5 +1,7 @@
 package org.kheperasim.sim.engine;
 
+import org.kheperasim.sim.engine.robot.RobotTypes;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -17,7 +19,7 @@ import org.kheperasim.sim.arena.Pose;
  */
 class CapPushTest {
     private static final Settings EXACT = Settings.defaults().withNoise(0);
-    private static final double TOUCH = Khepera.BODY_RADIUS_MM + 9;
+    private static final double TOUCH = RobotTypes.KHEPERA1.body().radiusMm() + 9;
 
     static Engine engine(String body, SimRobot[] out) {
         String text = "khepera-arena 1\nname t\nsize 1219.2 1219.2\nrobot 300 600 0\n" + body;

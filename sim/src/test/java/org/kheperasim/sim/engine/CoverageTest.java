@@ -1,5 +1,7 @@
 package org.kheperasim.sim.engine;
 
+import org.kheperasim.sim.engine.robot.RobotTypes;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import org.junit.jupiter.api.Test;
@@ -19,7 +21,7 @@ class CoverageTest {
 
     @Test
     void aRobotGoingRoundTheSameLoopAgainCoversNothingMore() {
-        Coverage c = new Coverage(WORLD, 100, 100);
+        Coverage c = new Coverage(WORLD, 100, 100, RobotTypes.KHEPERA1.body().radiusMm());
         double[][] path = {{100, 100}, {500, 120}, {480, 500}, {90, 480}, {100, 100}};
         for (double[] p : path) {
             c.mark(p[0], p[1]);
@@ -55,7 +57,7 @@ class CoverageTest {
     }
 
     private static double covered(World world, double[][] path) {
-        Coverage c = new Coverage(world, path[0][0], path[0][1]);
+        Coverage c = new Coverage(world, path[0][0], path[0][1], RobotTypes.KHEPERA1.body().radiusMm());
         for (double[] p : path) {
             c.mark(p[0], p[1]);
         }
@@ -93,7 +95,7 @@ class CoverageTest {
     private static double reference(World world, double[][] path) {
         OccupancyGrid g = world.grid();
         boolean[] covered = new boolean[g.cols() * g.rows()];
-        int reach = (int) StrictMath.ceil(Khepera.BODY_RADIUS_MM / OccupancyGrid.CELL_MM);
+        int reach = (int) StrictMath.ceil(RobotTypes.KHEPERA1.body().radiusMm() / OccupancyGrid.CELL_MM);
         int col = g.col(path[0][0]);
         int row = g.row(path[0][1]);
         cover(covered, g, col, row, reach);
@@ -127,7 +129,7 @@ class CoverageTest {
                 int c = col + dc;
                 int r = row + dr;
                 if (c >= 0 && r >= 0 && c < g.cols() && r < g.rows()
-                        && StrictMath.hypot(dc * OccupancyGrid.CELL_MM, dr * OccupancyGrid.CELL_MM) <= Khepera.BODY_RADIUS_MM) {
+                        && StrictMath.hypot(dc * OccupancyGrid.CELL_MM, dr * OccupancyGrid.CELL_MM) <= RobotTypes.KHEPERA1.body().radiusMm()) {
                     covered[r * g.cols() + c] = true;
                 }
             }

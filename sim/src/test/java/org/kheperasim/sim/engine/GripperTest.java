@@ -1,5 +1,7 @@
 package org.kheperasim.sim.engine;
 
+import org.kheperasim.sim.engine.robot.RobotTypes;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -177,7 +179,7 @@ class GripperTest {
         double fromOther = StrictMath.hypot(dropped.x() - other.x(), dropped.y() - other.y());
         double fromBody = StrictMath.hypot(dropped.x() - robot.x(), dropped.y() - robot.y());
         assertTrue(fromOther >= 18 - 1e-9, "it does not overlap the other cap: " + fromOther);
-        assertTrue(fromBody >= Khepera.BODY_RADIUS_MM + 9 - 1e-9, "nor the robot: " + fromBody);
+        assertTrue(fromBody >= RobotTypes.KHEPERA1.body().radiusMm() + 9 - 1e-9, "nor the robot: " + fromBody);
         double moved = StrictMath.hypot(dropped.x() - gripX, dropped.y() - 600);
         assertTrue(moved < 20, "the nearest free spot is close by: " + moved + " mm away");
         assertEquals(cap(e, 1).x(), other.x(), 0.0, "the other cap was not disturbed");

@@ -1,5 +1,7 @@
 package org.kheperasim.sim.engine;
 
+import org.kheperasim.sim.engine.robot.RobotTypes;
+
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -37,7 +39,7 @@ class LightDeferralTest {
             for (int i = 0; i < noise.length; i++) {
                 noise[i] = new CounterNoise(key * 17 + i);
             }
-            LightSensing light = new LightSensing(world, new SensorPlacement(), model, calibration, noise);
+            LightSensing light = new LightSensing(world, new SensorPlacement(RobotTypes.KHEPERA1), model, calibration, noise);
             int chars = light.deferDark();
             if (chars < 0) {
                 atOnce++; // a dark level near a power of ten: sampled at once

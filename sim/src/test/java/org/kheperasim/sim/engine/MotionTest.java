@@ -1,5 +1,7 @@
 package org.kheperasim.sim.engine;
 
+import org.kheperasim.sim.engine.robot.RobotTypes;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -49,7 +51,7 @@ class MotionTest {
         r[0].controls().commandSpeeds(0, -3, 3);
         run(e, 1.0);
         double seconds = 1.0 - StrictMath.ceil(r[0].link().speedCommandDelayNanos(-3, 3) / 1e6) / 1000;
-        double expectedDeg = StrictMath.toDegrees(2 * 24.0 * seconds / Khepera.WHEEL_BASE_MM);
+        double expectedDeg = StrictMath.toDegrees(2 * 24.0 * seconds / RobotTypes.KHEPERA1.drive().wheelBaseMm());
         assertEquals(expectedDeg, r[0].headingDeg(), 1e-6);
         assertEquals(300, r[0].x(), 1e-9);
         assertEquals(600, r[0].y(), 1e-9);
@@ -74,7 +76,7 @@ class MotionTest {
         assertEquals(right, r[0].encoderRight(), "right encoder must not count while blocked");
         assertEquals(x, r[0].x(), 0.0);
         // The wall's face is at 896 mm (±1 cell); the body stops touching it.
-        assertEquals(896 - Khepera.BODY_RADIUS_MM, r[0].x(), 2.5);
+        assertEquals(896 - RobotTypes.KHEPERA1.body().radiusMm(), r[0].x(), 2.5);
 
         // It may back away: the encoders count again.
         r[0].controls().commandSpeeds(e.timeNanos(), -3, -3);

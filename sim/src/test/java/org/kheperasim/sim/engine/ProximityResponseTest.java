@@ -1,5 +1,8 @@
 package org.kheperasim.sim.engine;
 
+import org.kheperasim.sim.engine.robot.RobotTypes;
+import org.kheperasim.sim.engine.robot.ProximityProfile;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -33,7 +36,7 @@ class ProximityResponseTest {
         Engine engine = new Engine(world, 7);
         SimRobot robot = engine.addRobot("r", new Pose(robotX, 600, 0), settings);
 
-        double expected = ProximityProfile.KHEPERA_I.valueAt(distanceMm) + settings.number("prox.offset");
+        double expected = RobotTypes.KHEPERA1.proximity().response().along(0).valueAt(distanceMm) + settings.number("prox.offset");
         double sigma = settings.number("prox.noiseAbs") + settings.number("prox.noiseRel") * (expected - settings.number("prox.offset"));
         int samples = 0;
         double sum2 = 0;

@@ -1,5 +1,7 @@
 package org.kheperasim.sim.engine;
 
+import org.kheperasim.sim.engine.robot.RobotTypes;
+
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -54,7 +56,7 @@ class ProximityShortcutsTest {
         // Robot 0 is the one that samples (its own body does not count); the others stand about.
         engine.addRobot("sampler", new Pose(-100, -100, 0), settings);
         for (int k = 0; k < 30; k++) {
-            double[] at = freeSpot(arena, world.field(), random, Khepera.BODY_RADIUS_MM + 1);
+            double[] at = freeSpot(arena, world.field(), random, RobotTypes.KHEPERA1.body().radiusMm() + 1);
             engine.addRobot("r" + k, new Pose(at[0], at[1], random.nextDouble(360)), settings);
         }
         ProximitySensing quick = sensing(world, settings, 5);
@@ -117,7 +119,7 @@ class ProximityShortcutsTest {
         double from = StrictMath.PI / 4;
         for (int step = 0; step <= 90; step++) {
             double extra = -0.5 + step * 0.05;
-            double d = radius + SensorPlacement.REACH_MM + range + extra;
+            double d = radius + RobotTypes.KHEPERA1.sensorReachMm() + range + extra;
             double x = capX + d * StrictMath.cos(from);
             double y = capY + d * StrictMath.sin(from);
             for (int degrees = 0; degrees < 360; degrees++) {
@@ -139,7 +141,7 @@ class ProximityShortcutsTest {
         for (int i = 0; i < noise.length; i++) {
             noise[i] = new CounterNoise(key * 31 + i);
         }
-        return new ProximitySensing(world, 0, new SensorPlacement(), model, calibration, noise);
+        return new ProximitySensing(world, 0, new SensorPlacement(RobotTypes.KHEPERA1), model, calibration, noise);
     }
 
     /** A spot for a body of this radius: clear of walls and lamps, within the arena. */
@@ -166,7 +168,7 @@ class ProximityShortcutsTest {
         for (int tries = 0; tries < 200; tries++) {
             int k = random.nextInt(world.capSet().count());
             double angle = random.nextDouble(2 * StrictMath.PI);
-            double d = world.capSet().radius(k) + SensorPlacement.REACH_MM + range
+            double d = world.capSet().radius(k) + RobotTypes.KHEPERA1.sensorReachMm() + range
                     + random.nextDouble(-0.5, 1.5 * StrictMath.sqrt(2) * OccupancyGrid.CELL_MM);
             double x = world.capSet().x(k) + d * StrictMath.cos(angle);
             double y = world.capSet().y(k) + d * StrictMath.sin(angle);
@@ -178,14 +180,14 @@ class ProximityShortcutsTest {
     }
 
     private static boolean fits(World world, Engine engine, double x, double y) {
-        return clearance(world, engine, x, y) >= Khepera.BODY_RADIUS_MM;
+        return clearance(world, engine, x, y) >= RobotTypes.KHEPERA1.body().radiusMm();
     }
 
     /** @return how far a robot centre at (x, y) is from the nearest wall, lamp, cap or other robot, mm */
     private static double clearance(World world, Engine engine, double x, double y) {
         double c = StrictMath.min(world.field().preciseClearance(x, y), world.capSet().nearestSurface(x, y));
         for (SimRobot r : engine.robots().subList(1, engine.robots().size())) {
-            c = StrictMath.min(c, StrictMath.hypot(r.x() - x, r.y() - y) - Khepera.BODY_RADIUS_MM);
+            c = StrictMath.min(c, StrictMath.hypot(r.x() - x, r.y() - y) - RobotTypes.KHEPERA1.body().radiusMm());
         }
         return c;
     }
@@ -198,9 +200,9 @@ class ProximityShortcutsTest {
      */
     private static double[] placeable(Arena arena, World world, Engine engine, SplittableRandom random, boolean close) {
         for (int tries = 0; tries < 200; tries++) {
-            double[] at = freeSpot(arena, world.field(), random, Khepera.BODY_RADIUS_MM);
+            double[] at = freeSpot(arena, world.field(), random, RobotTypes.KHEPERA1.body().radiusMm());
             double c = clearance(world, engine, at[0], at[1]);
-            if (c >= Khepera.BODY_RADIUS_MM && (!close || c < Khepera.BODY_RADIUS_MM + 40)) {
+            if (c >= RobotTypes.KHEPERA1.body().radiusMm() && (!close || c < RobotTypes.KHEPERA1.body().radiusMm() + 40)) {
                 return at;
             }
         }

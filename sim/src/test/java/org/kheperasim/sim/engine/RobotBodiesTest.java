@@ -1,5 +1,7 @@
 package org.kheperasim.sim.engine;
 
+import org.kheperasim.sim.engine.robot.RobotTypes;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -13,7 +15,7 @@ import org.kheperasim.sim.arena.Pose;
  */
 class RobotBodiesTest {
     private static final Settings EXACT = Settings.defaults().withNoise(0);
-    private static final double R = Khepera.BODY_RADIUS_MM;
+    private static final double R = RobotTypes.KHEPERA1.body().radiusMm();
 
     private static Engine engine(String body) {
         String text = "khepera-arena 1\nname t\nsize 1219.2 1219.2\nrobot 300 600 0\n" + body;

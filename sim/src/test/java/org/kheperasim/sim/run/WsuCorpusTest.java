@@ -1,5 +1,7 @@
 package org.kheperasim.sim.run;
 
+import org.kheperasim.sim.engine.robot.RobotTypes;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -118,7 +120,7 @@ class WsuCorpusTest {
             double t = l2 == 0 ? 0 : Math.max(0, Math.min(1, ((x - w.x1()) * dx + (y - w.y1()) * dy) / l2));
             best = Math.min(best, Math.hypot(x - (w.x1() + t * dx), y - (w.y1() + t * dy)) - w.thickness() / 2);
         }
-        return best - Arena.ROBOT_RADIUS_MM;
+        return best - RobotTypes.KHEPERA1.body().radiusMm();
     }
 
     private static Run run(Path classes, String map, String controller, Settings settings) {

@@ -1,5 +1,7 @@
 package org.kheperasim.sim.serve;
 
+import org.kheperasim.sim.engine.robot.RobotTypes;
+
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -9,7 +11,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Contact;
-import org.kheperasim.sim.engine.Khepera;
 import org.kheperasim.sim.engine.Settings;
 
 /**
@@ -46,7 +47,7 @@ class ServedArenaTest {
                 assertTrue(bothBlocked, "both robots were stopped by each other within 60 s");
                 double x0 = robots.get(0).inspect(r -> r.x());
                 double x1 = robots.get(1).inspect(r -> r.x());
-                assertEquals(2 * Khepera.BODY_RADIUS_MM, x1 - x0, 0.05, "they touch and do not overlap");
+                assertEquals(2 * RobotTypes.KHEPERA1.body().radiusMm(), x1 - x0, 0.05, "they touch and do not overlap");
                 assertEquals(Contact.FRONT, robots.get(0).inspect(r -> r.contact()));
                 assertEquals(Contact.FRONT, robots.get(1).inspect(r -> r.contact()));
                 // Their wheels still turn (the clients asked for 5), but the encoders stall.

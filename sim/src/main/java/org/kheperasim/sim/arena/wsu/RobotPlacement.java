@@ -4,9 +4,10 @@ import java.util.Arrays;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.DistanceField;
 import org.kheperasim.sim.arena.OccupancyGrid;
+import org.kheperasim.sim.engine.robot.RobotTypes;
 
 /**
- * Where a robot can start: its body (a disc of {@link Arena#ROBOT_RADIUS_MM}) must not overlap a
+ * Where a robot can start: its body (a disc of the Khepera I's radius, the robot of the WSU worlds) must not overlap a
  * wall or lamp cell of the occupancy grid, nor the edge, the test {@code ArenaFormat} makes of every
  * robot line. Caps may touch it: it pushes them.
  */
@@ -30,7 +31,7 @@ final class RobotPlacement {
      *     centre, mm), or null when it fits nowhere
      */
     static double[] nearestFree(Arena arena, double x, double y) {
-        RobotPlacement p = new RobotPlacement(OccupancyGrid.of(arena), Arena.ROBOT_RADIUS_MM + MARGIN_MM);
+        RobotPlacement p = new RobotPlacement(OccupancyGrid.of(arena), RobotTypes.KHEPERA1.body().radiusMm() + MARGIN_MM);
         return p.search(x, y);
     }
 

@@ -1,0 +1,142 @@
+package org.kheperasim.sim.engine.robot;
+
+import java.util.List;
+import java.util.Objects;
+import java.util.Set;
+
+/**
+ * Everything that makes one kind of robot: its body, its wheels, its infrared sensors (each measures
+ * both proximity and ambient light, as on the Khepera and the e-puck), the turrets it carries and
+ * the protocol dialect it speaks. The engine, the window, the web page, the protocol server, the
+ * trace and the testing module read a robot's numbers from here and nowhere else; a robot file
+ * ({@code docs/robot-files.md}) holds one, and {@link RobotTypes} the bundled ones.
+ *
+ * <p>Robot frame: x forward, y to the left, mm from the centre; headings in degrees
+ * counter-clockwise from straight ahead.
+ *
+ * @param name the type's name ({@code khepera1}, {@code epuck}, ...)
+ * @param source where its numbers come from (a manual, a published model), one line
+ * @param body the body
+ * @param drive the wheels and their motor controller
+ * @param sensors the infrared sensors, in the order a controller indexes them
+ * @param proximity how the sensors answer to reflected infrared
+ * @param light how the sensors answer to ambient light
+ * @param turrets the turrets it carries
+ * @param dialect the name of the serial protocol it speaks ({@code khepera1}, {@code khepera2}, {@code epuck})
+ */
+public record RobotType(String name, String source, Body body, Drive drive, List<Sensor> sensors, Proximity proximity,
+        Light light, Set<Turret> turrets, String dialect) {
+
+    /** The slack {@link #sensorReachMm} leaves beyond the farthest sensor, mm. */
+    private static final double REACH_SLACK_MM = 0.5;
+
+    public RobotType {
+        Objects.requireNonNull(name, "name");
+        Objects.requireNonNull(source, "source");
+        Objects.requireNonNull(body, "body");
+        Objects.requireNonNull(drive, "drive");
+        Objects.requireNonNull(proximity, "proximity");
+        Objects.requireNonNull(light, "light");
+        Objects.requireNonNull(dialect, "dialect");
+        sensors = List.copyOf(sensors);
+        turrets = Set.copyOf(turrets);
+        if (sensors.isEmpty()) {
+            throw new IllegalArgumentException("robot " + name + " has no sensors: give one at least");
+        }
+    }
+
+    /** @return how many infrared sensors it has */
+    public int sensorCount() {
+        return sensors.size();
+    }
+
+    /** @param i a sensor index @return that sensor */
+    public Sensor sensor(int i) {
+        return sensors.get(i);
+    }
+
+    /** @return a bound on every sensor's distance from the centre, mm (the farthest, plus half a millimetre) */
+    public double sensorReachMm() {
+        double far = 0;
+        for (Sensor s : sensors) {
+            far = StrictMath.max(far, StrictMath.hypot(s.xMm(), s.yMm()));
+        }
+        return far + REACH_SLACK_MM;
+    }
+
+    /** @return whether it carries the gripper turret */
+    public boolean hasGripper() {
+        return turrets.contains(Turret.GRIPPER);
+    }
+
+    /** @return whether it carries the linear vision turret */
+    public boolean hasVision() {
+        return turrets.contains(Turret.VISION);
+    }
+
+    /**
+     * The body: a disc (the Khepera and the e-puck are round; the contact solver assumes discs).
+     *
+     * @param radiusMm the disc's radius, mm
+     */
+    public record Body(double radiusMm) {
+    }
+
+    /**
+     * Two wheels on a common axis through the centre, and the robot's motor controller.
+     *
+     * @param wheelBaseMm distance between the wheels' contact points, mm
+     * @param mmPerSecondPerUnit wheel speed of one speed unit, mm/s
+     * @param maxSpeed the largest speed magnitude the robot accepts, speed units
+     * @param mmPerPulse wheel travel of one encoder pulse (the encoder's resolution), mm
+     * @param motorPeriodNanos the motor controller's period: position moves advance this often, ns
+     * @param noisePeriodNanos how often each wheel's speed noise is redrawn, ns
+     * @param moveSpeed the default top speed of a position move, speed units
+     * @param acceleration the default acceleration of a position move, 1/256 speed unit per motor period
+     */
+    public record Drive(double wheelBaseMm, double mmPerSecondPerUnit, int maxSpeed, double mmPerPulse, long motorPeriodNanos,
+            long noisePeriodNanos, int moveSpeed, int acceleration) {
+    }
+
+    /**
+     * One infrared sensor.
+     *
+     * @param name its name on the robot ({@code LEFT_90}, {@code ps5})
+     * @param channel its index in the robot's own protocol replies
+     * @param xMm position forward of the centre, mm
+     * @param yMm position left of the centre, mm
+     * @param headingDeg the direction it looks, degrees counter-clockwise from ahead
+     */
+    public record Sensor(String name, int channel, double xMm, double yMm, double headingDeg) {
+    }
+
+    /**
+     * The proximity side of the sensors.
+     *
+     * @param response reading over distance and angle
+     * @param offset reading with nothing in range, counts
+     * @param noiseAbs per-reading noise, standard deviation, counts
+     * @param noiseRel per-reading noise, standard deviation relative to the signal
+     * @param maxReading the largest reading, counts
+     */
+    public record Proximity(Response response, double offset, double noiseAbs, double noiseRel, int maxReading) {
+    }
+
+    /**
+     * The ambient-light side of the sensors (lower is brighter).
+     *
+     * @param dark reading in darkness, counts
+     * @param bright reading next to a lamp, counts
+     * @param noiseRel per-reading noise of the signal, relative standard deviation
+     */
+    public record Light(double dark, double bright, double noiseRel) {
+    }
+
+    /** A turret a robot may carry. */
+    public enum Turret {
+        /** The gripper turret (arm and fingers). */
+        GRIPPER,
+        /** The K213 linear vision turret. */
+        VISION
+    }
+}
