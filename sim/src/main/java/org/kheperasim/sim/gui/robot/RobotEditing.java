@@ -1,0 +1,132 @@
+package org.kheperasim.sim.gui.robot;
+
+import java.io.File;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.IntSupplier;
+import javax.swing.JFileChooser;
+import javax.swing.JFrame;
+import javax.swing.JOptionPane;
+import javax.swing.filechooser.FileNameExtensionFilter;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.edit.EditorModel;
+import org.kheperasim.sim.engine.robot.RobotType;
+
+/**
+ * The main window's Robot menu: Edit robot (the selected robot's type), Open robot file, New
+ * robot, each in a {@link RobotEditor}; and Try in arena, which gives the robot selected in the
+ * main window the edited type (an arena edit, undoable there) and starts its run afresh.
+ */
+public final class RobotEditing {
+    private final JFrame owner;
+    private final EditorModel model;
+    private final IntSupplier selected;
+    private final Runnable discardRun;
+    private final Runnable startRun;
+    private final RobotFileStore store;
+    private final List<RobotType> bundled;
+    private RobotEditor last;
+
+    /**
+     * @param owner the main window
+     * @param model the main window's arena
+     * @param selected the robot selected there
+     * @param discardRun ends the main window's run, if any
+     * @param startRun starts a new run of the arena as it is
+     * @param store the robot files
+     * @param bundled the bundled robots, the default first
+     */
+    public RobotEditing(JFrame owner, EditorModel model, IntSupplier selected, Runnable discardRun, Runnable startRun,
+            RobotFileStore store, List<RobotType> bundled) {
+        this.owner = owner;
+        this.model = model;
+        this.selected = selected;
+        this.discardRun = discardRun;
+        this.startRun = startRun;
+        this.store = store;
+        this.bundled = List.copyOf(bundled);
+    }
+
+    /** Robot > Edit robot: the editor on the selected robot's type. @return the editor */
+    public RobotEditor editSelected() {
+        return show(model.arena().robotType(index()), null);
+    }
+
+    /** Robot > Open robot file: asks for a file, then edits it. */
+    public void openFile() {
+        JFileChooser c = new JFileChooser(new File("."));
+        c.setFileFilter(new FileNameExtensionFilter("Robot files (." + RobotEditor.EXTENSION + ")", RobotEditor.EXTENSION));
+        if (c.showOpenDialog(owner) == JFileChooser.APPROVE_OPTION) {
+            openFile(c.getSelectedFile().toPath());
+        }
+    }
+
+    /** @param file a robot file @return its editor, or null when it cannot be read (said in a dialog) */
+    public RobotEditor openFile(Path file) {
+        RobotType t;
+        try {
+            t = store.load(file);
+        } catch (RuntimeException e) {
+            JOptionPane.showMessageDialog(owner, e.getMessage(), "Cannot open the robot", JOptionPane.ERROR_MESSAGE);
+            return null;
+        }
+        return show(t, file);
+    }
+
+    /** Robot > New robot: asks for the essentials, then edits the new robot. */
+    public void newRobot() {
+        RobotType t = NewRobot.ask(owner, bundled.get(0));
+        if (t != null) {
+            show(t, null);
+        }
+    }
+
+    /**
+     * A new robot without the dialog (drivers).
+     *
+     * @return its editor
+     */
+    public RobotEditor newRobot(String name, double radiusMm, double wheelBaseMm, double speedUnit, int sensors) {
+        return show(NewRobot.design(name, radiusMm, wheelBaseMm, speedUnit, sensors, bundled.get(0)), null);
+    }
+
+    /** @return the last editor opened, or null */
+    public RobotEditor last() {
+        return last;
+    }
+
+    private RobotEditor show(RobotType t, Path file) {
+        RobotEditor e = new RobotEditor(store, t, file, bundled, this::tryInArena);
+        e.frame().setLocationRelativeTo(owner);
+        e.show();
+        last = e;
+        return e;
+    }
+
+    private int index() {
+        int i = selected.getAsInt();
+        return i >= 0 && i < model.arena().robots().size() ? i : 0;
+    }
+
+    /**
+     * @param t the robot to try
+     * @return what was done, one line: the robot given the type and the run restarted, or why not
+     */
+    String tryInArena(RobotType t) {
+        Arena a = model.arena();
+        int i = index();
+        List<RobotType> types = new ArrayList<>(a.robotTypes());
+        types.set(i, t);
+        Arena next = new Arena(a.name(), a.width(), a.height(), a.robots(), a.walls(), a.lights(), a.caps(), a.regions(),
+                a.assignment(), types);
+        // A run's robots keep their types: the run ends, the arena takes the type, and a new run starts with it.
+        discardRun.run();
+        if (!model.apply(next)) {
+            return "Not tried: " + model.lastRefusal();
+        }
+        startRun.run();
+        return "Robot " + (i + 1) + " of " + a.name() + " is now " + t.name() + "; its run started afresh in the main window"
+                + " (Edit > Undo there takes the old robot back)";
+    }
+}
