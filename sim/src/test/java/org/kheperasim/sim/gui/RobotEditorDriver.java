@@ -20,6 +20,7 @@ import org.kheperasim.sim.engine.Snapshot;
 import org.kheperasim.sim.engine.robot.RobotType;
 import org.kheperasim.sim.engine.robot.RobotTypes;
 import org.kheperasim.sim.gui.robot.RobotEditor;
+import org.kheperasim.sim.gui.robot.RobotFiles;
 
 /**
  * Runs in a child JVM under Xvfb (see {@link RobotEditorTest}), every robot-editor check in one
@@ -32,6 +33,9 @@ import org.kheperasim.sim.gui.robot.RobotEditor;
  * <p>Arguments: output folder, the from-scratch robot file.
  */
 public final class RobotEditorDriver {
+    /** The robot files as the editor reads and writes them. */
+    private static final RobotFiles FILES = new RobotFiles();
+
     private RobotEditorDriver() {
     }
 
@@ -102,7 +106,7 @@ public final class RobotEditorDriver {
         if (!onEdt(() -> ed.saveTo(saved))) {
             fail("saving failed: " + ed.messageText());
         }
-        RobotType back = RobotTypes.load(saved);
+        RobotType back = FILES.load(saved);
         if (!back.equals(onEdt(ed::robot)) || back.drive().wheelBaseMm() != 50 || back.sensor(0).headingDeg() != 60
                 || back.sensor(2).yMm() != moved.yMm() || back.sensor(1).headingDeg() != 45) {
             fail("the saved file reads back as something else: " + back);
@@ -131,7 +135,7 @@ public final class RobotEditorDriver {
         shot(robot, fileEd, dir.resolve("editor-4-scratch-file.png"));
         SwingUtilities.invokeAndWait(fileEd::tryIt);
         RobotView ran = runPast(w, 20).robots().get(0);
-        if (!ran.type().equals(RobotTypes.load(scratchFile)) || ran.distanceMm() < 200) {
+        if (!ran.type().equals(FILES.load(scratchFile)) || ran.distanceMm() < 200) {
             fail("the from-scratch robot should run Braitenberg 200 mm in 20 s: " + ran.type().name() + " went "
                     + ran.distanceMm() + " mm");
         }
@@ -160,8 +164,8 @@ public final class RobotEditorDriver {
         settle(robot);
         shot(robot, tri, dir.resolve("editor-5-tri.png"));
         Path triFile = dir.resolve("tri.yaml");
-        if (!onEdt(() -> tri.saveTo(triFile)) || !RobotTypes.load(triFile).equals(onEdt(tri::robot))
-                || RobotTypes.load(triFile).sensorCount() != 3) {
+        if (!onEdt(() -> tri.saveTo(triFile)) || !FILES.load(triFile).equals(onEdt(tri::robot))
+                || FILES.load(triFile).sensorCount() != 3) {
             fail("the 3-sensor robot did not save and read back: " + tri.messageText());
         }
         System.out.println("3-sensor robot saved to " + triFile + " and read back");

@@ -178,6 +178,11 @@ final class RobotCanvas extends JComponent {
         g.setFont(getFont().deriveFont(Font.PLAIN, 11f));
         g.drawString(String.format(java.util.Locale.ROOT, "%s: body radius %s mm, wheel base %s mm; grid %s mm; front up",
                 t.name(), RobotChecks.num(r), RobotChecks.num(t.drive().wheelBaseMm()), RobotChecks.num(GRID_MM)), 6, 14);
+        RobotType.Sensor c0 = t.sensor(draft.selected());
+        g.setColor(new Color(200, 40, 10));
+        g.drawString(String.format(java.util.Locale.ROOT, "sensor %d %s at (%s, %s) mm, heading %s deg: drag its dot to move it,"
+                + " the handle at its beam's tip to turn it", draft.selected(), c0.name(), RobotChecks.num(c0.xMm()),
+                RobotChecks.num(c0.yMm()), RobotChecks.num(c0.headingDeg())), 6, 28);
         g.dispose();
     }
 
@@ -227,6 +232,10 @@ final class RobotCanvas extends JComponent {
         g.setColor(chosen ? new Color(200, 40, 10) : new Color(20, 90, 40));
         g.fill(new Ellipse2D.Double(m.getX() - 4, m.getY() - 4, 8, 8));
         g.setColor(Color.BLACK);
-        g.drawString(i + " " + sensor.name(), (float) tip.getX() + 6, (float) tip.getY() + 4);
+        // The index beyond the tip, along the beam (names of neighbours would overlap; the chosen one is named above).
+        double h = StrictMath.toRadians(sensor.headingDeg());
+        String label = Integer.toString(i);
+        int w = g.getFontMetrics().stringWidth(label);
+        g.drawString(label, (float) (tip.getX() - 12 * StrictMath.sin(h) - w / 2.0), (float) (tip.getY() - 12 * StrictMath.cos(h) + 4));
     }
 }
