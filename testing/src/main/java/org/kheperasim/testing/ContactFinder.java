@@ -160,6 +160,6 @@ final class ContactFinder {
 
     /** @return robot {@code i}'s body radius in arena {@code a} (its type's), mm */
     private static double radius(Arena a, int i) {
-        return a.robotType(i < a.robotTypes().size() ? i : 0).body().radiusMm();
+        return a.robotType(i < a.robots().size() ? i : 0).body().radiusMm();
     }
 }

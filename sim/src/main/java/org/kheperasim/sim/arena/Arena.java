@@ -5,7 +5,6 @@ import java.util.List;
 import java.util.Optional;
 import java.util.Set;
 import org.kheperasim.sim.engine.robot.RobotType;
-import org.kheperasim.sim.engine.robot.RobotTypes;
 
 /**
  * A complete arena: its size, where the robots start, and the fixed and movable objects on the
@@ -25,12 +24,12 @@ import org.kheperasim.sim.engine.robot.RobotTypes;
  * @param caps    movable bottle caps, in the order that gives them their grid ids
  * @param regions named rectangles, names unique
  * @param assignment what a run is scored on (tasks, time limit); {@link Assignment#NONE} for none
- * @param robotTypes each robot's type, in the order of {@code robots} (the arena's {@code robot}
- *     line names it; {@link RobotTypes#KHEPERA1} when it does not)
+ * @param robotKinds each robot's type, in the order of {@code robots} (the arena's {@code robot}
+ *     line names it; {@link RobotKind#DEFAULT}, the Khepera I, when it does not)
  */
 public record Arena(String name, double width, double height, List<Pose> robots, List<Wall> walls,
                     List<Light> lights, List<Cap> caps, List<Region> regions, Assignment assignment,
-                    List<RobotType> robotTypes) {
+                    List<RobotKind> robotKinds) {
 
     /**
      * @throws IllegalArgumentException if the name is not an identifier, the size is not positive or
@@ -52,10 +51,10 @@ public record Arena(String name, double width, double height, List<Pose> robots,
         caps = List.copyOf(caps);
         regions = List.copyOf(regions);
         java.util.Objects.requireNonNull(assignment, "assignment");
-        robotTypes = List.copyOf(robotTypes);
-        if (robotTypes.size() != robots.size()) {
+        robotKinds = List.copyOf(robotKinds);
+        if (robotKinds.size() != robots.size()) {
             throw new IllegalArgumentException("arena '" + name + "' has " + robots.size() + " robots but "
-                    + robotTypes.size() + " robot types; give each robot its type");
+                    + robotKinds.size() + " robot types; give each robot its type");
         }
         if (robots.isEmpty()) {
             throw new IllegalArgumentException("arena '" + name + "' has no robot; add a start pose");
@@ -70,7 +69,7 @@ public record Arena(String name, double width, double height, List<Pose> robots,
     }
 
     /**
-     * An arena whose robots are all {@link RobotTypes#KHEPERA1}.
+     * An arena whose robots are all Khepera Is ({@link RobotKind#DEFAULT}).
      *
      * @param name    identifier of letters, digits, {@code _} and {@code -}
      * @param width   extent along x, mm
@@ -85,11 +84,11 @@ public record Arena(String name, double width, double height, List<Pose> robots,
     public Arena(String name, double width, double height, List<Pose> robots, List<Wall> walls,
                  List<Light> lights, List<Cap> caps, List<Region> regions, Assignment assignment) {
         this(name, width, height, robots, walls, lights, caps, regions, assignment,
-                java.util.Collections.nCopies(robots.size(), RobotTypes.KHEPERA1));
+                java.util.Collections.nCopies(robots.size(), RobotKind.DEFAULT));
     }
 
     /**
-     * An arena without an assignment, its robots all {@link RobotTypes#KHEPERA1}.
+     * An arena without an assignment, its robots all Khepera Is.
      *
      * @param name    identifier of letters, digits, {@code _} and {@code -}
      * @param width   extent along x, mm
@@ -107,19 +106,43 @@ public record Arena(String name, double width, double height, List<Pose> robots,
 
     /** @param a the assignment @return this arena with that assignment */
     public Arena withAssignment(Assignment a) {
-        return new Arena(name, width, height, robots, walls, lights, caps, regions, a, robotTypes);
+        return new Arena(name, width, height, robots, walls, lights, caps, regions, a, robotKinds);
     }
 
     /** @param i a robot's index @return that robot's type */
     public RobotType robotType(int i) {
-        return robotTypes.get(i);
+        return robotKinds.get(i).type();
+    }
+
+    /**
+     * @param newRobots start poses for a copy of this arena
+     * @return the robot kinds for them: these, cut or filled with the default where the count changed
+     */
+    public List<RobotKind> kindsFor(List<Pose> newRobots) {
+        List<RobotKind> out = new java.util.ArrayList<>(robotKinds.subList(0, StrictMath.min(robotKinds.size(), newRobots.size())));
+        while (out.size() < newRobots.size()) {
+            out.add(RobotKind.DEFAULT);
+        }
+        return out;
+    }
+
+    /**
+     * @param kind a robot type for the robots whose line names none ({@code --robot-file})
+     * @return this arena with those robots of that type; the robots whose line names a type keep it
+     */
+    public Arena withDefaultRobot(RobotKind kind) {
+        List<RobotKind> kinds = new java.util.ArrayList<>();
+        for (RobotKind k : robotKinds) {
+            kinds.add(k.isDefault() ? kind : k);
+        }
+        return new Arena(name, width, height, robots, walls, lights, caps, regions, assignment, kinds);
     }
 
     /** @return the widest robot's body radius, mm */
     public double widestRobotMm() {
         double r = 0;
-        for (RobotType t : robotTypes) {
-            r = StrictMath.max(r, t.body().radiusMm());
+        for (RobotKind k : robotKinds) {
+            r = StrictMath.max(r, k.type().body().radiusMm());
         }
         return r;
     }

@@ -156,8 +156,15 @@ public final class ArenaFormat {
         sb.append(HEADER).append('\n');
         sb.append("name ").append(arena.name()).append('\n');
         line(sb, "size", arena.width(), arena.height());
-        for (Pose p : arena.robots()) {
-            line(sb, "robot", p.x(), p.y(), p.headingDeg());
+        for (int i = 0; i < arena.robots().size(); i++) {
+            Pose p = arena.robots().get(i);
+            RobotKind k = arena.robotKinds().get(i);
+            if (k.isDefault()) {
+                line(sb, "robot", p.x(), p.y(), p.headingDeg());
+            } else {
+                sb.append("robot ").append(Numbers.format(p.x())).append(' ').append(Numbers.format(p.y())).append(' ')
+                        .append(Numbers.format(p.headingDeg())).append(' ').append(k.spec()).append('\n');
+            }
         }
         for (Wall w : arena.walls()) {
             line(sb, "wall", w.x1(), w.y1(), w.x2(), w.y2(), w.thickness());

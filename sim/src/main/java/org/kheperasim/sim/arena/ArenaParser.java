@@ -38,6 +38,7 @@ final class ArenaParser {
     private int sizeLine;
     private final List<Pose> robots = new ArrayList<>();
     private final List<Integer> robotLines = new ArrayList<>();
+    private final List<RobotKind> robotKinds = new ArrayList<>();
     private final List<Wall> walls = new ArrayList<>();
     private final List<Integer> wallLines = new ArrayList<>();
     private final List<Light> lights = new ArrayList<>();
@@ -107,6 +108,7 @@ final class ArenaParser {
         if (robots.isEmpty() && worldRobot != null) {
             robots.add(worldRobot); // the WSU world's start pose, unless the file gives its own
             robotLines.add(worldLine);
+            robotKinds.add(RobotKind.DEFAULT);
         }
         if (robots.isEmpty()) {
             throw error(headerLine, "no 'robot' line; add at least one start pose"
@@ -117,9 +119,40 @@ final class ArenaParser {
         checkTasks();
         Assignment assignment = new Assignment(tasks, timeLimit);
         Arena arena = build(headerLine, () -> new Arena(name != null ? name : nameFromSource(),
-                width, height, robots, walls, lights, caps, regions, assignment));
+                width, height, robots, walls, lights, caps, regions, assignment, robotKinds));
         RobotClearance.check(arena, robotLines, source);
         return arena;
+    }
+
+    /** {@code robot x y heading [TYPE]}: TYPE a bundled robot's name or a robot file's path, relative to this file. */
+    private void robot(String[] t) {
+        RobotKind kind = RobotKind.DEFAULT;
+        String[] pose = t;
+        if (t.length == 5) {
+            String spec = t[4];
+            pose = java.util.Arrays.copyOf(t, 4);
+            kind = new RobotKind(spec, robotType(spec));
+        }
+        double[] n = numbers(pose, 1, "robot needs x y heading (3 numbers: mm, mm, degrees) and, if not a khepera1,"
+                + " the robot's type (a bundled robot or a robot file)", "x", "y", "heading");
+        angle("robot heading", n[2]);
+        add(robots, robotLines, build(lineNo, () -> new Pose(n[0], n[1], n[2])), ArenaLimits.MAX_ROBOTS, "robots");
+        robotKinds.add(kind);
+    }
+
+    private org.kheperasim.sim.engine.robot.RobotType robotType(String spec) {
+        if (!org.kheperasim.sim.engine.robot.RobotTypes.BUNDLED.contains(spec) && !spec.contains("/") && !spec.endsWith(".yaml")) {
+            throw error(lineNo, "robot type '" + shorten(spec) + "' is not a bundled robot; use one of "
+                    + String.join(", ", org.kheperasim.sim.engine.robot.RobotTypes.BUNDLED) + ", or a robot file's path ending in .yaml");
+        }
+        try {
+            return org.kheperasim.sim.engine.robot.RobotTypes.resolve(spec, folder);
+        } catch (org.kheperasim.sim.engine.robot.RobotFileException e) {
+            if (e.line() == 0) {
+                throw error(lineNo, "robot file '" + shorten(spec) + "': " + e.what());
+            }
+            throw e;
+        }
     }
 
     private void header(String[] tokens) {
@@ -140,12 +173,7 @@ final class ArenaParser {
             case "name" -> name(t);
             case "size" -> size(t);
             case "wsu-world" -> world(t);
-            case "robot" -> {
-                double[] n = numbers(t, 1, "robot needs x y heading (3 numbers: mm, mm, degrees)",
-                        "x", "y", "heading");
-                angle("robot heading", n[2]);
-                add(robots, robotLines, build(lineNo, () -> new Pose(n[0], n[1], n[2])), ArenaLimits.MAX_ROBOTS, "robots");
-            }
+            case "robot" -> robot(t);
             case "wall" -> {
                 double[] n = numbers(t, 1, "wall needs x1 y1 x2 y2 thickness (5 numbers, mm)",
                         "x1", "y1", "x2", "y2", "thickness");

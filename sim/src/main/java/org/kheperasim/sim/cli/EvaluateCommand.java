@@ -65,6 +65,10 @@ final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--arena", paramLabel = "NAME_OR_FILE", description = "the arena of a job that names none")
     String arena;
 
+    @Option(names = "--robot-file", paramLabel = "FILE",
+            description = "the robot for every job's arena robot lines that name none: a robot file or a bundled robot")
+    String robotFile;
+
     @Option(names = "--seconds", paramLabel = "S", defaultValue = "60", converter = CliNumbers.PositiveSeconds.class,
             description = "simulated seconds of a job that"
             + " says none (default ${DEFAULT-VALUE})")
@@ -115,7 +119,8 @@ final class EvaluateCommand implements Callable<Integer> {
         List<Long> order = new ArrayList<>();
         Object lock = new Object();
         long start = System.nanoTime();
-        try (Evaluator evaluator = new Evaluator(classpath, !contained, n);
+        org.kheperasim.sim.arena.RobotKind robot = robotFile == null ? null : org.kheperasim.sim.arena.RobotKind.of(robotFile);
+        try (Evaluator evaluator = new Evaluator(classpath, !contained, n).robot(robot);
                 BufferedReader in = jobs.equals("-") ? new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8))
                         : jobFile(Path.of(jobs))) {
             BoundedLines lines = new BoundedLines(in, MAX_JOB_CHARS, (l, what) -> new InputFileException(

@@ -49,6 +49,10 @@ final class RunCommand implements Callable<Integer> {
             description = "an arena file, or a bundled arena (${COMPLETION-CANDIDATES}; see list)")
     String arena;
 
+    @Option(names = "--robot-file", paramLabel = "FILE",
+            description = "the robot for the arena's robot lines that name none: a robot file or a bundled robot (see robots)")
+    String robotFile;
+
     @Mixin
     ControllerOptions controllerOptions = new ControllerOptions();
 
@@ -109,7 +113,7 @@ final class RunCommand implements Callable<Integer> {
         }
         Settings settings = settingsOptions.settings();
         PrintStream info = json ? System.err : System.out;
-        Arena resolved = ArenaFormat.resolve(arena);
+        Arena resolved = RobotFiles.arena(arena, robotFile);
         HtmlPage[] page = new HtmlPage[1]; // set once the run is configured; the console writes to it
         FailureLines failures = new FailureLines();
         EditLog editLog = edits == null ? null : EditLog.load(edits);
@@ -168,6 +172,7 @@ final class RunCommand implements Callable<Integer> {
         if (edits != null) {
             read.add(edits.toAbsolutePath());
         }
+        read.addAll(RobotFiles.files(arena, robotFile));
         List<Path> write = new ArrayList<>(trace == null ? List.of() : List.of(trace.toAbsolutePath()));
         HtmlPage.Boxed page = html == null ? null : new HtmlPage.Boxed(html, trace, args, write);
         Arena resolved = ArenaFormat.resolve(arena);
@@ -180,7 +185,8 @@ final class RunCommand implements Callable<Integer> {
     }
 
     /** The options whose values are files: the box runs in a folder of its own, where a relative path names nothing. */
-    private static final java.util.Set<String> PATH_OPTIONS = java.util.Set.of("--arena", "--classpath", "--trace", "--edits");
+    private static final java.util.Set<String> PATH_OPTIONS = java.util.Set.of("--arena", "--classpath", "--trace", "--edits",
+            "--robot-file");
 
     /** @return the arguments with each file option's value an absolute path ({@code --arena} only when it is a file) */
     static List<String> absolutePaths(List<String> args) {
@@ -196,7 +202,7 @@ final class RunCommand implements Callable<Integer> {
             String value = eq > 0 ? a.substring(eq + 1) : args.get(++i);
             StringBuilder abs = new StringBuilder();
             for (String part : value.split(java.util.regex.Pattern.quote(java.io.File.pathSeparator), -1)) {
-                boolean file = !name.equals("--arena") || java.nio.file.Files.isRegularFile(Path.of(part));
+                boolean file = !name.equals("--arena") && !name.equals("--robot-file") || java.nio.file.Files.isRegularFile(Path.of(part));
                 abs.append(abs.length() > 0 ? java.io.File.pathSeparator : "")
                         .append(file && !part.isEmpty() ? Path.of(part).toAbsolutePath().toString() : part);
             }

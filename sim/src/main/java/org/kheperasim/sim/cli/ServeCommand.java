@@ -35,6 +35,10 @@ final class ServeCommand implements Callable<Integer> {
             description = "an arena file, or a bundled arena (see list); each of its robots is served on its own port (port, port+1, ...)")
     String arena;
 
+    @Option(names = "--robot-file", paramLabel = "FILE",
+            description = "the robot for the arena's robot lines that name none: a robot file or a bundled robot (see robots)")
+    String robotFile;
+
     @Option(names = "--port", paramLabel = "N", defaultValue = "" + ProtocolServer.DEFAULT_PORT,
             description = "TCP port (default: ${DEFAULT-VALUE}; 0 = any free port, printed)")
     int port;
@@ -83,13 +87,14 @@ final class ServeCommand implements Callable<Integer> {
                         + " socat, which the sandbox does not hold; leave one of them out");
             }
             Path arenaFile = Path.of(arena);
-            List<Path> read = java.nio.file.Files.isRegularFile(arenaFile) ? List.of(arenaFile) : List.of();
+            List<Path> read = new java.util.ArrayList<>(java.nio.file.Files.isRegularFile(arenaFile) ? List.of(arenaFile) : List.of());
+            read.addAll(RobotFiles.files(arena, robotFile));
             return org.kheperasim.sim.sandbox.Reexec.run("serve", Sandboxed.argsAfter(spec, "serve"), read, List.of(), true,
                     org.kheperasim.sim.sandbox.BoxLimits.forCommand(ArenaFormat.resolve(arena).robots().size()), 10);
         }
         Settings settings = settingsOptions.settings();
         long runSeed = seed != null ? seed : Simulation.randomSeed();
-        Arena a = ArenaFormat.resolve(arena);
+        Arena a = RobotFiles.arena(arena, robotFile);
         InetAddress address = bind == null ? InetAddress.getLoopbackAddress() : InetAddress.getByName(bind);
         PrintStream out = System.out;
         if (!(idleTimeout >= 0 && idleTimeout <= 86_400)) {

@@ -107,7 +107,8 @@ public final class OpenLoopReplay {
         List<SimRobot> robots = new ArrayList<>();
         List<Driver> drivers = new ArrayList<>();
         for (int i = 0; i < h.robots().size(); i++) {
-            SimRobot robot = engine.addRobot(h.robots().get(i).name(), run.arena().robots().get(i), run.settings().get(i));
+            SimRobot robot = engine.addRobot(h.robots().get(i).name(), run.arena().robots().get(i), run.settings().get(i),
+                    run.arena().robotType(i));
             try {
                 robot.controlMode(h.robots().get(i).mode());
             } catch (IllegalArgumentException e) {
@@ -164,6 +165,7 @@ public final class OpenLoopReplay {
         header.put("settings", run.settings().get(0).describe());
         header.put("sample-ms", Long.toString(run.sampleMillis()));
         header.put("mode", org.kheperasim.sim.run.RunSession.modes(h.robots().stream().map(LogHeader.Robot::mode).toList()));
+        org.kheperasim.sim.run.RunSession.robotTypes(header, run.arena());
         boolean alike = true;
         for (LogHeader.Robot r : h.robots()) {
             alike &= r.controllerClass().equals(h.robots().get(0).controllerClass())

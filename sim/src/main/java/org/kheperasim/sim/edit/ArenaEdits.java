@@ -25,7 +25,8 @@ public final class ArenaEdits {
 
     /** @return a copy with the given lists */
     public static Arena with(Arena a, List<Pose> robots, List<Wall> walls, List<Light> lights, List<Cap> caps) {
-        return new Arena(a.name(), a.width(), a.height(), robots, walls, lights, caps, a.regions(), a.assignment());
+        return new Arena(a.name(), a.width(), a.height(), robots, walls, lights, caps, a.regions(), a.assignment(),
+                a.kindsFor(robots));
     }
 
     /** @return the arena with a wall from (x1, y1) to (x2, y2) added */

@@ -62,12 +62,17 @@ public record RobotView(int id, String name, double x, double y, double headingD
         return light.clone();
     }
 
-    /** @param i sensor index 0..7 @return its proximity value */
+    /** @return how many sensors the robot has */
+    public int sensorCount() {
+        return proximity.length;
+    }
+
+    /** @param i sensor index, 0 to {@link #sensorCount()} - 1 @return its proximity value */
     public int proximity(int i) {
         return proximity[i];
     }
 
-    /** @param i sensor index 0..7 @return its light value */
+    /** @param i sensor index, 0 to {@link #sensorCount()} - 1 @return its light value */
     public int light(int i) {
         return light[i];
     }

@@ -40,6 +40,17 @@ public final class Evaluator implements AutoCloseable {
 
     /** The engine keeps to one thread per job when jobs run on several threads. */
     private final HostOptions hostOptions;
+    /** The robot for the arenas' robot lines that name none ({@code --robot-file}), or null: theirs. */
+    private volatile org.kheperasim.sim.arena.RobotKind robot;
+
+    /**
+     * @param kind the robot for every arena's robot lines that name none, or null: the Khepera I
+     * @return this evaluator
+     */
+    public Evaluator robot(org.kheperasim.sim.arena.RobotKind kind) {
+        this.robot = kind;
+        return this;
+    }
 
     /**
      * @param classpath folders and jars with the controllers' classes
@@ -111,6 +122,9 @@ public final class Evaluator implements AutoCloseable {
         Settings settings;
         try {
             arena = arenas.computeIfAbsent(job.arena(), ArenaFormat::resolve);
+            if (robot != null) {
+                arena = arena.withDefaultRobot(robot);
+            }
             settings = Settings.defaults();
             for (Map.Entry<String, String> e : new java.util.TreeMap<>(job.settings()).entrySet()) {
                 settings = settings.with(e.getKey(), e.getValue());

@@ -139,7 +139,7 @@ public final class RunSession implements AutoCloseable {
             Class<?> type = types.get(i);
             cls = cls == null ? type.getName() : cls;
             String name = arena.robots().size() == 1 ? type.getSimpleName() : type.getSimpleName() + "#" + i;
-            SimRobot robot = engine.addRobot(name, start, setup.settings());
+            SimRobot robot = engine.addRobot(name, start, setup.settings(), arena.robotType(i));
             robot.parameters(setup.parameters());
             boolean stepStyle = Controllers.isStep(type);
             if (onBoard(setup.settings(), stepStyle)) {
@@ -239,6 +239,7 @@ public final class RunSession implements AutoCloseable {
         header.put("settings", settings.describe());
         header.put("sample-ms", Long.toString(sampleMillis));
         header.put("mode", modes(robots.stream().map(SimRobot::controlMode).toList()));
+        robotTypes(header, arena);
         if (!setups.get(0).parameters().isEmpty()) {
             header.put("parameters", setups.get(0).parameters().toString());
         }
@@ -251,6 +252,24 @@ public final class RunSession implements AutoCloseable {
         trace = new TraceWriter(out, header);
         sampleNanos = sampleMillis * Engine.TICK_NANOS;
         engine.addListener(trace, sampleNanos);
+    }
+
+    /**
+     * Name each robot's type in a trace's header when one is not the default Khepera I (a run of
+     * Khepera Is keeps the header it had).
+     *
+     * @param header the header fields
+     * @param arena the run's arena
+     */
+    public static void robotTypes(Map<String, String> header, Arena arena) {
+        if (arena.robotKinds().stream().allMatch(org.kheperasim.sim.arena.RobotKind::isDefault)) {
+            return;
+        }
+        StringBuilder sb = new StringBuilder();
+        for (int i = 0; i < arena.robots().size(); i++) {
+            sb.append(i == 0 ? "" : " ").append(i).append('=').append(arena.robotType(i).name());
+        }
+        header.put("robot-types", sb.toString());
     }
 
     /**

@@ -60,7 +60,7 @@ public final class ServedArena implements AutoCloseable {
         this.speed = speed;
         this.engine = new Engine(new World(arena), seed);
         for (int i = 0; i < count; i++) {
-            SimRobot robot = engine.addRobot(count == 1 ? "served" : "served#" + i, arena.robots().get(i), settings);
+            SimRobot robot = engine.addRobot(count == 1 ? "served" : "served#" + i, arena.robots().get(i), settings, arena.robotType(i));
             robot.onBoard().servedDirectly();
             simRobots.add(robot);
         }

@@ -40,6 +40,9 @@ import org.kheperasim.sim.engine.SnapshotListener;
  * the sample, the robot, when the turret took the image, its 64 grey levels). It starts with
  * {@code #} so that readers of the robot and cap lines pass over it; a run that never reads the
  * turret writes none.
+ *
+ * <p>A run with a robot that is not a Khepera I names each robot's type in the header:
+ * {@code # robot-types 0=khepera1 1=epuck} (a run of Khepera Is alone has no such line).
  */
 public final class TraceWriter implements SnapshotListener, AutoCloseable {
     /** The trace format's version. */
@@ -86,11 +89,13 @@ public final class TraceWriter implements SnapshotListener, AutoCloseable {
             line.append(r.speedLeft()).append(' ').append(r.speedRight()).append(' ')
                     .append(r.encoderLeft()).append(' ').append(r.encoderRight()).append(' ')
                     .append(r.contact().name());
+            // Eight sensor columns whatever the robot: one with fewer writes 0 in the rest, one with more its first eight.
+            int n = r.sensorCount();
             for (int i = 0; i < 8; i++) {
-                line.append(' ').append(r.proximity(i));
+                line.append(' ').append(i < n ? r.proximity(i) : 0);
             }
             for (int i = 0; i < 8; i++) {
-                line.append(' ').append(r.light(i));
+                line.append(' ').append(i < n ? r.light(i) : 0);
             }
             GripperView g = r.gripper();
             line.append(' ').append(g.armPosition()).append(' ').append(g.fingers().name()).append(' ')

@@ -1,0 +1,91 @@
+package org.kheperasim.sim.engine.robot;
+
+import java.util.Locale;
+
+/**
+ * Writes a {@link RobotType} as a robot file ({@code docs/robot-files.md}), in the one canonical
+ * layout: keys in a fixed order, numbers in their shortest decimal form, no comments. What it
+ * writes {@link RobotFileReader} reads back to the same type, and writing that again gives the
+ * same bytes.
+ */
+public final class RobotFileWriter {
+
+    private RobotFileWriter() {
+    }
+
+    /** @param t a robot type @return its robot file */
+    public static String write(RobotType t) {
+        StringBuilder sb = new StringBuilder();
+        sb.append("# robot file, format in docs/robot-files.md\n");
+        sb.append("name: ").append(t.name()).append('\n');
+        if (!t.source().isEmpty()) {
+            sb.append("source: ").append(t.source()).append('\n');
+        }
+        sb.append("dialect: ").append(t.dialect()).append('\n');
+        sb.append("turrets: [");
+        String sep = "";
+        for (RobotType.Turret turret : RobotType.Turret.values()) {
+            if (t.turrets().contains(turret)) {
+                sb.append(sep).append(turret.name().toLowerCase(Locale.ROOT));
+                sep = ", ";
+            }
+        }
+        sb.append("]\n");
+        sb.append("footprint:\n  type: circle\n");
+        key(sb, "radius", t.body().radiusMm());
+        RobotType.Drive d = t.drive();
+        sb.append("drive:\n");
+        key(sb, "wheel_base", d.wheelBaseMm());
+        key(sb, "speed_unit", d.mmPerSecondPerUnit());
+        key(sb, "max_speed", d.maxSpeed());
+        key(sb, "encoder_resolution", d.mmPerPulse());
+        key(sb, "motor_period", d.motorPeriodNanos() / 1e6);
+        key(sb, "noise_period", d.noisePeriodNanos() / 1e6);
+        key(sb, "move_speed", d.moveSpeed());
+        key(sb, "acceleration", d.acceleration());
+        sb.append("sensors:\n");
+        for (RobotType.Sensor s : t.sensors()) {
+            sb.append("  - name: ").append(s.name()).append('\n');
+            sb.append("    channel: ").append(s.channel()).append('\n');
+            sb.append("    origin: ").append(list(new double[] {s.xMm(), s.yMm(), s.headingDeg()})).append('\n');
+        }
+        RobotType.Proximity p = t.proximity();
+        sb.append("proximity:\n");
+        if (p.response() instanceof Response.Curve c) {
+            sb.append("  response: curve\n");
+            sb.append("  angles: ").append(list(c.anglesDeg())).append('\n');
+            sb.append("  weights: ").append(list(c.weights())).append('\n');
+            sb.append("  distances: ").append(list(c.distance().distancesMm())).append('\n');
+            sb.append("  values: ").append(list(c.distance().values())).append('\n');
+        } else if (p.response() instanceof Response.Table tb) {
+            sb.append("  response: table\n");
+            sb.append("  angles: ").append(list(tb.anglesDeg())).append('\n');
+            sb.append("  distances: ").append(list(tb.distancesMm())).append('\n');
+            sb.append("  values:\n");
+            for (double[] row : tb.values()) {
+                sb.append("    - ").append(list(row)).append('\n');
+            }
+        }
+        key(sb, "offset", p.offset());
+        key(sb, "noise_std_dev", p.noiseAbs());
+        key(sb, "noise_relative", p.noiseRel());
+        key(sb, "max_reading", p.maxReading());
+        sb.append("light:\n");
+        key(sb, "dark", t.light().dark());
+        key(sb, "bright", t.light().bright());
+        key(sb, "noise_relative", t.light().noiseRel());
+        return sb.toString();
+    }
+
+    private static void key(StringBuilder sb, String key, double v) {
+        sb.append("  ").append(key).append(": ").append(RobotFileReader.fmt(v)).append('\n');
+    }
+
+    private static String list(double[] v) {
+        StringBuilder sb = new StringBuilder("[");
+        for (int i = 0; i < v.length; i++) {
+            sb.append(i == 0 ? "" : ", ").append(RobotFileReader.fmt(v[i]));
+        }
+        return sb.append(']').toString();
+    }
+}
