@@ -54,7 +54,7 @@ final class NewRobot {
         RobotType.Drive drive = new RobotType.Drive(wheelBaseMm, speedUnit, d.maxSpeed(), d.mmPerPulse(),
                 d.motorPeriodNanos(), d.noisePeriodNanos(), d.moveSpeed(), d.acceleration());
         return new RobotType(name, "designed in the robot editor", new RobotType.Body(radiusMm), drive, list,
-                like.proximity(), like.light(), Set.of(), like.dialect());
+                RobotDraft.named(like.proximity(), name), like.light(), Set.of(), like.dialect());
     }
 
     private static RobotType.Sensor sensor(String name, int channel, double r, double atDeg, double headingDeg) {

@@ -4,6 +4,8 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Function;
+import org.kheperasim.sim.engine.robot.ProximityProfile;
+import org.kheperasim.sim.engine.robot.Response;
 import org.kheperasim.sim.engine.robot.RobotType;
 
 /**
@@ -97,8 +99,23 @@ final class RobotDraft {
     }
 
     String setName(String name) {
-        return apply(new RobotType(name, type.source(), type.body(), type.drive(), type.sensors(), type.proximity(),
+        return apply(new RobotType(name, type.source(), type.body(), type.drive(), type.sensors(), named(type.proximity(), name),
                 type.light(), type.turrets(), type.dialect()));
+    }
+
+    /**
+     * A robot file's curve goes by its robot's name: a renamed robot's curve is renamed with it, so
+     * that the robot edited is the robot its saved file reads back as.
+     *
+     * @param p a proximity response @param robot the robot's name @return p, its curve named after the robot
+     */
+    static RobotType.Proximity named(RobotType.Proximity p, String robot) {
+        if (!(p.response() instanceof Response.Curve c) || c.distance().name().equals(robot)) {
+            return p;
+        }
+        Response.Curve renamed = new Response.Curve(new ProximityProfile(robot, c.distance().distancesMm(),
+                c.distance().values()), c.anglesDeg(), c.weights());
+        return new RobotType.Proximity(renamed, p.offset(), p.noiseAbs(), p.noiseRel(), p.maxReading());
     }
 
     String setBodyRadius(double mm) {
@@ -171,13 +188,23 @@ final class RobotDraft {
         return p;
     }
 
-    /** @param i the sensor to take away (a robot keeps one at least) @return null, or why not */
+    /**
+     * @param i the sensor to take away (a robot keeps one at least); the channels above its close up
+     * @return null, or why not
+     */
     String removeSensor(int i) {
         if (type.sensorCount() == 1) {
             return "the robot's only sensor cannot go; a robot has one sensor at least";
         }
-        List<RobotType.Sensor> list = new ArrayList<>(type.sensors());
-        list.remove(i);
+        List<RobotType.Sensor> list = new ArrayList<>();
+        int gone = type.sensor(i).channel();
+        for (int k = 0; k < type.sensorCount(); k++) {
+            RobotType.Sensor s = type.sensor(k);
+            if (k != i) { // the channels stay 0 to n-1, each once, as a robot file numbers them
+                int c = s.channel() > gone ? s.channel() - 1 : s.channel();
+                list.add(new RobotType.Sensor(s.name(), c, s.xMm(), s.yMm(), s.headingDeg()));
+            }
+        }
         return sensors(list);
     }
 

@@ -10,6 +10,7 @@ import javax.swing.JFrame;
 import javax.swing.JOptionPane;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.arena.RobotKind;
 import org.kheperasim.sim.edit.EditorModel;
 import org.kheperasim.sim.engine.robot.RobotType;
 
@@ -111,22 +112,55 @@ public final class RobotEditing {
 
     /**
      * @param t the robot to try
+     * @param file its robot file when the file holds exactly it, else null
      * @return what was done, one line: the robot given the type and the run restarted, or why not
      */
-    String tryInArena(RobotType t) {
+    String tryInArena(RobotType t, Path file) {
         Arena a = model.arena();
         int i = index();
-        List<RobotType> types = new ArrayList<>(a.robotTypes());
-        types.set(i, t);
+        RobotKind kind;
+        String named;
+        try {
+            kind = kind(t, file);
+            named = kind.spec().equals(t.name()) ? "" : " (the arena names it by " + kind.spec() + ")";
+        } catch (RuntimeException e) {
+            return RobotEditor.NOT_TRIED + e.getMessage();
+        }
+        List<RobotKind> kinds = new ArrayList<>(a.robotKinds());
+        kinds.set(i, kind);
         Arena next = new Arena(a.name(), a.width(), a.height(), a.robots(), a.walls(), a.lights(), a.caps(), a.regions(),
-                a.assignment(), types);
+                a.assignment(), kinds);
         // A run's robots keep their types: the run ends, the arena takes the type, and a new run starts with it.
         discardRun.run();
         if (!model.apply(next)) {
-            return "Not tried: " + model.lastRefusal();
+            return RobotEditor.NOT_TRIED + model.lastRefusal();
         }
         startRun.run();
-        return "Robot " + (i + 1) + " of " + a.name() + " is now " + t.name() + "; its run started afresh in the main window"
-                + " (Edit > Undo there takes the old robot back)";
+        return "Robot " + (i + 1) + " of " + a.name() + " is now " + t.name() + named
+                + "; its run started afresh in the main window (Edit > Undo there takes the old robot back)";
+    }
+
+    /**
+     * How the arena names the robot: a bundled robot by its name, a saved one by its file; one with
+     * unsaved changes by a copy in a temporary file (saved and tried again, the arena names its file).
+     */
+    private RobotKind kind(RobotType t, Path file) {
+        for (RobotType b : bundled) {
+            if (b.equals(t)) {
+                return new RobotKind(t.name(), t);
+            }
+        }
+        Path f = file;
+        if (f == null) {
+            try {
+                f = java.nio.file.Files.createTempFile("robot-" + t.name() + "-", "." + RobotEditor.EXTENSION);
+            } catch (java.io.IOException e) {
+                throw new java.io.UncheckedIOException("cannot write the robot to a temporary file: " + e.getMessage()
+                        + "; save it, then Try in arena", e);
+            }
+            f.toFile().deleteOnExit();
+            store.save(t, f);
+        }
+        return new RobotKind(f.toAbsolutePath().toString(), t);
     }
 }

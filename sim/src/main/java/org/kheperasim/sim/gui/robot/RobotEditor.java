@@ -6,7 +6,7 @@ import java.awt.Toolkit;
 import java.io.File;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.function.Function;
+import java.util.function.BiFunction;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
 import javax.swing.JFileChooser;
@@ -30,11 +30,13 @@ import org.kheperasim.sim.engine.robot.RobotType;
 public final class RobotEditor {
     /** Robot files' extension. */
     static final String EXTENSION = "yaml";
+    /** How a trial that did not happen begins its line. */
+    static final String NOT_TRIED = "Not tried: ";
 
     private final JFrame frame = new JFrame();
     private final RobotFileStore store;
     private final RobotDraft draft;
-    private final Function<RobotType, String> trial;
+    private final BiFunction<RobotType, Path, String> trial;
     private final JLabel message = new JLabel(" ");
     private final RobotCanvas canvas;
     private final RobotSheet sheet;
@@ -46,10 +48,11 @@ public final class RobotEditor {
      * @param start the robot to start from
      * @param file its file, or null (a bundled robot or a new one)
      * @param bundled the robots offered under Start from
-     * @param trial puts a robot into the main window's arena and restarts its run; returns what it did, one line
+     * @param trial puts a robot (and its file when the file holds it, else null) into the main window's arena and
+     *     restarts its run; returns what it did, one line
      */
     public RobotEditor(RobotFileStore store, RobotType start, Path file, List<RobotType> bundled,
-            Function<RobotType, String> trial) {
+            BiFunction<RobotType, Path, String> trial) {
         this.store = store;
         this.trial = trial;
         draft = new RobotDraft(store, start, file);
@@ -195,7 +198,12 @@ public final class RobotEditor {
     }
 
     private void tryInArena() {
-        note(trial.apply(draft.type()));
+        String done = trial.apply(draft.type(), draft.dirty() ? null : draft.file());
+        if (done.startsWith(NOT_TRIED)) {
+            said(done.substring(NOT_TRIED.length()));
+        } else {
+            note(done);
+        }
     }
 
     private boolean mayDrop(String doing) {

@@ -1,35 +1,51 @@
 package org.kheperasim.sim.gui.robot;
 
+import java.io.IOException;
+import java.io.UncheckedIOException;
 import java.nio.file.Path;
 import java.util.List;
+import org.kheperasim.sim.engine.robot.RobotFileReader;
+import org.kheperasim.sim.engine.robot.RobotFileWriter;
 import org.kheperasim.sim.engine.robot.RobotType;
 import org.kheperasim.sim.engine.robot.RobotTypes;
+import org.kheperasim.sim.files.AtomicFiles;
 
 /**
- * The robot editor's robot files. Until the robot file's reader and writer are merged (branch
- * {@code robots}), it offers the Khepera I and refuses to read or write a file.
+ * The robot editor's robot files: read by {@link RobotTypes#load}, written by
+ * {@link RobotFileWriter} (atomically), and an edited robot checked by writing it and reading it
+ * back with {@link RobotFileReader}, so that the editor refuses what a saved file could not hold.
  */
 public final class RobotFiles implements RobotFileStore {
-    private static final String NOT_YET = "robot files cannot be read or written in this build yet (the reader and"
-            + " writer come with the robots branch); edit a bundled robot and use Try in arena";
+    /** The name a check's text goes by, cut from the reader's message. */
+    private static final String CHECKED = "edited robot";
 
     /** @return the bundled robots, the default first */
     public static List<RobotType> bundled() {
-        return List.of(RobotTypes.KHEPERA1);
+        return RobotTypes.all();
     }
 
     @Override
     public RobotType load(Path file) {
-        throw new IllegalStateException(NOT_YET);
+        return RobotTypes.load(file);
     }
 
     @Override
     public void save(RobotType type, Path file) {
-        throw new IllegalStateException(NOT_YET);
+        try {
+            AtomicFiles.write(file, RobotFileWriter.write(type));
+        } catch (IOException e) {
+            throw new UncheckedIOException(e.getMessage(), e);
+        }
     }
 
     @Override
     public String problem(RobotType type) {
-        return null;
+        try {
+            RobotFileReader.parse(CHECKED, RobotFileWriter.write(type));
+            return null;
+        } catch (RuntimeException e) {
+            String m = String.valueOf(e.getMessage());
+            return m.replaceFirst("^" + CHECKED + ":\\d+: ", "");
+        }
     }
 }
