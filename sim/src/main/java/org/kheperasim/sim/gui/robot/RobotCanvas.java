@@ -46,6 +46,7 @@ final class RobotCanvas extends JComponent {
         setPreferredSize(new Dimension(520, 520));
         setBackground(Color.WHITE);
         setOpaque(true);
+        setToolTipText("drag a sensor's dot to move it, the handle at its beam's tip to turn it");
         draft.onChange(this::repaint);
         MouseAdapter m = new MouseAdapter() {
             @Override
@@ -180,9 +181,8 @@ final class RobotCanvas extends JComponent {
                 t.name(), RobotChecks.num(r), RobotChecks.num(t.drive().wheelBaseMm()), RobotChecks.num(GRID_MM)), 6, 14);
         RobotType.Sensor c0 = t.sensor(draft.selected());
         g.setColor(new Color(200, 40, 10));
-        g.drawString(String.format(java.util.Locale.ROOT, "sensor %d %s at (%s, %s) mm, heading %s deg: drag its dot to move it,"
-                + " the handle at its beam's tip to turn it", draft.selected(), c0.name(), RobotChecks.num(c0.xMm()),
-                RobotChecks.num(c0.yMm()), RobotChecks.num(c0.headingDeg())), 6, 28);
+        g.drawString(String.format(java.util.Locale.ROOT, "sensor %d %s at (%s, %s) mm, heading %s deg", draft.selected(),
+                c0.name(), RobotChecks.num(c0.xMm()), RobotChecks.num(c0.yMm()), RobotChecks.num(c0.headingDeg())), 6, 28);
         g.dispose();
     }
 

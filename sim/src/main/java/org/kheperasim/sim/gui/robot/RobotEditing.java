@@ -13,6 +13,7 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.RobotKind;
 import org.kheperasim.sim.edit.EditorModel;
 import org.kheperasim.sim.engine.robot.RobotType;
+import org.kheperasim.sim.engine.robot.RobotTypes;
 
 /**
  * The main window's Robot menu: Edit robot (the selected robot's type), Open robot file, New
@@ -51,7 +52,19 @@ public final class RobotEditing {
 
     /** Robot > Edit robot: the editor on the selected robot's type. @return the editor */
     public RobotEditor editSelected() {
-        return show(model.arena().robotType(index()), null);
+        RobotKind k = model.arena().robotKinds().get(index());
+        Path f = RobotTypes.BUNDLED.contains(k.spec()) ? null : Path.of(k.spec());
+        // Saved back to its file only when the line named the file in full (a relative one is the arena file's).
+        boolean own = f != null && f.isAbsolute() && java.nio.file.Files.isRegularFile(f) && holds(f, k.type());
+        return show(k.type(), own ? f : null);
+    }
+
+    private boolean holds(Path f, RobotType t) {
+        try {
+            return store.load(f).equals(t);
+        } catch (RuntimeException e) {
+            return false;
+        }
     }
 
     /** Robot > Open robot file: asks for a file, then edits it. */
