@@ -82,7 +82,7 @@ public abstract class Controller extends Thread {
      * @return proximity at that sensor, 0..1023, higher = nearer
      */
     protected final int proximity(IrSensor sensor) {
-        return sensors[sensor.index()].getDistValue();
+        return sensor(sensor).getDistValue();
     }
 
     /**
@@ -90,10 +90,16 @@ public abstract class Controller extends Thread {
      * @return ambient light at that sensor, 0..1023, lower = brighter
      */
     protected final int light(IrSensor sensor) {
-        return sensors[sensor.index()].getLightValue();
+        return sensor(sensor).getLightValue();
     }
 
-    /** @return all eight live sensors, index order 0..7 */
+    /** @return the live sensor of that index; a robot without it refuses, naming itself and its sensors */
+    private Sensor sensor(IrSensor sensor) {
+        int i = sensor.index();
+        return i < sensors.length ? sensors[i] : robot.getSensor(sensor);
+    }
+
+    /** @return all the robot's live sensors, in its index order (the Khepera's eight: 0..7) */
     protected final Sensor[] sensors() {
         return sensors;
     }

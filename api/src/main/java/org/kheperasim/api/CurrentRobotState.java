@@ -23,9 +23,9 @@ public final class CurrentRobotState {
     /** @param port the backend behind the view (backends construct this, students do not) */
     public CurrentRobotState(RobotPort port) {
         this.port = port;
-        sensors = new Sensor[IrSensor.COUNT];
-        for (IrSensor s : IrSensor.values()) {
-            sensors[s.index()] = new Sensor(port, s);
+        sensors = new Sensor[port.sensorCount()];
+        for (int i = 0; i < sensors.length; i++) {
+            sensors[i] = new Sensor(port, port.mount(i));
         }
         motor = new Motor(port);
         gripper = new Gripper(port);
@@ -33,7 +33,7 @@ public final class CurrentRobotState {
     }
 
     /**
-     * @return the eight IR sensors, indexed 0..7 in the robot's order (see {@link IrSensor}); a new
+     * @return the robot's IR sensors in its order (the Khepera's eight: see {@link IrSensor}); a new
      *     array each call, holding the same live {@link Sensor} objects
      */
     public Sensor[] getSensorValues() {
@@ -41,11 +41,32 @@ public final class CurrentRobotState {
     }
 
     /**
-     * @param which a sensor position
+     * @param which a sensor position: the Khepera's names, which on another robot name the sensor of
+     *     that index (the bundled robots list theirs in the Khepera's order)
      * @return that live sensor
+     * @throws IllegalArgumentException naming the robot when it has no sensor of that index
      */
     public Sensor getSensor(IrSensor which) {
-        return sensors[which.index()];
+        return getSensor(which.index());
+    }
+
+    /**
+     * @param index a sensor index, 0 to the robot's sensor count - 1
+     * @return that live sensor
+     * @throws IllegalArgumentException naming the robot and its sensors when there is none of that index
+     */
+    public Sensor getSensor(int index) {
+        if (index < 0 || index >= sensors.length) {
+            throw new IllegalArgumentException("sensor " + index + (index >= 0 && index < IrSensor.COUNT ? " (" + IrSensor.of(index) + ")" : "")
+                    + " does not exist: this robot (" + port.robotName() + ") has " + sensors.length + " sensors, 0.."
+                    + (sensors.length - 1) + "; the controller was written for another robot (see docs/robot-files.md)");
+        }
+        return sensors[index];
+    }
+
+    /** @return the robot's name ({@code khepera1}, {@code epuck}, or a robot file's) */
+    public String getRobotName() {
+        return port.robotName();
     }
 
     /** @return the wheel motors and position counters */

@@ -3,16 +3,17 @@ package org.kheperasim.api;
 import org.kheperasim.api.spi.RobotPort;
 
 /**
- * One of the Khepera's eight infrared sensors. A live view: the object a controller fetched once
- * keeps returning fresh readings, as the robot's poll loop (or the simulator) refreshes them.
+ * One of the robot's infrared sensors (the Khepera's eight, or those of its robot file). A live
+ * view: the object a controller fetched once keeps returning fresh readings, as the robot's poll
+ * loop (or the simulator) refreshes them.
  */
 public final class Sensor {
     private final RobotPort port;
-    private final IrSensor position;
+    private final SensorMount mount;
 
-    Sensor(RobotPort port, IrSensor position) {
+    Sensor(RobotPort port, SensorMount mount) {
         this.port = port;
-        this.position = position;
+        this.mount = mount;
     }
 
     /**
@@ -20,26 +21,39 @@ public final class Sensor {
      *     about 600 at 15–20 mm, a few tens beyond 50 mm)
      */
     public int getDistValue() {
-        return port.proximity(position.index());
+        return port.proximity(mount.index());
     }
 
     /** @return the latest ambient-light reading, 0..1023: lower is brighter (about 480 in the dark) */
     public int getLightValue() {
-        return port.ambientLight(position.index());
+        return port.ambientLight(mount.index());
     }
 
-    /** @return this sensor's index, 0..7 */
+    /** @return this sensor's index, 0 to the robot's sensor count - 1 (0..7 on a Khepera) */
     public int getIndex() {
-        return position.index();
+        return mount.index();
     }
 
-    /** @return where this sensor sits on the robot and which way it looks */
+    /**
+     * @return the Khepera sensor of this index (on another robot the one at the same place in the
+     *     Khepera's order: see docs/robot-files.md)
+     * @throws IllegalStateException for an index the Khepera does not have (a ninth sensor and beyond)
+     */
     public IrSensor getPosition() {
-        return position;
+        if (mount.index() >= IrSensor.COUNT) {
+            throw new IllegalStateException("sensor " + mount.index() + " (" + mount.name() + ") has no Khepera name;"
+                    + " use getMount() for where it sits");
+        }
+        return IrSensor.of(mount.index());
+    }
+
+    /** @return where this sensor sits on its robot, which way it looks, and its name there */
+    public SensorMount getMount() {
+        return mount;
     }
 
     @Override
     public String toString() {
-        return "Sensor " + position.index() + " (" + position + ")";
+        return "Sensor " + mount.index() + " (" + mount.name() + ")";
     }
 }

@@ -93,7 +93,7 @@ public abstract class StepController {
      * @return proximity at that sensor, 0..1023, higher = nearer
      */
     protected final int proximity(IrSensor sensor) {
-        return sensors[sensor.index()].getDistValue();
+        return sensor(sensor).getDistValue();
     }
 
     /**
@@ -101,10 +101,16 @@ public abstract class StepController {
      * @return ambient light at that sensor, 0..1023, lower = brighter
      */
     protected final int light(IrSensor sensor) {
-        return sensors[sensor.index()].getLightValue();
+        return sensor(sensor).getLightValue();
     }
 
-    /** @return the eight sensors, live, in the robot's order (see {@link IrSensor}) */
+    /** @return the live sensor of that index; a robot without it refuses, naming itself and its sensors */
+    private Sensor sensor(IrSensor sensor) {
+        int i = sensor.index();
+        return i < sensors.length ? sensors[i] : robot.getSensor(sensor);
+    }
+
+    /** @return the robot's sensors, live, in its order (the Khepera's eight: see {@link IrSensor}) */
     protected final Sensor[] sensors() {
         return sensors;
     }

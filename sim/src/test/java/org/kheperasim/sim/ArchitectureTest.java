@@ -67,9 +67,21 @@ class ArchitectureTest {
 
     @Test
     void theArenaModelStandsAlone() {
+        // The robot types (engine.robot) are data below the arena, which names each robot's type; the
+        // rest of the engine is above it.
         noClasses().that().resideInAPackage("..sim.arena..")
-                .should().dependOnClassesThat().resideInAnyPackage("..sim.engine..", "..sim.host..", "..sim.run..",
-                        "..sim.gui..", "..sim.cli..", "..sim.serve..", "..sim.edit..", "..sim.task..", "..sim.grade..")
+                .should().dependOnClassesThat(JavaClass.Predicates.resideInAnyPackage("..sim.engine..", "..sim.host..",
+                        "..sim.run..", "..sim.gui..", "..sim.cli..", "..sim.serve..", "..sim.edit..", "..sim.task..",
+                        "..sim.grade..").and(DescribedPredicate.not(JavaClass.Predicates.resideInAPackage("..sim.engine.robot.."))))
+                .check(sim);
+    }
+
+    @Test
+    void theRobotTypesStandBelowTheEngine() {
+        noClasses().that().resideInAPackage("..sim.engine.robot..")
+                .should().dependOnClassesThat(JavaClass.Predicates.resideInAPackage("..sim..")
+                        .and(DescribedPredicate.not(JavaClass.Predicates.resideInAnyPackage("..sim.engine.robot..", "..sim.files.."))))
+                .because("a robot type is data: it is read from a file and knows nothing of the engine that runs it")
                 .check(sim);
     }
 

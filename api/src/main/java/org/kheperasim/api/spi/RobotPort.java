@@ -158,4 +158,32 @@ public interface RobotPort {
     default org.kheperasim.api.Parameters parameters() {
         return org.kheperasim.api.Parameters.NONE;
     }
+
+    /** @return the robot's name ({@code khepera1}, {@code epuck}); by default the Khepera I */
+    default String robotName() {
+        return "khepera1";
+    }
+
+    /** @return how many infrared sensors the robot has; by default the Khepera's eight */
+    default int sensorCount() {
+        return org.kheperasim.api.IrSensor.COUNT;
+    }
+
+    /**
+     * @param index a sensor, 0 to {@link #sensorCount()} - 1
+     * @return where it sits and which way it looks; by default the Khepera's ({@link org.kheperasim.api.IrSensor})
+     */
+    default org.kheperasim.api.SensorMount mount(int index) {
+        return org.kheperasim.api.SensorMount.of(org.kheperasim.api.IrSensor.of(index));
+    }
+
+    /** @return the largest speed magnitude the robot accepts, its speed units; by default the Khepera's 127 */
+    default int maxSpeed() {
+        return org.kheperasim.api.Motor.MAX_SPEED;
+    }
+
+    /** @return the wheel speed of one speed unit, mm/s; by default the Khepera's 8 */
+    default double mmPerSecondPerUnit() {
+        return 8;
+    }
 }

@@ -34,4 +34,9 @@ class DelegatingPort implements RobotPort {
     @Override public int visionDarkest() { return target.visionDarkest(); }
     @Override public java.util.Optional<org.kheperasim.api.spi.TruePose> truePose() { return target.truePose(); }
     @Override public String option(String key) { return target.option(key); }
+    @Override public String robotName() { return target.robotName(); }
+    @Override public int sensorCount() { return target.sensorCount(); }
+    @Override public org.kheperasim.api.SensorMount mount(int index) { return target.mount(index); }
+    @Override public int maxSpeed() { return target.maxSpeed(); }
+    @Override public double mmPerSecondPerUnit() { return target.mmPerSecondPerUnit(); }
 }

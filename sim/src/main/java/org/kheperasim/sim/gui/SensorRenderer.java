@@ -12,7 +12,8 @@ import java.awt.geom.Rectangle2D;
 import java.awt.geom.RoundRectangle2D;
 import java.util.Locale;
 import org.kheperasim.api.GripperState;
-import org.kheperasim.api.IrSensor;
+import org.kheperasim.sim.engine.robot.RobotType;
+import org.kheperasim.sim.engine.robot.RobotTypes;
 import org.kheperasim.sim.engine.GripperTurret;
 import org.kheperasim.sim.engine.GripperView;
 import org.kheperasim.sim.engine.RobotView;
@@ -98,32 +99,35 @@ public final class SensorRenderer {
         g.draw(new Line2D.Double(cx - body - 1, cy - 8, cx - body - 1, cy + 8));
         g.draw(new Line2D.Double(cx + body + 1, cy - 8, cx + body + 1, cy + 8));
         FontMetrics fm = g.getFontMetrics();
-        for (IrSensor s : IrSensor.values()) {
+        RobotType type = r == null ? RobotTypes.KHEPERA1 : r.type();
+        for (int index = 0; index < type.sensorCount(); index++) {
+            RobotType.Sensor s = type.sensor(index);
             // Sensor position on the body: x forward, y left in the robot's frame; page up = forward.
             double ang = StrictMath.atan2(s.yMm(), s.xMm());
             double px = cx - body * StrictMath.sin(ang);
             double py = cy - body * StrictMath.cos(ang);
             g.setColor(new Color(0x202020));
             g.fill(new Ellipse2D.Double(px - 3, py - 3, 6, 6));
-            int prox = r == null ? 0 : r.proximity(s.index());
-            int light = r == null ? 0 : r.light(s.index());
+            int prox = r == null || index >= r.sensorCount() ? 0 : r.proximity(index);
+            int light = r == null || index >= r.sensorCount() ? 0 : r.light(index);
             double lx = cx - (body + 50) * StrictMath.sin(ang);
             double ly = cy - (body + 50) * StrictMath.cos(ang);
             // Labels need room: the back sensors sit side by side, spread them apart.
-            if (s.index() == 2) {
+            // (The bundled robots list their sensors in the Khepera's order: 2 and 3 ahead, 6 and 7 behind.)
+            if (index == 2) {
                 lx -= 34;
                 ly -= 6;
-            } else if (s.index() == 3) {
+            } else if (index == 3) {
                 lx += 34;
                 ly -= 6;
-            } else if (s.index() == 6) {
+            } else if (index == 6) {
                 lx += 36;
                 ly = cy + body + 32;
-            } else if (s.index() == 7) {
+            } else if (index == 7) {
                 lx -= 36;
                 ly = cy + body + 32;
             }
-            drawReading(g, fm, lx, ly, s.index(), prox, light, r != null);
+            drawReading(g, fm, lx, ly, index, prox, light, r != null);
         }
         double y = ROBOT_AREA + 10;
         GripperView gv = r == null ? null : r.gripper();

@@ -218,6 +218,34 @@ final class SimulatedRobotPort implements RobotPort {
         return robot.parameters();
     }
 
+    // The robot's description is free too: it is what the robot is, not a reading (no time passes).
+
+    @Override
+    public String robotName() {
+        return robot.type().name();
+    }
+
+    @Override
+    public int sensorCount() {
+        return robot.type().sensorCount();
+    }
+
+    @Override
+    public org.kheperasim.api.SensorMount mount(int index) {
+        org.kheperasim.sim.engine.robot.RobotType.Sensor s = robot.type().sensor(index);
+        return new org.kheperasim.api.SensorMount(index, s.name(), s.xMm(), s.yMm(), s.headingDeg());
+    }
+
+    @Override
+    public int maxSpeed() {
+        return robot.type().drive().maxSpeed();
+    }
+
+    @Override
+    public double mmPerSecondPerUnit() {
+        return robot.type().drive().mmPerSecondPerUnit();
+    }
+
     @Override
     public String option(String key) {
         return Settings.catalogue().containsKey(key) ? robot.settings().raw(key) : null;

@@ -18,7 +18,6 @@ final class LinkRecordingReader {
     static final String MAGIC = "# khepera-link recording";
     private static final int COLUMNS = 21;
     /** Wheel travel per pulse, mm: the default of the setting {@code encoder.mmPerPulse}. */
-    private static final double MM_PER_PULSE = RobotTypes.KHEPERA1.drive().mmPerPulse();
 
     private LinkRecordingReader() {
     }
@@ -67,8 +66,8 @@ final class LinkRecordingReader {
                 ch[RobotSeries.SPEED] = Integer.parseInt(f[19]);
                 ch[RobotSeries.SPEED + 1] = Integer.parseInt(f[20]);
                 if (!first) {
-                    double dl = (posL - prevL) * MM_PER_PULSE;
-                    double dr = (posR - prevR) * MM_PER_PULSE;
+                    double dl = (posL - prevL) * RobotTypes.KHEPERA1.drive().mmPerPulse();
+                    double dr = (posR - prevR) * RobotTypes.KHEPERA1.drive().mmPerPulse();
                     double turn = (dr - dl) / RobotTypes.KHEPERA1.drive().wheelBaseMm();
                     double mid = heading + turn / 2;
                     x += (dl + dr) / 2 * StrictMath.cos(mid);
