@@ -27,10 +27,11 @@ import org.kheperasim.sim.gui.robot.RobotFiles;
  * JVM: Robot > Edit robot on the Khepera I; a sensor turned by dragging its beam's handle and the
  * wheel base typed into the sheet (a bad value refused first); saved, and the file read back; Try
  * in arena (the run restarts with the edited robot); a robot file from scratch opened and run in
- * the arena; a robot designed in the editor from scratch run; a 3-sensor robot drawn and saved.
+ * the arena; a robot designed in the editor from scratch run; a 3-sensor robot drawn, saved, refused
+ * by name to Braitenberg and run by a controller written for any robot's sensors.
  * Screenshots under the output folder.
  *
- * <p>Arguments: output folder, the from-scratch robot file.
+ * <p>Arguments: output folder, the from-scratch robot file, the source of a controller written for any robot.
  */
 public final class RobotEditorDriver {
     /** The robot files as the editor reads and writes them. */
@@ -42,6 +43,7 @@ public final class RobotEditorDriver {
     public static void main(String[] args) throws Exception {
         Path out = Path.of(args[0]);
         Path scratchFile = Path.of(args[1]);
+        Path anyRobot = Path.of(args[2]);
         Path dir = Files.createDirectories(out.resolve("robot-editor"));
         int code = Main.commandLine().execute("gui", "--arena", "lab", "--controller", "Braitenberg", "--seed", "5");
         if (code != 0) {
@@ -169,6 +171,33 @@ public final class RobotEditorDriver {
             fail("the 3-sensor robot did not save and read back: " + tri.messageText());
         }
         System.out.println("3-sensor robot saved to " + triFile + " and read back");
+
+        // The 3-sensor robot in the arena: Braitenberg, written for the Khepera's eight, is refused by name;
+        // a controller written for any robot's sensors (compiled in the window, as Controller > Open .java) runs it.
+        SwingUtilities.invokeAndWait(tri::tryIt);
+        long t0 = System.nanoTime();
+        while (!w.consoleText().contains("this robot (tri) has 3 sensors") && System.nanoTime() - t0 < 30_000_000_000L) {
+            Thread.sleep(50);
+        }
+        if (!w.consoleText().contains("this robot (tri) has 3 sensors")) {
+            fail("Braitenberg on the 3-sensor robot should be refused by name; the console says:\n" + w.consoleText());
+        }
+        settle(robot);
+        SwingUtilities.invokeAndWait(() -> w.frame().toFront());
+        settle(robot);
+        GuiE2EDriver.shot(robot, w, dir.resolve("window-4-tri-braitenberg-refused.png"));
+        if (!onEdt(() -> w.compileAndUse(anyRobot))) {
+            fail("AnyRobotAvoider did not compile: " + w.consoleText());
+        }
+        SwingUtilities.invokeAndWait(w::start);
+        RobotView triRan = runPast(w, 20).robots().get(0);
+        if (triRan.type().sensorCount() != 3 || triRan.distanceMm() < 150) {
+            fail("the 3-sensor robot should run AnyRobotAvoider: " + triRan.type().name() + " went " + triRan.distanceMm() + " mm");
+        }
+        System.out.printf(Locale.ROOT, "3-sensor robot: Braitenberg refused by name; AnyRobotAvoider went %.0f mm in 20 s%n",
+                triRan.distanceMm());
+        pause(w, robot);
+        GuiE2EDriver.shot(robot, w, dir.resolve("window-5-tri-runs.png"));
         System.out.println("ROBOT EDITOR OK");
         SwingUtilities.invokeAndWait(() -> {
             tri.frame().dispose();
