@@ -54,6 +54,7 @@ public final class MainWindow {
     private final WindowMenus menus;
     private final ArenaFileActions files;
     private final RecordingActions recordings;
+    private final org.kheperasim.sim.gui.robot.RobotEditing robotEditing;
     private FramePainter painter;
     private WindowKeys windowKeys;
 
@@ -99,6 +100,13 @@ public final class MainWindow {
             commands.refresh();
             frame.setTitle(title());
         });
+        robotEditing = new org.kheperasim.sim.gui.robot.RobotEditing(frame, model, robotSelection::index, runs::discard, () -> {
+            runs.start();
+            actions.refresh();
+        }, new org.kheperasim.sim.gui.robot.RobotFiles(), org.kheperasim.sim.gui.robot.RobotFiles.bundled());
+        actions.add("editRobot", "Edit robot…", "the selected robot's type in the robot editor", null, robotEditing::editSelected);
+        actions.add("openRobot", "Open robot file…", "a robot file in the robot editor", null, robotEditing::openFile);
+        actions.add("newRobot", "New robot…", "design a robot from scratch in the robot editor", null, robotEditing::newRobot);
         menus = new WindowMenus(actions, runs::setSpeed);
         wireModel();
         frame.setJMenuBar(menus.menuBar(files.recentMenu(), model, menus.viewMenu(arenaView), menus.trustToggle(choices, console)));
@@ -296,6 +304,11 @@ public final class MainWindow {
     /** @return the live run's score now, or null without a run or without tasks (tests) */
     org.kheperasim.sim.task.Score score() {
         return runs.scoreNow();
+    }
+
+    /** @return the Robot menu's editors (tests) */
+    org.kheperasim.sim.gui.robot.RobotEditing robotEditing() {
+        return robotEditing;
     }
 
     /** @return the plot (tests) */

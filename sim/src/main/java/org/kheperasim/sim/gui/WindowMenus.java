@@ -108,6 +108,7 @@ final class WindowMenus {
         controllerMenu.addSeparator();
         controllerMenu.add(trust);
         bar.add(controllerMenu);
+        bar.add(menu("Robot", KeyEvent.VK_B, "editRobot", "openRobot", "newRobot"));
         bar.add(menu("Settings", KeyEvent.VK_S, "settings"));
         bar.add(menu("Help", KeyEvent.VK_H, "quickStart", "manual"));
         return bar;

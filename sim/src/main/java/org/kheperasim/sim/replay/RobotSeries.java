@@ -53,7 +53,9 @@ public final class RobotSeries {
     /** @param t simulated time, s (not before the last sample's) @param r the robot then */
     public void add(double t, RobotView r) {
         int[] ch = new int[CHANNELS];
-        for (int i = 0; i < 8; i++) {
+        // Eight sensor channels whatever the robot, as the trace's columns: one with fewer keeps 0 in the rest.
+        int n = StrictMath.min(8, r.sensorCount());
+        for (int i = 0; i < n; i++) {
             ch[PROXIMITY + i] = r.proximity(i);
             ch[LIGHT + i] = r.light(i);
         }
