@@ -41,6 +41,8 @@ public abstract class RobotController implements Controller {
     private volatile boolean finished;
     private volatile boolean running;
     private volatile Thread thread;
+    /** Robot time its constructor slept, ms: it passes when its thread starts (see {@link #sleep}). */
+    private volatile long constructorSleep;
 
     /** Does nothing: the simulator connects the controller to the robot in {@link #initialize}. */
     public RobotController() {
@@ -113,6 +115,9 @@ public abstract class RobotController implements Controller {
      */
     void runFromBackend() {
         try {
+            long slept = constructorSleep;
+            constructorSleep = 0;
+            pause(slept);
             simStart();
         } catch (RuntimeException e) {
             closeAndRethrow(e);
@@ -173,12 +178,34 @@ public abstract class RobotController implements Controller {
 
     /**
      * Sleep for robot time (simulated time in the simulator). An interruption ends it early and is
-     * swallowed.
+     * swallowed. Called in the constructor, as the simulator or robot-link creates the controller
+     * (course code did, as the original allowed it), it is a plain sleep too: the robot's clock runs
+     * from the start of the run, so that time passes first, on the controller's thread before
+     * {@link #simStart()}.
      *
      * @param ms milliseconds; 0 or less does not sleep
      */
     public void sleep(long ms) {
-        robot().sleep(ms);
+        CurrentRobotState s = state;
+        if (s != null) {
+            s.sleep(ms);
+        } else if (ms > 0 && Boolean.TRUE.equals(BACKEND_CREATING.get())) {
+            // In the constructor, as the simulator or robot-link creates it: the original slept there
+            // plainly. The robot's clock starts with the run, so the time passes first thing on the
+            // controller's own thread, before simStart().
+            constructorSleep += ms;
+        } else if (ms > 0) {
+            plainSleep(ms);
+        }
+    }
+
+    /** Not created by a backend, not connected: a plain sleep of the caller's thread, interruptions swallowed. */
+    private static void plainSleep(long ms) {
+        try {
+            Thread.sleep(ms);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 
     private void pause(long ms) {

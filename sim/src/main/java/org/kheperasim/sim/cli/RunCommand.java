@@ -109,6 +109,12 @@ final class RunCommand implements Callable<Integer> {
     @Override
     public Integer call() throws java.io.IOException {
         if (sandbox) {
+            String c = controllerOptions.controller().strip();
+            if (c.endsWith(".java") && java.nio.file.Files.isRegularFile(Path.of(c))) {
+                throw new org.kheperasim.api.spi.ControllerException("--sandbox runs compiled classes, and " + c + " is a"
+                        + " source: compile it first, javac -cp khepera-sim.jar -d out " + c + ", then give --classpath out"
+                        + " --controller " + Path.of(c).getFileName().toString().replaceFirst("\\.java$", ""));
+            }
             return inTheBox();
         }
         Settings settings = settingsOptions.settings();
@@ -117,10 +123,12 @@ final class RunCommand implements Callable<Integer> {
         HtmlPage[] page = new HtmlPage[1]; // set once the run is configured; the console writes to it
         FailureLines failures = new FailureLines();
         EditLog editLog = edits == null ? null : EditLog.load(edits);
+        SourceController.Compiled chosen = SourceController.of(controllerOptions.controller(), controllerOptions.classpath(),
+                System.err);
         Simulation.Builder run = Simulation.builder()
                 .arena(resolved)
-                .controller(controllerOptions.controller())
-                .classpath(controllerOptions.classpath())
+                .controller(chosen.controller())
+                .classpath(chosen.classpath())
                 .trusted(trusted)
                 .seconds(controllerOptions.seconds(resolved.assignment().secondsOr(DEFAULT_SECONDS)))
                 .settings(settings)

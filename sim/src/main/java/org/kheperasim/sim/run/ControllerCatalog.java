@@ -84,7 +84,16 @@ public final class ControllerCatalog {
                 throw hint != null ? new ControllerException("no controller named '" + name + "': " + hint)
                         : ControllerNames.notFound(name, BUNDLED, classpath, "khepera-sim.jar");
             }
-            Class<?> type = ControllerNames.resolve(name, loader, BUNDLED, classpath, "khepera-sim.jar");
+            Class<?> type;
+            try {
+                type = ControllerNames.resolve(name, loader, BUNDLED, classpath, "khepera-sim.jar");
+            } catch (ControllerException | LinkageError e) {
+                String both = bothDefine(loader);
+                if (both == null || e instanceof ControllerPolicyError) {
+                    throw e;
+                }
+                throw new ControllerException("controller " + name + " cannot be loaded: " + e.getMessage() + "; " + both, e);
+            }
             if (SharedControllers.offer(classpath, name, type, loader)) {
                 loaded.put(name, type);
             }
@@ -94,6 +103,20 @@ public final class ControllerCatalog {
         } catch (ClassFormatError e) { // a class file too large, malformed or too new: the message names it and the fix
             throw new ControllerException("controller " + name + " cannot be loaded: " + e.getMessage(), e);
         }
+    }
+
+    /**
+     * @return what to say of the names in the simulator's packages that the classpath defines too
+     *     (a course's copy of the original simulator's classes), or null when there are none
+     */
+    private static String bothDefine(ControllerClassLoader loader) {
+        List<String> both = loader.shadowed();
+        if (both.isEmpty()) {
+            return null;
+        }
+        return both.get(0) + (both.size() > 1 ? " (and " + (both.size() - 1) + " more)" : "") + " is defined by both the"
+                + " simulator and the classpath: the simulator's own class is used, the classpath's ignored; remove it from"
+                + " the classpath, or name your class otherwise";
     }
 
     /** @return true when some class the name may mean can be found (loaded, not initialised) */

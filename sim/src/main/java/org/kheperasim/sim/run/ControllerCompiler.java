@@ -108,9 +108,58 @@ public final class ControllerCompiler {
         String text = Files.readString(source, StandardCharsets.UTF_8);
         String simple = source.getFileName().toString().replaceFirst("\\.java$", "");
         Matcher m = PACKAGE.matcher(text);
-        String className = m.find() ? m.group(1) + "." + simple : simple;
-        Result r = compileAll(javac, List.of(source), classes, false);
-        return new Result(r.success(), className, classes, r.problems());
+        String pkg = m.find() ? m.group(1) : null;
+        String className = pkg != null ? pkg + "." + simple : simple;
+        Path folder = source.toAbsolutePath().getParent();
+        Path root = folder;
+        for (int i = 0; pkg != null && i <= pkg.length() - pkg.replace(".", "").length() && root != null; i++) {
+            root = root.getParent();
+        }
+        // With the other .java files of its folder, as grade compiles a hand-in; classes of other folders
+        // (packaged helpers) are found through the source path as they are named.
+        List<Path> together = new ArrayList<>(List.of(source));
+        try (java.util.stream.Stream<Path> list = Files.list(folder)) {
+            list.filter(p -> p.toString().endsWith(".java") && Files.isRegularFile(p))
+                    .filter(p -> !p.toAbsolutePath().equals(source.toAbsolutePath())).sorted().forEach(together::add);
+        }
+        List<String> sourcepath = root == null ? List.of() : List.of("-sourcepath", root.toString());
+        Result r = compileAll(javac, together, classes, false, sourcepath);
+        if (!r.success() && together.size() > 1 && r.problems().stream()
+                .noneMatch(p -> p.error() && (p.source() == null || p.source().equals(source.getFileName().toString())))) {
+            // Only files it does not use failed: the controller alone, with what it names from the folder.
+            r = compileAll(javac, List.of(source), classes, false, sourcepath);
+        }
+        if (!r.success() && pkg == null && !MissingImports.apiClasses(r.problems()).isEmpty()) {
+            Result imported = compileWithApiImport(javac, source, text, together, classes, sourcepath);
+            if (imported.success()) {
+                List<Problem> problems = new ArrayList<>(List.of(new Problem(false, 1, 0, "it names the API's classes ("
+                        + String.join(", ", MissingImports.apiClasses(r.problems())) + ") without importing them: compiled as"
+                        + " if its first line were `" + MissingImports.API_IMPORT + "`; add that line")));
+                problems.addAll(imported.problems());
+                return new Result(true, className, classes, problems);
+            }
+        }
+        return new Result(r.success(), className, classes, MissingImports.annotate(r.problems()));
+    }
+
+    /** The default-package source compiled as if its first line imported the API (the original compiled beside it). */
+    private static Result compileWithApiImport(JavaCompiler javac, Path source, String text, List<Path> together,
+            Path classes, List<String> sourcepath) throws IOException {
+        Path copyDir = Files.createTempDirectory("khepera-import");
+        try {
+            Path copy = copyDir.resolve(source.getFileName().toString());
+            org.kheperasim.sim.files.AtomicFiles.write(copy, MissingImports.withApiImport(text));
+            List<Path> files = new ArrayList<>(together);
+            files.set(0, copy);
+            return compileAll(javac, files, classes, false, sourcepath);
+        } finally {
+            try (java.util.stream.Stream<Path> left = Files.list(copyDir)) {
+                for (Path p : left.toList()) {
+                    Files.deleteIfExists(p);
+                }
+            }
+            Files.deleteIfExists(copyDir);
+        }
     }
 
     /**
@@ -128,15 +177,16 @@ public final class ControllerCompiler {
         if (javac == null) {
             throw new IllegalStateException("this Java runtime has no compiler (it is a JRE, not a JDK); grade with a JDK 17+");
         }
-        return compileAll(javac, sources, classes, true);
+        return compileAll(javac, sources, classes, true, List.of());
     }
 
-    private static Result compileAll(JavaCompiler javac, List<Path> sources, Path classes, boolean nameFiles)
-            throws IOException {
+    private static Result compileAll(JavaCompiler javac, List<Path> sources, Path classes, boolean nameFiles,
+            List<String> extraOptions) throws IOException {
         Files.createDirectories(classes);
         DiagnosticCollector<JavaFileObject> diagnostics = new DiagnosticCollector<>();
-        List<String> options = List.of("--release", "17", "-proc:none", "-g", "-d", classes.toString(),
-                "-classpath", classpath());
+        List<String> options = new ArrayList<>(List.of("--release", "17", "-proc:none", "-g", "-d", classes.toString(),
+                "-classpath", classpath()));
+        options.addAll(extraOptions);
         boolean ok;
         StringWriter out = new StringWriter();
         try (StandardJavaFileManager files = javac.getStandardFileManager(diagnostics, Locale.ROOT, StandardCharsets.UTF_8)) {
@@ -148,7 +198,9 @@ public final class ControllerCompiler {
             if (d.getKind() == Diagnostic.Kind.NOTE) {
                 continue;
             }
-            String file = nameFiles && d.getSource() != null ? Path.of(d.getSource().toUri()).getFileName().toString() : null;
+            String named = d.getSource() != null ? Path.of(d.getSource().toUri()).getFileName().toString() : null;
+            // Naming files only when asked, or when the problem is in another file than the first given.
+            String file = nameFiles || named != null && !named.equals(sources.get(0).getFileName().toString()) ? named : null;
             problems.add(new Problem(d.getKind() == Diagnostic.Kind.ERROR, StrictMath.max(0, d.getLineNumber()),
                     StrictMath.max(0, d.getColumnNumber()), d.getMessage(Locale.ROOT), file));
         }

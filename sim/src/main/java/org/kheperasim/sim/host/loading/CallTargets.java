@@ -28,6 +28,13 @@ final class CallTargets {
     /** The static methods of {@code System} that {@link SimClock} replaces, as name + descriptor. */
     private static final Set<String> SYSTEM_STATICS = Set.of("currentTimeMillis()J", "nanoTime()J");
 
+    /** The class {@code Calendar.getInstance} goes to, and the overloads it replaces (name + descriptor). */
+    static final String CALENDAR_HOOKS = Type.getInternalName(CalendarHooks.class);
+    private static final String CALENDAR = "java/util/Calendar";
+    private static final Set<String> CALENDAR_STATICS = Set.of("getInstance()Ljava/util/Calendar;",
+            "getInstance(Ljava/util/TimeZone;)Ljava/util/Calendar;", "getInstance(Ljava/util/Locale;)Ljava/util/Calendar;",
+            "getInstance(Ljava/util/TimeZone;Ljava/util/Locale;)Ljava/util/Calendar;");
+
     /** The replacement of the instance method {@code TimeUnit.sleep(long)}: the unit comes first. */
     private static final String TIME_UNIT_SLEEP_HOOK = "(L" + TIME_UNIT + ";J)V";
 
@@ -158,6 +165,10 @@ final class CallTargets {
             }
             if (owner.equals(SYSTEM) && SYSTEM_STATICS.contains(method)) {
                 return new Target(SIM_CLOCK, name, descriptor);
+            }
+            if (CALENDAR_STATICS.contains(method)
+                    && (owner.equals(CALENDAR) || CALENDAR.equals(lookup.declaringClass(owner, name, descriptor)))) {
+                return new Target(CALENDAR_HOOKS, name, descriptor);
             }
             if (contained && method.equals(HOLDS_LOCK)
                     && (owner.equals(THREAD) || lookup.resolvesToThread(owner, name, descriptor))) {

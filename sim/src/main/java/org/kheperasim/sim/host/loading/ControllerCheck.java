@@ -33,6 +33,8 @@ final class ControllerCheck {
     private final Function<String, String> where;
     /** Classes that passed: checked once per loader. */
     private final Set<String> passed = new HashSet<>();
+    /** True for trusted code: only that every class file it reaches can be read, no use refused. */
+    private final boolean headersOnly;
 
     /**
      * @param policy what is allowed
@@ -49,9 +51,20 @@ final class ControllerCheck {
      * @param where the file a class of the loader's own comes from, for messages
      */
     ControllerCheck(ControllerPolicy policy, Function<String, byte[]> localClassFile, Function<String, String> where) {
+        this(policy, localClassFile, where, false);
+    }
+
+    /**
+     * @param headersOnly true for trusted code: {@link #checkReachable} refuses only class files it
+     *     cannot read (too new, malformed), so that one reached in the middle of a run is refused
+     *     before it instead, in one line; no use is refused
+     */
+    ControllerCheck(ControllerPolicy policy, Function<String, byte[]> localClassFile, Function<String, String> where,
+            boolean headersOnly) {
         this.policy = policy;
         this.localClassFile = localClassFile;
         this.where = where;
+        this.headersOnly = headersOnly;
     }
 
     /**
@@ -101,7 +114,7 @@ final class ControllerCheck {
             throw withCause(new ClassFormatError(ClassFileHeader.malformed(where, e)), e);
         }
         visitor.refusals.sort(Comparator.comparingInt(Found::line));
-        if (!visitor.refusals.isEmpty()) {
+        if (!visitor.refusals.isEmpty() && !headersOnly) {
             Found first = visitor.refusals.get(0);
             throw ControllerPolicy.error(visitor.className, visitor.source, first.line(), first.refusal());
         }

@@ -40,8 +40,23 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
     /** Names starting with these always come from the parent. */
     private static final List<String> SHARED_PREFIXES = List.of(
             "java.", "javax.", "jdk.", "sun.", "com.sun.",
-            "org.kheperasim.api.", "org.kheperasim.sim.", "org.kheperasim.link.", "edu.wsu.KheperaSimulator.",
             "org.objectweb.asm.", "picocli.", "org.junit.", "org.opentest4j.", "org.apiguardian.");
+
+    /**
+     * The simulator's own packages: a name in one of them is the simulator's when the simulator
+     * defines it, and otherwise a class of the controller's classpath (a course's own class placed in
+     * {@code edu.wsu.KheperaSimulator} to reach the API, as a fork of the WSU simulator did). Defined
+     * by this loader, such a class is in another runtime package than the simulator's classes of the
+     * same package name, so it gets no package-private access to them (the JVM throws
+     * {@link IllegalAccessError}).
+     */
+    private static final List<String> SIMULATOR_PREFIXES = List.of(
+            "org.kheperasim.api.", "org.kheperasim.sim.", "org.kheperasim.link.", "edu.wsu.KheperaSimulator.");
+
+    /** Names in the simulator's packages that the simulator does not define, by name: decided once per loader. */
+    private final java.util.Map<String, Boolean> simulatorDefines = new java.util.concurrent.ConcurrentHashMap<>();
+    /** Names the simulator defines that a classpath entry holds too (the simulator's are used), in order. */
+    private final java.util.Set<String> shadowed = java.util.Collections.synchronizedSet(new java.util.LinkedHashSet<>());
 
     private final List<ClasspathEntry> roots;
     private final ClassHierarchy hierarchy;
@@ -80,7 +95,7 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         this.roots = open(classpath);
         this.hierarchy = new ClassHierarchy(this::localClassFile, parent);
         this.check = new ControllerCheck(new ControllerPolicy(Allowlist.bundled(), hierarchy), this::localClassFile,
-                n -> locations.getOrDefault(n, n + ".class"));
+                n -> locations.getOrDefault(n, n + ".class"), !contained);
     }
 
     /** @return the stand-ins its code locks for objects it does not own */
@@ -112,9 +127,49 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         }
     }
 
-    /** @return whether {@code className} always comes from the parent */
-    private static boolean isShared(String className) {
+    /** @return whether {@code className} comes from the parent: a platform or library name, or one the simulator defines */
+    private boolean isShared(String className) {
         for (String prefix : SHARED_PREFIXES) {
+            if (className.startsWith(prefix)) {
+                return true;
+            }
+        }
+        for (String prefix : SIMULATOR_PREFIXES) {
+            if (className.startsWith(prefix)) {
+                return simulatorDefines.computeIfAbsent(className, this::parentDefines);
+            }
+        }
+        return false;
+    }
+
+    /** @return whether the simulator (the parent) has a class file for the name; notes a copy on the classpath */
+    private boolean parentDefines(String className) {
+        String resource = className.replace('.', '/') + ".class";
+        if (getParent().getResource(resource) == null) {
+            return false;
+        }
+        for (ClasspathEntry root : roots) {
+            if (root.url(resource) != null) {
+                shadowed.add(className);
+                break;
+            }
+        }
+        return true;
+    }
+
+    /**
+     * @return the names in the simulator's packages that both the simulator and the classpath define,
+     *     as far as they were asked for: the simulator's own class is used, the classpath's ignored
+     */
+    public List<String> shadowed() {
+        synchronized (shadowed) {
+            return List.copyOf(shadowed);
+        }
+    }
+
+    /** @return whether the name is in one of the simulator's packages (then only the classpath entries hold its class file) */
+    private static boolean inSimulatorPackage(String className) {
+        for (String prefix : SIMULATOR_PREFIXES) {
             if (className.startsWith(prefix)) {
                 return true;
             }
@@ -175,15 +230,15 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         String failure = "Cannot load class " + name + " from " + found.location() + ": ";
         byte[] bytes = found.bytes();
         try {
-            if (contained) {
-                // The check reads class files through the same cache: what is defined is what was checked,
-                // even if the file changes on disk meanwhile.
-                String internalName = name.replace('.', '/');
-                locations.putIfAbsent(internalName, found.location());
-                bytes = classFiles.compute(internalName, (n, read) -> read != null && read.isPresent() ? read
-                        : java.util.Optional.of(found.bytes())).get();
-                check.checkReachable(internalName); // a bad class file's error names its file already
-            }
+            // The check reads class files through the same cache: what is defined is what was checked,
+            // even if the file changes on disk meanwhile. For trusted code it only reads them: a class
+            // file too new or malformed that the controller reaches is refused before its run, in one
+            // line, not when its code first runs into it.
+            String internalName = name.replace('.', '/');
+            locations.putIfAbsent(internalName, found.location());
+            bytes = classFiles.compute(internalName, (n, read) -> read != null && read.isPresent() ? read
+                    : java.util.Optional.of(found.bytes())).get();
+            check.checkReachable(internalName); // a bad class file's error names its file already
         } catch (ControllerPolicyError e) {
             throw withCause(new ControllerPolicyError(failure + e.getMessage()), e);
         }
@@ -218,6 +273,9 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
             if (bytes != null) {
                 return new ClassFile(bytes, root.describe(resource), root.domain);
             }
+        }
+        if (inSimulatorPackage(className)) {
+            return null; // not the simulator's (isShared), nor on the classpath
         }
         URL url = getParent().getResource(resource);
         if (url == null) {

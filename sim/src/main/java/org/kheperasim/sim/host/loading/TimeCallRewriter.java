@@ -27,7 +27,9 @@ import org.objectweb.asm.Type;
  *       {@code class Robot extends Thread} as a call of {@code Robot.sleep}) unless a class between
  *       it and {@code Thread} declares its own method of that name and descriptor;</li>
  *   <li>replaces {@code System.currentTimeMillis()} and {@code System.nanoTime()} by
- *       {@link SimClock#currentTimeMillis()} and {@link SimClock#nanoTime()};</li>
+ *       {@link SimClock#currentTimeMillis()} and {@link SimClock#nanoTime()}, and
+ *       {@code Calendar.getInstance(...)} by {@link CalendarHooks}' method of the same name and
+ *       descriptor (a calendar set to the simulated clock);</li>
  *   <li>replaces the instance call {@code unit.sleep(long)} on a {@code TimeUnit} by the static
  *       {@link SimClock#sleep(java.util.concurrent.TimeUnit, long)}, which takes the same stack;</li>
  *   <li>does the same for method handles to those methods (method references such as

@@ -244,4 +244,91 @@ class AllowlistOnRealCodeTest {
         assertEquals(List.of(), refusals(compile(dir, sources), counted));
         assertTrue(counted.contains("Styled$Reading") && counted.contains("Styled$Mode"), counted.toString());
     }
+
+    /**
+     * What public WSU course code uses, in the patterns it uses them (written here, not copied): the
+     * observer pattern, {@code java.awt} points, rectangles, sizes and colours, {@code java.awt.geom}
+     * points and lines, and a calendar; and what stays refused, with the reason naming the replacement.
+     */
+    @Test
+    void theValueClassesOfCourseCodePass() throws IOException {
+        Map<Path, String> sources = Map.of(Path.of("Mapper.java"), """
+                import edu.wsu.KheperaSimulator.RobotController;
+                import java.awt.*;
+                import java.awt.geom.*;
+                import java.util.*;
+
+                public class Mapper extends RobotController implements Observer {
+                    static class Grid extends Observable {
+                        void mark(Point p) { setChanged(); notifyObservers(p); }
+                    }
+                    private final Grid grid = new Grid();
+                    private final Map<Point, Color> seen = new HashMap<>();
+                    private Rectangle bounds = new Rectangle(0, 0, 10, 10);
+
+                    public Mapper() { grid.addObserver(this); }
+
+                    public void update(Observable o, Object arg) {
+                        Point p = (Point) arg;
+                        bounds = bounds.union(new Rectangle(p, new Dimension(1, 1)));
+                        float[] hsb = Color.RGBtoHSB(200, 10, 10, null);
+                        seen.put(p, Color.getHSBColor(hsb[0], hsb[1], hsb[2]).brighter());
+                    }
+
+                    public void doWork() throws Exception {
+                        Point2D here = new Point2D.Double(getLeftWheelPosition(), getRightWheelPosition());
+                        Line2D wall = new Line2D.Float(0, 0, 100, 0);
+                        Rectangle2D box = wall.getBounds2D();
+                        grid.mark(new Point((int) here.getX(), (int) wall.ptSegDist(here)));
+                        Calendar c = Calendar.getInstance();
+                        c.add(Calendar.SECOND, 1);
+                        AffineTransform t = AffineTransform.getRotateInstance(Math.PI / 2);
+                        t.transform(here, null);
+                        System.out.println(c.get(Calendar.MINUTE) + " " + box.getWidth() + " " + seen.size()
+                                + " " + Color.RED.getRGB() + " " + new GregorianCalendar(2001, 6, 27).getTimeInMillis());
+                    }
+
+                    public void close() throws Exception { }
+                }
+                """);
+        List<String> counted = new ArrayList<>();
+        assertEquals(List.of(), refusals(compile(dir, sources), counted));
+        assertTrue(counted.contains("Mapper$Grid"), counted.toString());
+    }
+
+    @Test
+    void theWallClockCalendarAndThreadPoolsStayRefusedNamingTheReplacement() throws IOException {
+        Map<Path, String> sources = Map.of(
+                Path.of("WallCalendar.java"), """
+                public class WallCalendar {
+                    long now() { return new java.util.GregorianCalendar().getTimeInMillis(); }
+                }
+                """,
+                Path.of("Pool.java"), """
+                public class Pool {
+                    void start(Runnable r) {
+                        java.util.concurrent.Executors.newScheduledThreadPool(1)
+                                .scheduleAtFixedRate(r, 1, 10, java.util.concurrent.TimeUnit.MILLISECONDS);
+                    }
+                }
+                """,
+                Path.of("ColourProperty.java"), """
+                public class ColourProperty {
+                    java.awt.Color c() { return java.awt.Color.getColor("user.home"); }
+                }
+                """,
+                Path.of("Kit.java"), """
+                public class Kit {
+                    Object k() { return java.awt.Toolkit.getDefaultToolkit(); }
+                }
+                """);
+        List<String> refused = refusals(compile(dir, sources), new ArrayList<>());
+        assertEquals(4, refused.size(), refused.toString());
+        String all = String.join("\n", refused);
+        assertTrue(all.contains("WallCalendar.java:2: uses new java.util.GregorianCalendar()"), all);
+        assertTrue(all.contains("Pool.java:3: uses java.util.concurrent.Executors.newScheduledThreadPool(int): thread pools"), all);
+        assertTrue(all.contains("for scheduleAtFixedRate, a Thread whose run loops task.run(); Thread.sleep(period)"), all);
+        assertTrue(all.contains("ColourProperty.java:2: uses java.awt.Color.getColor(String)"), all);
+        assertTrue(all.contains("Kit.java:2: uses java.awt.Toolkit.getDefaultToolkit()"), all);
+    }
 }
