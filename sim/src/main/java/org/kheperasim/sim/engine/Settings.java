@@ -94,6 +94,9 @@ public final class Settings {
         choice("wsu.speedUnits", "unit of a WSU controller's wheel speeds: khepera (one Khepera speed unit, about 8 mm/s,"
                 + " the default) or legacy (as fast as the original simulator drew it, about 30 mm/s: 3.78 Khepera units)",
                 "khepera", "legacy");
+        choice(WsuProfile.KEY, "behaviour profile: robot (the default: the real Khepera) or wsu (the original WSU"
+                + " simulator: the robot file wsu and the settings docs/wsu-migration.md lists; a setting given"
+                + " explicitly wins)", "robot", WsuProfile.WSU);
     }
 
     private static void choice(String key, String meaning, String... values) {
@@ -171,7 +174,7 @@ public final class Settings {
             case STEPPING -> RobotModel.Stepping.named(v);
         }
         TreeMap<String, String> next = new TreeMap<>(overrides);
-        if (v.equals(def.defaultValue)) {
+        if (v.equals(def.defaultValue) && WsuProfile.setting(overrides.get(WsuProfile.KEY), key) == null) {
             next.remove(key);
         } else {
             next.put(key, v);
@@ -212,7 +215,11 @@ public final class Settings {
         if (def == null) {
             throw new IllegalArgumentException("unknown setting '" + key + "'");
         }
-        return overrides.getOrDefault(key, def.defaultValue);
+        String v = overrides.get(key);
+        if (v == null) {
+            v = WsuProfile.setting(overrides.get(WsuProfile.KEY), key);
+        }
+        return v != null ? v : def.defaultValue;
     }
 
     /** @return the proximity response that {@code prox.profile} names */
