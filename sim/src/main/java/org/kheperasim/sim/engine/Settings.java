@@ -83,6 +83,9 @@ public final class Settings {
         num("vision.grey.background", "0", 0, 255, "grey level of a pixel that sees nothing (beyond the arena)");
         num("vision.lampGain", "0.25", 0, 10, "how much brighter a surface looks lit by a lamp at full exposure (the"
                 + " light sensors' exposure model); a lamp itself is always 255");
+        num("vision.fieldOfViewDeg", "36", 1, 180, "the vision turret's field of view, degrees (its manual: about 36)");
+        num("vision.lensMm", "20", -100, 100, "where the vision turret's lens is, mm ahead of the robot's centre (an estimate"
+                + " from the turret's layout)");
         choice("controller.mode", "where the controller runs: auto (the default: a step controller on the robot, any"
                 + " other through the serial link), onboard (on the robot's own processor: it reads the latest 20 ms scan and"
                 + " its commands act at once, as swarms and evolutionary robotics run it) or tethered (on the host, through"

@@ -30,6 +30,8 @@ public final class WsuProfile {
         SETTINGS.put("gripper.armInView", "wsu");    // sensors 0-5 read the lowered arm
         SETTINGS.put("vision.lampGain", "0");        // exact levels: wall 10, ball 200, lamp 255
         SETTINGS.put("vision.refreshMs", "20");      // a new image for every loop (its loop ran every 23 ms)
+        SETTINGS.put("vision.fieldOfViewDeg", "40"); // its image: a ball 174 mm ahead on 11 pixels, a lamp 16 degrees
+        SETTINGS.put("vision.lensMm", "0");          // left centred on pixel 5.5 (taken from the robot's centre)
         SETTINGS.put("controller.mode", "onboard");  // values refresh at once, commands act at once, as there
     }
 
