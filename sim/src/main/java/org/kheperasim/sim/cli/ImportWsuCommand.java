@@ -32,11 +32,21 @@ final class ImportWsuCommand implements Callable<Integer> {
                     + " the arena is named after this file")
     Path output;
 
+    @Option(names = "--profile", paramLabel = "PROFILE", defaultValue = "robot",
+            description = "robot (the default: the arena's robot is the real Khepera) or wsu (its robot line names the"
+                    + " bundled robot wsu, which runs with the wsu profile: the original simulator's behaviour, as"
+                    + " --set profile=wsu gives; see docs/wsu-migration.md)")
+    String profile;
+
     @Override
     public Integer call() {
         if (!Files.isRegularFile(map)) {
             throw new IllegalArgumentException("no WSU world file " + map + "; give the path of a map saved by the"
                     + " WSU Khepera Simulator");
+        }
+        if (!profile.equals("robot") && !profile.equals("wsu")) {
+            throw new IllegalArgumentException("--profile " + profile + ": give robot (the real Khepera, the default) or wsu"
+                    + " (the original simulator's behaviour)");
         }
         Path target = output != null ? output : Path.of(WsuWorld.nameOf(map) + ArenaFormat.EXTENSION);
         if (Files.exists(target) && sameFile(target, map)) {
@@ -48,6 +58,9 @@ final class ImportWsuCommand implements Callable<Integer> {
         Arena read = imported.arena();
         Arena arena = new Arena(WsuWorld.nameOf(target), read.width(), read.height(), read.robots(), read.walls(),
                 read.lights(), read.caps(), read.regions());
+        if (profile.equals("wsu")) {
+            arena = arena.withDefaultRobot(org.kheperasim.sim.arena.RobotKind.of("wsu"));
+        }
         for (String w : warnings) {
             System.err.println(map + ": warning: " + w);
         }
@@ -70,6 +83,9 @@ final class ImportWsuCommand implements Callable<Integer> {
                 .append(" by khepera-sim import-wsu (see docs/wsu-migration.md).\n");
         sb.append("# 500 x 500 px panel -> 1219.2 mm square, 1 px = 2.4384 mm, y flipped to point up; balls are caps.\n");
         sb.append("# ").append(contents(imported)).append(".\n");
+        if (profile.equals("wsu")) {
+            sb.append("# The robot is 'wsu': it behaves as the original simulator's (the wsu profile, docs/wsu-migration.md).\n");
+        }
         for (String w : warnings) {
             sb.append("# warning: ").append(w).append('\n');
         }

@@ -85,7 +85,8 @@ public final class Engine {
      * @return the robot
      */
     public SimRobot addRobot(String name, Pose start, Settings settings, RobotType type) {
-        SimRobot r = new SimRobot(robots.size(), name, world, start, settings, type, seeds.split());
+        RobotType t = WsuProfile.robotFor(settings, type);
+        SimRobot r = new SimRobot(robots.size(), name, world, start, WsuProfile.settingsFor(settings, t), t, seeds.split());
         robots.add(r);
         if (recorder != null) {
             r.record(recorder);

@@ -52,7 +52,7 @@ public final class LinearCamera {
         this.model = model;
         this.noise = noise;
         for (int i = 0; i < VisionModel.PIXELS; i++) {
-            double b = VisionModel.bearing(i);
+            double b = model.bearing(i);
             bearingCos[i] = StrictMath.cos(b);
             bearingSin[i] = StrictMath.sin(b);
         }
@@ -118,8 +118,8 @@ public final class LinearCamera {
         OccupancyGrid grid = world.grid();
         double c = body.cos();
         double s = body.sin();
-        double lx = body.x() + c * VisionModel.LENS_MM;
-        double ly = body.y() + s * VisionModel.LENS_MM;
+        double lx = body.x() + c * model.lensMm();
+        double ly = body.y() + s * model.lensMm();
         double reach = StrictMath.hypot(world.arena().width(), world.arena().height()) + 1;
         for (int i = 0; i < VisionModel.PIXELS; i++) {
             double dx = c * bearingCos[i] - s * bearingSin[i];

@@ -83,6 +83,9 @@ public final class Settings {
         num("vision.grey.background", "0", 0, 255, "grey level of a pixel that sees nothing (beyond the arena)");
         num("vision.lampGain", "0.25", 0, 10, "how much brighter a surface looks lit by a lamp at full exposure (the"
                 + " light sensors' exposure model); a lamp itself is always 255");
+        num("vision.fieldOfViewDeg", "36", 1, 180, "the vision turret's field of view, degrees (its manual: about 36)");
+        num("vision.lensMm", "20", -100, 100, "where the vision turret's lens is, mm ahead of the robot's centre (an estimate"
+                + " from the turret's layout)");
         choice("controller.mode", "where the controller runs: auto (the default: a step controller on the robot, any"
                 + " other through the serial link), onboard (on the robot's own processor: it reads the latest 20 ms scan and"
                 + " its commands act at once, as swarms and evolutionary robotics run it) or tethered (on the host, through"
@@ -94,6 +97,9 @@ public final class Settings {
         choice("wsu.speedUnits", "unit of a WSU controller's wheel speeds: khepera (one Khepera speed unit, about 8 mm/s,"
                 + " the default) or legacy (as fast as the original simulator drew it, about 30 mm/s: 3.78 Khepera units)",
                 "khepera", "legacy");
+        choice(WsuProfile.KEY, "behaviour profile: robot (the default: the real Khepera) or wsu (the original WSU"
+                + " simulator: the robot file wsu and the settings docs/wsu-migration.md lists; a setting given"
+                + " explicitly wins)", "robot", WsuProfile.WSU);
     }
 
     private static void choice(String key, String meaning, String... values) {
@@ -171,7 +177,7 @@ public final class Settings {
             case STEPPING -> RobotModel.Stepping.named(v);
         }
         TreeMap<String, String> next = new TreeMap<>(overrides);
-        if (v.equals(def.defaultValue)) {
+        if (v.equals(def.defaultValue) && WsuProfile.setting(overrides.get(WsuProfile.KEY), key) == null) {
             next.remove(key);
         } else {
             next.put(key, v);
@@ -212,7 +218,11 @@ public final class Settings {
         if (def == null) {
             throw new IllegalArgumentException("unknown setting '" + key + "'");
         }
-        return overrides.getOrDefault(key, def.defaultValue);
+        String v = overrides.get(key);
+        if (v == null) {
+            v = WsuProfile.setting(overrides.get(WsuProfile.KEY), key);
+        }
+        return v != null ? v : def.defaultValue;
     }
 
     /** @return the proximity response that {@code prox.profile} names */

@@ -17,32 +17,28 @@ package org.kheperasim.sim.engine;
  * @param robotGrey grey level of another robot's body
  * @param backgroundGrey grey level of a pixel that sees nothing
  * @param lampGain how much brighter a lamp makes what it lights, at full exposure
+ * @param fieldOfViewDeg the field of view, degrees ({@code vision.fieldOfViewDeg}; the manual's "about 36 degrees" by default)
+ * @param lensMm where the lens is, mm ahead of the robot's centre ({@code vision.lensMm}; 20 by default, on the
+ *     front of the turret, an estimate from its layout)
  */
 record VisionModel(long refreshNanos, double noise, double wallGrey, double capGrey, double robotGrey,
-        double backgroundGrey, double lampGain) {
+        double backgroundGrey, double lampGain, double fieldOfViewDeg, double lensMm) {
 
     /** Pixels in an image (the manual: 64). */
     static final int PIXELS = 64;
     /** The brightest grey level (the manual: 256 levels). */
     static final int MAX_GREY = 255;
-    /** The field of view, degrees (the manual: "about 36 degrees"). */
-    static final double FIELD_OF_VIEW_DEG = 36;
-    /**
-     * Where the lens is, mm ahead of the robot's centre: on the front of the turret, which sits on top
-     * of the robot (an estimate from the turret's layout; it shifts what is seen by at most a pixel).
-     */
-    static final double LENS_MM = 20;
 
     /** @param s the settings @return the turret's model */
     static VisionModel of(Settings s) {
         return new VisionModel((long) StrictMath.rint(s.number("vision.refreshMs") * 1e6),
                 s.number("vision.noise") * s.number("noise.reading"), s.number("vision.grey.wall"),
                 s.number("vision.grey.cap"), s.number("vision.grey.robot"), s.number("vision.grey.background"),
-                s.number("vision.lampGain"));
+                s.number("vision.lampGain"), s.number("vision.fieldOfViewDeg"), s.number("vision.lensMm"));
     }
 
     /** @param pixel 0..63 @return the direction pixel {@code pixel} looks in, radians from straight ahead, left positive */
-    static double bearing(int pixel) {
-        return StrictMath.toRadians(FIELD_OF_VIEW_DEG / 2 - (pixel + 0.5) * FIELD_OF_VIEW_DEG / PIXELS);
+    double bearing(int pixel) {
+        return StrictMath.toRadians(fieldOfViewDeg / 2 - (pixel + 0.5) * fieldOfViewDeg / PIXELS);
     }
 }

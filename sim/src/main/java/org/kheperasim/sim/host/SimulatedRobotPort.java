@@ -31,8 +31,9 @@ final class SimulatedRobotPort implements RobotPort {
     SimulatedRobotPort(SimRobot robot, PortClock clock) {
         this.robot = robot;
         this.clock = clock;
-        // A step controller runs on the robot's processor: no serial line between it and the turret.
-        this.onBoard = clock instanceof StepHost;
+        // A step controller, or any in controller.mode=onboard, runs on the robot's processor: no serial
+        // line between it and the turret.
+        this.onBoard = clock instanceof StepHost || robot.runsOnBoard();
     }
 
     @Override

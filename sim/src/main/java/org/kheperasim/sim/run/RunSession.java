@@ -142,7 +142,7 @@ public final class RunSession implements AutoCloseable {
             SimRobot robot = engine.addRobot(name, start, setup.settings(), arena.robotType(i));
             robot.parameters(setup.parameters());
             boolean stepStyle = Controllers.isStep(type);
-            if (onBoard(setup.settings(), stepStyle)) {
+            if (onBoard(robot.settings(), stepStyle)) {
                 // Before the controller is made: its constructor may already command the robot.
                 robot.runOnBoard(stepStyle);
             }

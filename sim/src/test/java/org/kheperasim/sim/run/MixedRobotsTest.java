@@ -51,7 +51,7 @@ class MixedRobotsTest {
     void anUnknownTypeIsRefusedOnItsLine() {
         ArenaFormatException e = assertThrows(ArenaFormatException.class,
                 () -> ArenaFormat.parse(ARENA.replace(" epuck", " epuk"), "m.arena"));
-        assertEquals("m.arena:5: robot type 'epuk' is not a bundled robot; use one of khepera1, khepera2, epuck,"
+        assertEquals("m.arena:5: robot type 'epuk' is not a bundled robot; use one of khepera1, khepera2, epuck, wsu,"
                 + " or a robot file's path ending in .yaml", e.getMessage());
         ArenaFormatException f = assertThrows(ArenaFormatException.class,
                 () -> ArenaFormat.parse(ARENA.replace(" epuck", " robots/none.yaml"), "m.arena"));

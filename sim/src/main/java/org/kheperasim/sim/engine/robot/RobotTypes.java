@@ -15,7 +15,7 @@ import org.kheperasim.sim.files.TextFiles;
  */
 public final class RobotTypes {
     /** The bundled robots' names, the default first. */
-    public static final List<String> BUNDLED = List.of("khepera1", "khepera2", "epuck");
+    public static final List<String> BUNDLED = List.of("khepera1", "khepera2", "epuck", "wsu");
     /** The largest robot file read, bytes. */
     private static final long MAX_BYTES = 1 << 20;
 
@@ -24,13 +24,15 @@ public final class RobotTypes {
 
     private static final RobotType KHEPERA2 = bundled("khepera2");
     private static final RobotType EPUCK = bundled("epuck");
+    /** The original WSU simulator's robot (wsu.yaml), the robot of the {@code wsu} profile. */
+    public static final RobotType WSU = bundled("wsu");
 
     private RobotTypes() {
     }
 
     /** @return the bundled robot types, the default first */
     public static List<RobotType> all() {
-        return List.of(KHEPERA1, KHEPERA2, EPUCK);
+        return List.of(KHEPERA1, KHEPERA2, EPUCK, WSU);
     }
 
     /**

@@ -102,7 +102,7 @@ class RobotFilesTest {
         assertEquals("tri", RobotTypes.resolve("tri.yaml", dir).name());
         assertEquals("epuck", RobotTypes.resolve("epuck", dir).name());
         RobotFileException e = assertThrows(RobotFileException.class, () -> RobotTypes.resolve("nope.yaml", dir));
-        assertTrue(e.getMessage().endsWith("nope.yaml: no such robot file; give a bundled robot (khepera1, khepera2, epuck)"
+        assertTrue(e.getMessage().endsWith("nope.yaml: no such robot file; give a bundled robot (khepera1, khepera2, epuck, wsu)"
                 + " or the path of a robot file"), e.getMessage());
     }
 }
