@@ -30,7 +30,7 @@ final class BenchCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         try (Session session = connection.open(out)) {
             session.open();
-            PollBench.Result r = PollBench.measure(session, connection.baud, (long) (seconds * 1000));
+            PollBench.Result r = PollBench.measure(session, connection.baud(), (long) (seconds * 1000));
             out.println(r.describe());
             out.flush();
             return 0;

@@ -7,6 +7,8 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.function.Supplier;
 import org.kheperasim.link.protocol.Command;
+import org.kheperasim.link.protocol.EpuckCommand;
+import org.kheperasim.link.protocol.dialect.EpuckDialect;
 import org.kheperasim.link.protocol.Reply;
 import org.kheperasim.link.protocol.TurretCommand;
 import org.kheperasim.link.session.Session;
@@ -38,11 +40,23 @@ final class CheckCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         try (Session session = connection.open(out)) {
             Session.Versions v = session.open();
-            out.println("robot answers: BIOS " + v.bios() + ", protocol " + v.protocol());
-            Reply counters = session.exchange(new Command.ReadPositionCounters());
+            out.println(answers(session, v));
+            Reply counters = session.exchange(session.dialect().readCounters());
             int l = counters.intValue(0);
             int r = counters.intValue(1);
-            List<Supplier<Command>> plan = new ArrayList<>(List.of(
+            boolean epuck = session.dialect() == EpuckDialect.EPUCK;
+            List<Supplier<Command>> plan = new ArrayList<>(epuck ? List.of(
+                    EpuckCommand.Version::new,
+                    () -> new EpuckCommand.SetSpeed(0, 0),
+                    Command.ReadSpeed::new,
+                    () -> new EpuckCommand.SetSteps(l, r),
+                    EpuckCommand.ReadSteps::new,
+                    () -> new EpuckCommand.SetLed(EpuckCommand.ALL_LEDS, 0),
+                    () -> new EpuckCommand.BodyLed(0),
+                    () -> new EpuckCommand.FrontLed(0),
+                    Command.ReadProximity::new,
+                    Command.ReadLight::new,
+                    EpuckCommand.Stop::new) : List.of(
                     () -> new Command.SetSpeedPid(3800, 800, 100),
                     Command.ReadVersion::new,
                     () -> new Command.MoveToPosition(l, r),
@@ -65,7 +79,7 @@ final class CheckCommand implements Callable<Integer> {
                 }
                 plan.add(() -> new Command.WriteBus(busWrite[0], busWrite[1]));
             }
-            if (!noGripper) {
+            if (!noGripper && !epuck) {
                 plan.add(() -> Command.Turret.gripper(new TurretCommand.Version()));
                 plan.add(() -> Command.Turret.gripper(new TurretCommand.Barrier()));
                 plan.add(() -> Command.Turret.gripper(new TurretCommand.Resistivity()));
@@ -102,10 +116,11 @@ final class CheckCommand implements Callable<Integer> {
                     break;
                 }
             }
+            Command stop = session.dialect().setSpeeds(0, 0);
             try {
-                session.exchange(Command.SetSpeed.STOP);
+                session.exchange(stop);
             } catch (SessionException e) {
-                session.sendBlind(Command.SetSpeed.STOP);
+                session.sendBlind(stop);
             }
             Session.Stats s = session.stats();
             out.println(String.format(Locale.ROOT, "%d of %d commands answered; %d retries; the robot was left with D,0,0",
@@ -113,5 +128,15 @@ final class CheckCommand implements Callable<Integer> {
             out.flush();
             return failed == 0 ? 0 : 1;
         }
+    }
+
+    /**
+     * @param session an open session
+     * @param v what its version command answered
+     * @return the line saying so: the Khepera's BIOS and protocol versions, the e-puck's version text
+     */
+    static String answers(Session session, Session.Versions v) {
+        return session.dialect() == EpuckDialect.EPUCK ? "robot answers: " + v.bios() + " (e-puck)"
+                : "robot answers: BIOS " + v.bios() + ", protocol " + v.protocol();
     }
 }

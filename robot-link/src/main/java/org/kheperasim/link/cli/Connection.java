@@ -6,6 +6,7 @@ import org.kheperasim.link.io.LineEnd;
 import org.kheperasim.link.io.Link;
 import org.kheperasim.link.io.Links;
 import org.kheperasim.link.io.SerialSettings;
+import org.kheperasim.link.protocol.dialect.Dialect;
 import org.kheperasim.link.session.Session;
 import org.kheperasim.link.timing.LinkTiming;
 import org.kheperasim.link.tool.CliNumbers;
@@ -17,9 +18,25 @@ public final class Connection {
             description = "Serial port path (e.g. /dev/ttyUSB0, COM3, a socat pty link) or tcp://HOST:PORT.")
     String port;
 
-    @Option(names = "--baud", defaultValue = "38400", converter = CliNumbers.Baud.class,
-            description = "Line speed: 9600, 19200, 38400, 57600 or 115200 (the robot's mode jumper). Default: ${DEFAULT-VALUE}.")
-    int baud;
+    @Option(names = "--baud", converter = CliNumbers.Baud.class,
+            description = "Line speed: 9600, 19200, 38400, 57600 or 115200 (the robot's mode jumper). Default: 38400"
+                    + " (115200 with --dialect epuck).")
+    Integer baud;
+
+    @Option(names = "--dialect", paramLabel = "NAME", defaultValue = Dialect.DEFAULT,
+            description = "The robot's protocol: khepera1, khepera2 or epuck (a Bluetooth serial port is a serial port)."
+                    + " Default: ${DEFAULT-VALUE}.")
+    String dialect;
+
+    /** @return the robot's protocol ({@code --dialect}) */
+    Dialect dialect() {
+        return Dialect.named(dialect);
+    }
+
+    /** @return the line speed: {@code --baud}, or the dialect's usual one */
+    int baud() {
+        return baud != null ? baud : dialect().defaultBaud();
+    }
 
     @Option(names = "--data-bits", defaultValue = "8", description = "Data bits. Default: ${DEFAULT-VALUE}.")
     int dataBits;
@@ -48,12 +65,12 @@ public final class Connection {
         if (eol == LineEnd.CRLF) {
             throw new IllegalArgumentException("--eol CRLF: a command ends with exactly one CR or LF; give CR or LF");
         }
-        return new SerialSettings(port, baud, dataBits, stopBits, parity, eol);
+        return new SerialSettings(port, baud(), dataBits, stopBits, parity, eol);
     }
 
     /** @return the link timing at this baud */
     LinkTiming timing() {
-        return new LinkTiming(baud, 1 + dataBits + stopBits + (parity == SerialSettings.Parity.NONE ? 0 : 1),
+        return new LinkTiming(baud(), 1 + dataBits + stopBits + (parity == SerialSettings.Parity.NONE ? 0 : 1),
                 LinkTiming.DEFAULT_TURNAROUND_NANOS);
     }
 
@@ -62,10 +79,11 @@ public final class Connection {
      * @return a session on the opened link (not yet handshaken)
      */
     Session open(PrintWriter out) throws IOException {
+        Dialect d = dialect();
         SerialSettings s = settings();
         Link link = Links.open(s);
         out.println("opened " + link.describe());
         out.flush();
-        return new Session(link, timing(), new Session.Options(timeoutMillis, retries, 200, 3000));
+        return new Session(link, timing(), new Session.Options(timeoutMillis, retries, 200, 3000), d);
     }
 }

@@ -7,7 +7,6 @@ import java.nio.charset.StandardCharsets;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import org.kheperasim.link.protocol.Command.SetSpeed;
 import org.kheperasim.link.session.Session;
 import org.kheperasim.link.session.SessionException;
 import picocli.CommandLine.Command;
@@ -37,7 +36,7 @@ final class ConsoleCommand implements Callable<Integer> {
             }
             out.println("type a command and Enter; an empty line quits");
             out.flush();
-            Thread hook = new Thread(() -> session.sendBlind(SetSpeed.STOP), "khepera-stop-on-exit");
+            Thread hook = new Thread(() -> session.sendBlind(session.dialect().setSpeeds(0, 0)), "khepera-stop-on-exit");
             session.link().addExitHook(hook);
             try {
                 BufferedReader in = new BufferedReader(new InputStreamReader(Main.in, StandardCharsets.UTF_8));
@@ -55,10 +54,10 @@ final class ConsoleCommand implements Callable<Integer> {
                 }
             } finally {
                 try {
-                    session.exchange(SetSpeed.STOP);
+                    session.exchange(session.dialect().setSpeeds(0, 0));
                     out.println("sent D,0,0; bye");
                 } catch (SessionException e) {
-                    session.sendBlind(SetSpeed.STOP);
+                    session.sendBlind(session.dialect().setSpeeds(0, 0));
                     out.println("sent D,0,0 without an answer (" + e.getMessage() + "): check the robot has stopped");
                 }
                 out.flush();

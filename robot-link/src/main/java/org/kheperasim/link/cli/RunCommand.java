@@ -49,12 +49,13 @@ final class RunCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         PrintWriter out = spec.commandLine().getOut();
-        RobotSettings settings = RobotSettings.defaults().withMaxSpeed(maxSpeed).withGripper(gripper, parkGripper);
+        RobotSettings settings = RobotSettings.defaults().withMaxSpeed(maxSpeed).withGripper(gripper, parkGripper)
+                .checkFor(connection.dialect());
         double seconds = controllerOptions.seconds(0);
         Class<?> type = new ControllerLoader(controllerOptions.classpath()).load(controllerOptions.controller());
         try (Session session = connection.open(out)) {
             Session.Versions v = session.open();
-            out.println("robot answers: BIOS " + v.bios() + ", protocol " + v.protocol());
+            out.println(CheckCommand.answers(session, v));
             out.println("running " + type.getName() + (seconds > 0 ? " for " + seconds + " s" : " until it ends or Ctrl-C")
                     + "; speed clamp ±" + maxSpeed);
             out.flush();
@@ -65,7 +66,7 @@ final class RunCommand implements Callable<Integer> {
             Recorder recorder = null;
             if (record != null) {
                 recorder = new Recorder(record, "controller " + type.getName() + ", port " + connection.port
-                        + ", " + connection.baud + " baud");
+                        + ", " + connection.baud() + " baud, dialect " + session.dialect().name());
                 backend.onSample(recorder);
             }
             RobotRun run = new RobotRun(backend, type, line -> {

@@ -11,10 +11,17 @@ import java.util.stream.Collectors;
  * typed command. Each command knows the head of its reply ({@code n}, or {@code t,1,g} for a turret
  * command) and how many values the reply carries.
  *
+ * <p>The e-puck's commands that differ from these are {@link EpuckCommand}; a {@link
+ * org.kheperasim.link.protocol.dialect.Dialect} says which commands a robot speaks.
+ *
  * <p>Arguments are checked where the manual gives a range (speeds, PWM, LEDs, bytes); a value out
  * of range throws {@link IllegalArgumentException} naming the command, the value and the range.
  */
-public sealed interface Command {
+public sealed interface Command permits Command.SetSpeedPid, Command.ReadVersion, Command.MoveToPosition,
+        Command.SetSpeed, Command.ReadSpeed, Command.SetPositionPid, Command.SetPositionCounters,
+        Command.ReadPositionCounters, Command.ReadAnalog, Command.SetPositionProfile, Command.ReadMotionStatus,
+        Command.SetLed, Command.ReadProximity, Command.ReadLight, Command.SetPwm, Command.ReadBus, Command.WriteBus,
+        Command.Turret, EpuckCommand {
 
     /** @return the command letter, upper case */
     char letter();

@@ -36,7 +36,9 @@ public final class PollBench {
     private static long[][] replies(Session session) {
         long[][] r = new long[STEPS.length][];
         for (int k = 0; k < STEPS.length; k++) {
-            r[k] = session.replies(STEPS[k].command());
+            // The encoders' letter is the dialect's (H on a Khepera, Q on an e-puck).
+            char letter = STEPS[k] == PollStep.ENCODERS ? session.dialect().readCounters().letter() : STEPS[k].command();
+            r[k] = session.replies(letter);
         }
         return r;
     }

@@ -14,6 +14,7 @@ import org.kheperasim.api.spi.RobotPort;
 import org.kheperasim.link.protocol.Command;
 import org.kheperasim.link.protocol.Reply;
 import org.kheperasim.link.protocol.TurretCommand;
+import org.kheperasim.link.protocol.dialect.Dialect;
 import org.kheperasim.link.session.Session;
 import org.kheperasim.link.session.SessionException;
 import org.kheperasim.link.timing.LinkTiming;
@@ -22,7 +23,8 @@ import org.kheperasim.link.timing.PollStep;
 /**
  * A real Khepera behind the student API. A poll thread runs the cycle of {@link LinkTiming#POLL_CYCLE}
  * ({@code N}, {@code O}, {@code H}, then the gripper's barrier and resistivity when one is fitted) as
- * fast as the link allows, and the API reads the values it last stored. Before each exchange it
+ * fast as the link allows, in the session's {@link Dialect} (on an e-puck: {@code N}, {@code O}, {@code Q},
+ * speeds by its {@code D} in steps/s, no turrets), and the API reads the values it last stored. Before each exchange it
  * sends what the controller changed: a {@code D} when the asked speeds differ from those last sent,
  * and queued position-counter and gripper commands. So a motor command waits at most one exchange.
  *
@@ -39,6 +41,7 @@ public final class RobotBackend implements RobotPort {
 
     private final Session session;
     private final RobotSettings settings;
+    private final Dialect dialect;
     private final Consumer<String> console;
     private final Queue<Command> queued = new ConcurrentLinkedQueue<>();
     /** Reads of the vision turret a controller waits for, served by the poll thread in order. */
@@ -70,6 +73,7 @@ public final class RobotBackend implements RobotPort {
     private volatile boolean gripperPolled;
     private volatile boolean clampReported;
     private volatile boolean gripperWarned;
+    private volatile boolean visionWarned;
 
     private volatile boolean running;
     private volatile boolean stopped;
@@ -88,9 +92,11 @@ public final class RobotBackend implements RobotPort {
      */
     public RobotBackend(Session session, RobotSettings settings, Consumer<String> console) {
         this.session = session;
-        this.settings = settings;
+        this.dialect = session.dialect();
+        this.settings = settings.checkFor(dialect);
         this.console = console;
         this.gripperPolled = settings.gripper();
+        this.visionRefused = !dialect.turrets();
         this.poller = new Thread(this::poll, "khepera-poll");
         poller.setDaemon(true);
     }
@@ -111,7 +117,7 @@ public final class RobotBackend implements RobotPort {
         startNanos = System.nanoTime();
         poller.start();
         if (!firstCycle.await(timeoutMillis, TimeUnit.MILLISECONDS) && failure == null) {
-            throw new SessionException(SessionException.Kind.NO_REPLY, new Command.ReadProximity(),
+            throw new SessionException(SessionException.Kind.NO_REPLY, dialect.readProximity(),
                     "the first poll cycle did not finish in " + timeoutMillis + " ms on " + session.link().describe(), null);
         }
         if (failure != null) {
@@ -151,10 +157,10 @@ public final class RobotBackend implements RobotPort {
 
     private void read(PollStep step) throws SessionException {
         switch (step) {
-            case PROXIMITY -> proximity = session.exchange(new Command.ReadProximity()).ints();
-            case LIGHT -> light = session.exchange(new Command.ReadLight()).ints();
+            case PROXIMITY -> proximity = session.exchange(dialect.readProximity()).ints();
+            case LIGHT -> light = session.exchange(dialect.readLight()).ints();
             case ENCODERS -> {
-                int[] v = session.exchange(new Command.ReadPositionCounters()).ints();
+                int[] v = session.exchange(dialect.readCounters()).ints();
                 long boots = session.boots();
                 if (boots != bootsAtCounters) {
                     // The robot rebooted since the counters were last read (perhaps during this very
@@ -203,7 +209,7 @@ public final class RobotBackend implements RobotPort {
         }
         long wanted = wantedSpeeds;
         if (wanted != sentSpeeds) {
-            session.exchange(new Command.SetSpeed(unpackLeft(wanted), unpackRight(wanted)));
+            session.exchange(dialect.setSpeeds(unpackLeft(wanted), unpackRight(wanted)));
             sentSpeeds = wanted;
         }
         Command c;
@@ -289,7 +295,7 @@ public final class RobotBackend implements RobotPort {
     private boolean sendStop() {
         if (!session.isLost()) {
             try {
-                session.exchange(Command.SetSpeed.STOP);
+                session.exchange(dialect.setSpeeds(0, 0));
                 sentSpeeds = pack(0, 0);
                 return true;
             } catch (SessionException e) {
@@ -298,7 +304,7 @@ public final class RobotBackend implements RobotPort {
                         + "); sending it once more without waiting");
             }
         }
-        session.sendBlind(Command.SetSpeed.STOP);
+        session.sendBlind(dialect.setSpeeds(0, 0));
         return false;
     }
 
@@ -403,7 +409,7 @@ public final class RobotBackend implements RobotPort {
     @Override
     public void setPositions(int left, int right) {
         if (!stopped) {
-            queued.add(new Command.SetPositionCounters(left, right));
+            queued.add(dialect.setCounters(left, right));
         }
     }
 
@@ -495,6 +501,11 @@ public final class RobotBackend implements RobotPort {
     /** Hand a turret read to the poll thread and wait for its reply; unwound when the run stops. */
     private int[] readVision(TurretCommand body) {
         unwindIfStopped();
+        if (!dialect.turrets() && !visionWarned) {
+            visionWarned = true;
+            console.accept("warning: the controller reads the vision turret, but the " + dialect.robot()
+                    + " takes no turret; its images are all 0");
+        }
         if (visionRefused) {
             return blank(body);
         }

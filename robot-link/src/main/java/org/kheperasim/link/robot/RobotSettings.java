@@ -1,5 +1,8 @@
 package org.kheperasim.link.robot;
 
+import org.kheperasim.link.protocol.EpuckCommand;
+import org.kheperasim.link.protocol.dialect.Dialect;
+
 /**
  * How the robot backend drives the robot.
  *
@@ -35,9 +38,9 @@ public record RobotSettings(int maxSpeed, boolean gripper, boolean parkGripperOn
     /** Checks the values. */
     public RobotSettings {
         options = java.util.Map.copyOf(options);
-        if (maxSpeed < 0 || maxSpeed > 127) {
+        if (maxSpeed < 0 || maxSpeed > EpuckCommand.MAX_SPEED) {
             throw new IllegalArgumentException("--max-speed " + maxSpeed + " must lie in 0..127 speed units"
-                    + " (1 unit is about 8 mm/s)");
+                    + " (1 unit is about 8 mm/s; an e-puck takes 0..1000 steps/s)");
         }
         if (armUp < 0 || armUp > 255 || armDown < 0 || armDown > 255) {
             throw new IllegalArgumentException("arm positions " + armUp + " / " + armDown + " must lie in 0..255");
@@ -75,5 +78,22 @@ public record RobotSettings(int maxSpeed, boolean gripper, boolean parkGripperOn
         java.util.Map<String, String> next = new java.util.TreeMap<>(options);
         next.put(key, value);
         return new RobotSettings(maxSpeed, gripper, parkGripperOnStop, armUp, armDown, armTravelMillis, next);
+    }
+
+    /**
+     * @param dialect the robot's protocol
+     * @return these settings, when the speed clamp and the gripper fit the robot
+     * @throws IllegalArgumentException naming the value and the robot's range
+     */
+    public RobotSettings checkFor(Dialect dialect) {
+        if (maxSpeed > dialect.maxSpeed()) {
+            throw new IllegalArgumentException("--max-speed " + maxSpeed + " is above the " + dialect.robot() + "'s "
+                    + dialect.maxSpeed() + " (--dialect " + dialect.name() + "); give 0.." + dialect.maxSpeed());
+        }
+        if (gripper && !dialect.turrets()) {
+            throw new IllegalArgumentException("--gripper: the " + dialect.robot() + " (--dialect " + dialect.name()
+                    + ") takes no turret; leave --gripper out");
+        }
+        return this;
     }
 }

@@ -10,6 +10,8 @@ import org.kheperasim.link.protocol.Command;
 import org.kheperasim.link.protocol.KheperaProtocol;
 import org.kheperasim.link.protocol.ProtocolException;
 import org.kheperasim.link.protocol.Reply;
+import org.kheperasim.link.protocol.dialect.Dialect;
+import org.kheperasim.link.protocol.dialect.KheperaDialect;
 import org.kheperasim.link.timing.LinkTiming;
 
 /**
@@ -73,6 +75,7 @@ public final class Session implements AutoCloseable {
     private final Link link;
     private final Options options;
     private final LinkTiming timing;
+    private final Dialect dialect;
     private final LongAdder exchanges = new LongAdder();
     private final LongAdder retries = new LongAdder();
     private final LongAdder skippedLines = new LongAdder();
@@ -93,10 +96,26 @@ public final class Session implements AutoCloseable {
      * @param options timeouts and retries
      */
     public Session(Link link, LinkTiming timing, Options options) {
+        this(link, timing, options, KheperaDialect.KHEPERA1);
+    }
+
+    /**
+     * @param link the open link
+     * @param timing the line's timing, to allow each reply its wire time on top of the timeout
+     * @param options timeouts and retries
+     * @param dialect the robot's protocol: its version command, replies, error replies and banner
+     */
+    public Session(Link link, LinkTiming timing, Options options, Dialect dialect) {
         this.link = link;
         this.timing = timing;
         this.options = options;
+        this.dialect = dialect;
         this.lastSent = null;
+    }
+
+    /** @return the robot's protocol */
+    public Dialect dialect() {
+        return dialect;
     }
 
     /** @return the link */
@@ -116,7 +135,7 @@ public final class Session implements AutoCloseable {
      * @throws SessionException naming the link and what to check when the robot does not answer
      */
     public synchronized Versions open() throws SessionException {
-        Command b = new Command.ReadVersion();
+        Command b = dialect.version();
         try {
             long end = System.nanoTime() + options.bannerMaxMillis() * 1_000_000L;
             while (System.nanoTime() < end) {
@@ -133,6 +152,12 @@ public final class Session implements AutoCloseable {
         try {
             r = exchange(b);
         } catch (SessionException e) {
+            if (e.kind() == SessionException.Kind.NO_REPLY && !(dialect instanceof KheperaDialect)) {
+                throw new SessionException(e.kind(), b, "the " + dialect.robot() + " on " + link.describe() + " does not"
+                        + " answer the version command '" + b.encode() + "'. Check that it is switched on, that its"
+                        + " selector is on the ASCII protocol (SerCom), that a Bluetooth port is paired, that --baud"
+                        + " matches and that --dialect " + dialect.name() + " is its protocol", e);
+            }
             if (e.kind() == SessionException.Kind.NO_REPLY) {
                 throw new SessionException(e.kind(), b, "the robot on " + link.describe() + " does not answer the"
                         + " version command 'B'. Check that it is switched on, that its mode jumper is on a protocol"
@@ -140,7 +165,7 @@ public final class Session implements AutoCloseable {
             }
             throw e;
         }
-        return new Versions(r.values().get(0), r.values().get(1));
+        return new Versions(r.values().get(0), r.values().size() > 1 ? r.values().get(1) : "");
     }
 
     /**
@@ -176,7 +201,7 @@ public final class Session implements AutoCloseable {
                         break;
                     }
                     try {
-                        Reply reply = KheperaProtocol.parseReply(command, got);
+                        Reply reply = dialect.parseReply(command, got);
                         record(System.nanoTime() - sent);
                         countReply(line, got);
                         return reply;
@@ -184,7 +209,7 @@ public final class Session implements AutoCloseable {
                         skippedLines.increment();
                         if (!looksLikeReply(got)) {
                             foreignLines.increment();
-                            if (looksLikeBanner(got)) {
+                            if (dialect.looksLikeBanner(got)) {
                                 boots.increment();
                             }
                         }
@@ -273,10 +298,6 @@ public final class Session implements AutoCloseable {
         return boots.sum();
     }
 
-    /** The Khepera's boot banner names its BIOS and protocol versions ("Khepera BIOS version 5.02"). */
-    static boolean looksLikeBanner(String line) {
-        return line.contains("BIOS") || line.startsWith("Protocol version");
-    }
 
     private static boolean looksLikeReply(String line) {
         return line.equals(KheperaProtocol.COMMAND_NOT_FOUND)

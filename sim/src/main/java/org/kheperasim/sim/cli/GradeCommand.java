@@ -13,13 +13,16 @@ import org.kheperasim.sim.grade.Grader;
 import org.kheperasim.sim.grade.ReportFiles;
 import org.kheperasim.sim.grade.ReportMerge;
 import org.kheperasim.sim.text.Shown;
+import org.kheperasim.sim.grade.platform.JunitCommand;
+import org.kheperasim.sim.grade.platform.PlatformOptions;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
 /** {@code grade}: every submission in every arena with every seed, on warm worker JVMs (one per submission); a report. */
 @Command(name = "grade", mixinStandardHelpOptions = true, sortOptions = false,
-        subcommands = GradeCommand.Merge.class,
+        subcommands = {GradeCommand.Merge.class, JunitCommand.class},
         description = {"Grade a class: compile every submission (one sub-folder per student, .java or .class), run it in"
                 + " every arena with seeds 1..N, each submission's runs one after another in a worker JVM of its own (each"
                 + " run with fresh class loaders, the same result as in a JVM of its own, a heap, simulated-time and"
@@ -78,6 +81,9 @@ final class GradeCommand implements Callable<Integer> {
                     + " of a submission's runs); 1 makes every run in a JVM of its own, as before workers")
     Integer workerRuns;
 
+    @Mixin
+    PlatformOptions platforms;
+
     @Override
     public Integer call() {
         // Not picocli-required: 'grade merge' must not need them.
@@ -89,9 +95,13 @@ final class GradeCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--heap-mb " + heapMb + ": give at least 32 (MiB)");
         }
         GradePlan.Shard s = shard == null ? GradePlan.Shard.ALL : GradePlan.Shard.parse(shard);
+        platforms.formats();
+        platforms.check(arenas);
+        long t0 = System.nanoTime();
         ReportFiles.Report report = Grader.grade(new Grader.Options(submissions, arenas, seeds, jobs, out, s, heapMb, wallLimit,
                 hangTimeout, seconds, keepTraces, System.err, System.console() != null, !noSandbox, false,
-                workerRuns == null ? Integer.MAX_VALUE : workerRuns));
+                workerRuns == null ? Integer.MAX_VALUE : workerRuns, platforms.deadlineSeconds()));
+        platforms.write(report, out, StrictMath.round((System.nanoTime() - t0) / 1e9));
         print(report, out);
         return failedAlike(report);
     }

@@ -9,6 +9,7 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import org.kheperasim.link.protocol.dialect.Dialect;
 import org.kheperasim.link.tool.CliNumbers;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
@@ -60,6 +61,11 @@ final class ServeCommand implements Callable<Integer> {
                     + " as a serial port drives the robot")
     Path pty;
 
+    @Option(names = "--dialect", paramLabel = "NAME", defaultValue = Dialect.DEFAULT,
+            description = "answer in this robot's protocol: khepera1, khepera2 or epuck (letters, replies, errors;"
+                    + " values are passed through as counts). Default: ${DEFAULT-VALUE}")
+    String dialect;
+
     @Option(names = "--idle-timeout", paramLabel = "SECONDS", defaultValue = "60",
             description = "let a client go after SECONDS without a command, so none holds the robot forever; 0 = never (default: ${DEFAULT-VALUE})")
     double idleTimeout;
@@ -87,6 +93,7 @@ final class ServeCommand implements Callable<Integer> {
             return org.kheperasim.sim.sandbox.Reexec.run("serve", Sandboxed.argsAfter(spec, "serve"), read, List.of(), true,
                     org.kheperasim.sim.sandbox.BoxLimits.forCommand(ArenaFormat.resolve(arena).robots().size()), 10);
         }
+        Dialect served = Dialect.named(dialect);
         Settings settings = settingsOptions.settings();
         long runSeed = seed != null ? seed : Simulation.randomSeed();
         Arena a = ArenaFormat.resolve(arena);
@@ -100,7 +107,7 @@ final class ServeCommand implements Callable<Integer> {
             throw new IllegalArgumentException("--port " + port + ": the arena's " + count + " robots need ports " + port
                     + ".." + (port + count - 1) + ", which must lie in 1..65535; give a lower --port, or 0 for any free ports");
         }
-        ServedArena world = new ServedArena(a, settings, runSeed, speed);
+        ServedArena world = new ServedArena(a, settings, runSeed, speed).dialect(served);
         List<ServedRobot> robots = world.robots();
         List<ProtocolServer> servers = new ArrayList<>();
         List<PtyBridge> bridges = new ArrayList<>();
@@ -134,6 +141,10 @@ final class ServeCommand implements Callable<Integer> {
         Runtime.getRuntime().addShutdownHook(hook);
         try {
             out.println("seed " + runSeed);
+            if (served != Dialect.named(Dialect.DEFAULT)) {
+                out.println("dialect " + served.name() + ": the robots answer as " + served.robot() + "s do"
+                        + " (connect with khepera-link --dialect " + served.name() + ")");
+            }
             if (robots.size() == 1) {
                 out.printf(Locale.ROOT, "serving a simulated Khepera in arena %s at %s (%d baud timing, speed x%s)%n",
                         a.name(), servers.get(0).url(), robots.get(0).timing().baud(), fmt(speed));

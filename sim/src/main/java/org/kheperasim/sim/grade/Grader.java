@@ -70,10 +70,19 @@ public final class Grader {
      *                     command-line option sets it
      * @param workerRuns   the most runs one worker JVM makes ({@link WorkerSlots}); 1 makes every run in a JVM of its
      *                     own, as before workers ({@link ChildRun}); {@link Integer#MAX_VALUE}: all of a submission's
+     * @param deadline     the grading's own deadline, real seconds from its start ({@link GradeDeadline}), or null for none
      */
     public record Options(Path submissions, List<String> arenas, int seeds, int jobs, Path out, GradePlan.Shard shard,
             int heapMb, double wallSeconds, double hangSeconds, Double seconds, boolean keepTraces, PrintStream progress,
-            boolean terminal, boolean sandbox, boolean trustedForTests, int workerRuns) {
+            boolean terminal, boolean sandbox, boolean trustedForTests, int workerRuns, Double deadline) {
+        /** Without a deadline of the grading's own. */
+        public Options(Path submissions, List<String> arenas, int seeds, int jobs, Path out, GradePlan.Shard shard,
+                int heapMb, double wallSeconds, double hangSeconds, Double seconds, boolean keepTraces, PrintStream progress,
+                boolean terminal, boolean sandbox, boolean trustedForTests, int workerRuns) {
+            this(submissions, arenas, seeds, jobs, out, shard, heapMb, wallSeconds, hangSeconds, seconds, keepTraces, progress,
+                    terminal, sandbox, trustedForTests, workerRuns, null);
+        }
+
         /** Runs on warm workers, each making all of its submission's runs. */
         public Options(Path submissions, List<String> arenas, int seeds, int jobs, Path out, GradePlan.Shard shard,
                 int heapMb, double wallSeconds, double hangSeconds, Double seconds, boolean keepTraces, PrintStream progress,
@@ -92,6 +101,7 @@ public final class Grader {
      * @throws IllegalArgumentException for a missing folder, a bad arena, or no sandbox where one is asked for, naming the fix
      */
     public static ReportFiles.Report grade(Options o) {
+        long endNanos = o.deadline() == null ? Long.MAX_VALUE : System.nanoTime() + (long) (o.deadline() * 1e9);
         if (o.jobs() < 1) {
             throw new IllegalArgumentException("--jobs " + o.jobs() + ": give at least 1");
         }
@@ -123,12 +133,20 @@ public final class Grader {
                 }
             }
             if (!todo.isEmpty()) {
-                makeRuns(o, todo, jobs.size() - todo.size(), jobs.size(), subs, arenas, work, journal);
+                makeRuns(o, todo, jobs.size() - todo.size(), jobs.size(), subs, arenas, work, journal, endNanos);
             }
             List<RunRecord> records = new ArrayList<>();
             StringBuilder timings = new StringBuilder(TIMINGS_HEADER);
             for (int i = 0; i < jobs.size(); i++) {
                 Journal.Entry e = journal.done().get(jobs.get(i).index());
+                if (e == null) { // only past the grading's deadline
+                    if (o.deadline() == null) {
+                        throw new IllegalStateException("run " + ReportFiles.runId(jobs.get(i)) + " was not made (the grading"
+                                + " was stopped); grade again on the same --out to make it");
+                    }
+                    records.add(GradeDeadline.notMade(jobs.get(i), arenas.get(jobs.get(i).arena()), o.deadline()));
+                    continue;
+                }
                 records.add(e.record());
                 timings.append(ReportFiles.runId(jobs.get(i))).append(',').append(e.record().status().word()).append(',')
                         .append(String.format(Locale.ROOT, "%.3f,%.3f", e.wallSeconds(), e.pageSeconds())).append('\n');
@@ -150,7 +168,7 @@ public final class Grader {
     }
 
     private static void makeRuns(Options o, List<GradePlan.Job> todo, int alreadyDone, int total, Map<String, Submission> subs,
-            Map<String, Arena> arenas, Path work, Journal journal) {
+            Map<String, Arena> arenas, Path work, Journal journal, long endNanos) {
         int processors = StrictMath.max(1, Runtime.getRuntime().availableProcessors() / o.jobs());
         ChildRun.Limits limits = new ChildRun.Limits(o.heapMb(), o.wallSeconds(), o.hangSeconds(), o.seconds(), SAMPLE_MILLIS,
                 processors, o.sandbox(), o.trustedForTests());
@@ -170,6 +188,11 @@ public final class Grader {
             running.forEach(ChildRun::kill);
         }, "grade-stop-runs");
         Runtime.getRuntime().addShutdownHook(killRuns);
+        AtomicBoolean allBack = new AtomicBoolean();
+        AtomicBoolean deadlinePassed = new AtomicBoolean();
+        if (endNanos != Long.MAX_VALUE) {
+            GradeDeadline.watch(endNanos, stopping, deadlinePassed, allBack, running);
+        }
         Progress progress = new Progress(o.progress(), total, o.terminal());
         progress.skip(alreadyDone);
         WorkerSlots.Finisher finisher = (job, outcome) -> {
@@ -185,7 +208,7 @@ public final class Grader {
         };
         try {
             if (o.workerRuns() == 1) {
-                eachInItsOwnJvm(o, todo, subs, arenas, limits, work, sockets, running, finisher);
+                eachInItsOwnJvm(o, todo, subs, arenas, limits, work, sockets, running, finisher, stopping);
             } else {
                 // Submissions that cannot run need no JVM.
                 for (GradePlan.Job job : todo) {
@@ -194,12 +217,17 @@ public final class Grader {
                     }
                 }
                 WorkerSlots.Summary made = WorkerSlots.makeAll(todo.stream().filter(j -> subs.get(j.student()).runnable()).toList(),
-                        subs, arenas, limits, o.jobs(), o.workerRuns(), work.resolve("runs"), sockets, running, finisher);
+                        subs, arenas, limits, o.jobs(), o.workerRuns(), work.resolve("runs"), sockets, running, finisher, stopping);
                 o.progress().println(made.line());
             }
         } catch (IOException e) {
             throw new java.io.UncheckedIOException("a run could not be made: " + e.getMessage(), e);
         } finally {
+            allBack.set(true);
+            if (deadlinePassed.get()) {
+                o.progress().println("the grading's deadline (--deadline " + GradeDeadline.shown(o.deadline()) + ") passed: the"
+                        + " runs going were stopped; the report holds the runs made before it");
+            }
             running.forEach(ChildRun::kill);
             try {
                 Runtime.getRuntime().removeShutdownHook(killRuns);
@@ -213,7 +241,7 @@ public final class Grader {
     /** Each run in a child JVM of its own ({@code --worker-runs 1}): {@code jobs} at a time. */
     private static void eachInItsOwnJvm(Options o, List<GradePlan.Job> todo, Map<String, Submission> subs,
             Map<String, Arena> arenas, ChildRun.Limits limits, Path work, Path sockets, Set<Process> running,
-            WorkerSlots.Finisher finisher) {
+            WorkerSlots.Finisher finisher, AtomicBoolean stopping) {
         BlockingQueue<Integer> slots = new ArrayBlockingQueue<>(o.jobs());
         for (int i = 0; i < o.jobs(); i++) {
             slots.add(i);
@@ -224,6 +252,9 @@ public final class Grader {
             futures.add(pool.submit(() -> {
                 int slot = slots.take();
                 try {
+                    if (stopping.get()) {
+                        return null;
+                    }
                     Submission sub = subs.get(job.student());
                     ChildRun.Outcome made = null;
                     if (sub.runnable()) {

@@ -54,7 +54,7 @@ public final class ReportFiles {
     }
 
     /** @param arena an arena as given (a bundled name or a path) @return a short name for it */
-    static String arenaLabel(String arena) {
+    public static String arenaLabel(String arena) {
         String base = arena.substring(Math.max(arena.lastIndexOf('/'), arena.lastIndexOf('\\')) + 1);
         return base.endsWith(".arena") ? base.substring(0, base.length() - ".arena".length()) : base;
     }
@@ -198,12 +198,12 @@ public final class ReportFiles {
     }
 
     /** @param d a value @return it rounded to 2 decimals, as the report writes it */
-    static double round2(double d) {
+    public static double round2(double d) {
         return Double.parseDouble(String.format(Locale.ROOT, "%.2f", d));
     }
 
     /** A score as the report writes it: at most 2 decimals, no trailing zeros. */
-    static String num(double d) {
+    public static String num(double d) {
         String s = String.format(Locale.ROOT, "%.2f", d);
         s = s.replaceFirst("\\.?0+$", "");
         return s.equals("-0") ? "0" : s;

@@ -39,6 +39,7 @@ final class WorkerSlots {
     private final Map<String, Integer> workersOn = new HashMap<>();
     private final AtomicInteger folders = new AtomicInteger();
     private final AtomicInteger replaced = new AtomicInteger();
+    private java.util.concurrent.atomic.AtomicBoolean stop = new java.util.concurrent.atomic.AtomicBoolean();
 
     /**
      * How the runs were made, for the grader's progress (never the report: it depends on the machine).
@@ -73,11 +74,14 @@ final class WorkerSlots {
      * @param sockets    a folder of the grader's own, for the workers' sockets and scratch folders
      * @param running    the processes going now (a signal to the grader kills them)
      * @param finisher   what is done with each run made
+     * @param stop       once set (the grading's deadline passed, or it was told to stop), no further run is started
      * @return how they were made
      */
     static Summary makeAll(List<GradePlan.Job> todo, Map<String, Submission> subs, Map<String, Arena> arenas, ChildRun.Limits lim,
-            int jobs, int workerRuns, Path runs, Path sockets, Set<Process> running, Finisher finisher) {
+            int jobs, int workerRuns, Path runs, Path sockets, Set<Process> running, Finisher finisher,
+            java.util.concurrent.atomic.AtomicBoolean stop) {
         WorkerSlots slots = new WorkerSlots(todo);
+        slots.stop = stop;
         List<String> arenaNames = todo.stream().map(GradePlan.Job::arena).distinct().toList();
         int robots = arenaNames.stream().mapToInt(a -> arenas.get(a).robots().size()).max().orElse(1);
         ExecutorService pool = Executors.newFixedThreadPool(jobs);
@@ -151,6 +155,9 @@ final class WorkerSlots {
 
     /** @return a submission for a free slot: one no worker has yet, else a second worker's share of the most runs left, else null */
     private synchronized String pick() {
+        if (stop.get()) {
+            return null;
+        }
         String most = null;
         for (Map.Entry<String, Deque<GradePlan.Job>> e : pending.entrySet()) {
             int on = workersOn.getOrDefault(e.getKey(), 0);
@@ -172,7 +179,7 @@ final class WorkerSlots {
     }
 
     private synchronized GradePlan.Job poll(String student) {
-        return pending.get(student).poll();
+        return stop.get() ? null : pending.get(student).poll();
     }
 
     private synchronized int left(String student) {

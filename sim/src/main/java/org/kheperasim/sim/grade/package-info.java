@@ -10,6 +10,7 @@
  * goes to a journal ({@link org.kheperasim.sim.grade.Journal}), so a grading goes on where it stopped.
  * The runs are reported as a table, CSV, JSON and an HTML page with a picture of each run's trajectory. A grading can be cut into deterministic
  * shards ({@link org.kheperasim.sim.grade.GradePlan#shard}) that {@link org.kheperasim.sim.grade.ReportFiles}
- * merges into the same report. Documented in {@code docs/grading.md}.
+ * merges into the same report. A grading may keep a deadline of its own ({@link org.kheperasim.sim.grade.GradeDeadline}),
+ * and {@code grade.platform} writes its results in the learning platforms' formats. Documented in {@code docs/grading.md}.
  */
 package org.kheperasim.sim.grade;

@@ -12,13 +12,15 @@ import org.kheperasim.link.protocol.Command;
 import org.kheperasim.link.protocol.KheperaProtocol;
 import org.kheperasim.link.protocol.ProtocolException;
 import org.kheperasim.link.protocol.TurretCommand;
+import org.kheperasim.link.protocol.dialect.Dialect;
 import org.kheperasim.link.timing.LinkTiming;
 
 /**
  * One client's conversation with the served robot: its command lines read one by one and each
  * answered when its characters, the robot's turnaround and the reply's characters would have
- * passed on the wire at the set baud (divided by the robot's speed factor). Garbage gets the
- * robot's own error reply; an over-long line is answered once and thrown away.
+ * passed on the wire at the set baud (divided by the robot's speed factor), in the robot's {@link
+ * Dialect} (its letters, errors and line ends). Garbage gets the robot's own error reply; an
+ * over-long line is answered once and thrown away.
  */
 final class Conversation {
     private final ServedRobot robot;
@@ -35,6 +37,7 @@ final class Conversation {
     void handle(InputStream rawIn, OutputStream out) throws IOException {
         InputStream in = new BufferedInputStream(rawIn, 1024);
         LinkTiming timing = robot.timing();
+        Dialect dialect = robot.dialect();
         double speed = robot.speed();
         StringBuilder line = new StringBuilder(ProtocolServer.MAX_LINE_CHARS);
         boolean overflow = false;
@@ -53,8 +56,9 @@ final class Conversation {
                     overflow = true;
                     line.setLength(0);
                     note.accept("a line longer than " + ProtocolServer.MAX_LINE_CHARS
-                            + " characters was refused with " + KheperaProtocol.PROTOCOL_ERROR);
-                    lineFree = reply(out, timing, speed, lineFree, ProtocolServer.MAX_LINE_CHARS + 1, null);
+                            + " characters was refused with " + dialect.overlongReply());
+                    lineFree = reply(out, timing, dialect, speed, lineFree, ProtocolServer.MAX_LINE_CHARS + 1,
+                            dialect.overlongReply());
                     continue;
                 }
                 line.append((char) b);
@@ -71,12 +75,12 @@ final class Conversation {
             line.setLength(0);
             Command command;
             try {
-                command = KheperaProtocol.parseCommand(text);
+                command = dialect.parseCommand(text);
             } catch (ProtocolException e) {
-                lineFree = reply(out, timing, speed, lineFree, text.length() + 1, KheperaProtocol.errorReply(e));
+                lineFree = reply(out, timing, dialect, speed, lineFree, text.length() + 1, dialect.errorReply(e));
                 continue;
             }
-            lineFree = reply(out, timing, speed, lineFree, text.length() + 1, command);
+            lineFree = reply(out, timing, dialect, speed, lineFree, text.length() + 1, command);
         }
     }
 
@@ -84,11 +88,12 @@ final class Conversation {
      * Wait for the command's wire time and the turnaround, act, wait for the reply's wire time,
      * send it.
      *
-     * @param answer a {@link Command} to execute, a fixed error line, or null for {@code z,Protocol error}
+     * @param dialect the protocol answered in: its line end ends the reply
+     * @param answer a {@link Command} to execute, or a fixed error line
      * @return when the line is free for the next command, System.nanoTime()
      */
-    private long reply(OutputStream out, LinkTiming timing, double speed, long lineFree, int commandChars,
-            Object answer) throws IOException {
+    private long reply(OutputStream out, LinkTiming timing, Dialect dialect, double speed, long lineFree,
+            int commandChars, Object answer) throws IOException {
         long start = StrictMath.max(System.nanoTime(), lineFree);
         long actAt = start + (long) ((timing.wireNanos(commandChars) + timing.turnaroundNanos()) / speed);
         sleepUntil(actAt);
@@ -97,12 +102,10 @@ final class Conversation {
             text = vision(t);
         } else if (answer instanceof Command c) {
             text = robot.execute(c);
-        } else if (answer instanceof String s) {
-            text = s;
         } else {
-            text = KheperaProtocol.PROTOCOL_ERROR;
+            text = (String) answer;
         }
-        String wire = text + KheperaProtocol.REPLY_END;
+        String wire = text + dialect.replyEnd();
         long sendAt = actAt + (long) (timing.wireNanos(wire.length()) / speed);
         sleepUntil(sendAt);
         out.write(wire.getBytes(StandardCharsets.ISO_8859_1));

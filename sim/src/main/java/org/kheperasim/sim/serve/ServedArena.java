@@ -5,6 +5,8 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
+import org.kheperasim.link.protocol.dialect.Dialect;
+import org.kheperasim.link.protocol.dialect.KheperaDialect;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.engine.Engine;
 import org.kheperasim.sim.engine.Settings;
@@ -36,6 +38,7 @@ public final class ServedArena implements AutoCloseable {
     private volatile long wallStart;
     private volatile long leadNanos;
     private volatile long lastCommandNanos;
+    private volatile Dialect dialect = KheperaDialect.KHEPERA1;
 
     /**
      * @param arena the arena; each of its robot poses is a robot to serve
@@ -64,6 +67,28 @@ public final class ServedArena implements AutoCloseable {
             robot.onBoard().servedDirectly();
             simRobots.add(robot);
         }
+    }
+
+    /**
+     * Serve every robot in this dialect ({@code serve --dialect}) instead of the Khepera I's.
+     *
+     * @param served the dialect
+     * @return this arena
+     */
+    public ServedArena dialect(Dialect served) {
+        this.dialect = served;
+        return this;
+    }
+
+    /**
+     * The one place that decides which protocol a served robot answers in. Today {@code serve
+     * --dialect} chooses it for every robot; when each robot has a type, its type's dialect.
+     *
+     * @param robot a robot of this arena
+     * @return the dialect it answers in
+     */
+    Dialect dialectFor(SimRobot robot) {
+        return dialect;
     }
 
     /** @return the robots served, in the arena's order, each to be given to its own protocol server */

@@ -5,8 +5,10 @@ import java.util.concurrent.locks.ReentrantLock;
 import org.kheperasim.api.GripperState;
 import org.kheperasim.api.IrSensor;
 import org.kheperasim.link.protocol.Command;
+import org.kheperasim.link.protocol.EpuckCommand;
 import org.kheperasim.link.protocol.KheperaProtocol;
 import org.kheperasim.link.protocol.TurretCommand;
+import org.kheperasim.link.protocol.dialect.Dialect;
 import org.kheperasim.link.timing.LinkTiming;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.engine.Settings;
@@ -119,7 +121,9 @@ public final class ServedRobot implements AutoCloseable {
     }
 
     private String answer(Command command) {
-        if (command instanceof Command.SetSpeed c) {
+        if (command instanceof EpuckCommand c) {
+            return EpuckAnswers.answer(robot, c);
+        } else if (command instanceof Command.SetSpeed c) {
             robot.onBoard().driveSpeeds(c.left(), c.right());
             return c.reply().encode();
         } else if (command instanceof Command.ReadProximity c) {
@@ -248,6 +252,11 @@ public final class ServedRobot implements AutoCloseable {
     /** @return simulated seconds per wall-clock second */
     public double speed() {
         return world.speed();
+    }
+
+    /** @return the protocol this robot answers in (decided by {@link ServedArena#dialectFor}) */
+    public Dialect dialect() {
+        return world.dialectFor(robot);
     }
 
     /** @return the link timing replies are paced by (the settings' baud and turnaround) */
