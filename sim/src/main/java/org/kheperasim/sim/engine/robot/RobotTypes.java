@@ -49,16 +49,20 @@ public final class RobotTypes {
     }
 
     /**
-     * @param name {@code khepera1} or {@code khepera2}
+     * @param name {@code khepera1}, {@code khepera2}, or {@code sample:PATH} (a table fitted to a
+     *     sampled wall file, {@link SampleResponses})
      * @return that robot's proximity response, for the {@code prox.profile} setting
      */
     public static Response profile(String name) {
+        if (name.startsWith(SampleResponses.PREFIX)) {
+            return SampleResponses.fit(name.substring(SampleResponses.PREFIX.length()), KHEPERA1).table();
+        }
         for (ProximityProfile p : PROFILES) {
             if (p.name().equals(name)) {
                 return new Response.Curve(p, CONE_DEG, CONE_WEIGHTS);
             }
         }
         throw new IllegalArgumentException("unknown proximity profile '" + name + "'; use one of "
-                + PROFILES.stream().map(ProximityProfile::name).toList());
+                + PROFILES.stream().map(ProximityProfile::name).toList() + " or sample:PATH");
     }
 }
