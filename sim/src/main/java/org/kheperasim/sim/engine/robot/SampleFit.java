@@ -237,7 +237,7 @@ public final class SampleFit {
         int[] len = new int[n];
         int b = 0;
         for (int i = 0; i < n; i++) {
-            val[b] = StrictMath.max(0, StrictMath.min(2 * SampleTable.FULL_SCALE, row[i]));
+            val[b] = StrictMath.max(0, StrictMath.min(8 * SampleTable.FULL_SCALE, row[i]));
             len[b] = 1;
             while (b > 0 && val[b] > val[b - 1]) {
                 val[b - 1] = (val[b - 1] * len[b - 1] + val[b] * len[b]) / (len[b - 1] + len[b]);
