@@ -9,7 +9,6 @@ import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Locale;
-import javax.imageio.ImageIO;
 import org.kheperasim.sim.engine.robot.RobotType;
 import org.kheperasim.sim.engine.robot.SampleTable;
 
@@ -44,7 +43,7 @@ public final class FitPlot {
             panel(g, report, i, (i % cols) * PANEL_W, (i / cols) * PANEL_H);
         }
         g.dispose();
-        ImageIO.write(img, "png", png.toFile());
+        org.kheperasim.sim.files.AtomicFiles.writePng(png, img);
     }
 
     private static void panel(Graphics2D g, FitReport r, int sensor, int x0, int y0) {

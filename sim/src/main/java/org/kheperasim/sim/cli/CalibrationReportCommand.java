@@ -45,7 +45,7 @@ final class CalibrationReportCommand implements Callable<Integer> {
         String stem = file.getFileName().toString().replaceFirst("\\.(calibration|sample)$", "");
         Path txt = dir.resolve(stem + "-fit.txt");
         Path png = dir.resolve(stem + "-fit.png");
-        Files.writeString(txt, report.text());
+        org.kheperasim.sim.files.AtomicFiles.write(txt, report.text());
         FitPlot.write(report, png);
         spec.commandLine().getOut().print(report.text());
         spec.commandLine().getOut().println("wrote " + txt + " and " + png);
