@@ -14,7 +14,7 @@ import picocli.CommandLine.Spec;
 @Command(name = "khepera-link", mixinStandardHelpOptions = true, versionProvider = ToolVersion.class,
         description = "Runs the simulator's controllers on a real Khepera over a serial port (or TCP).",
         subcommands = {PortsCommand.class, RunCommand.class, ConsoleCommand.class, CheckCommand.class,
-                BenchCommand.class})
+                BenchCommand.class, CalibrateCommand.class})
 public final class Main implements Runnable {
     static {
         org.kheperasim.link.tool.PicocliStartup.skipUnusedConverters();

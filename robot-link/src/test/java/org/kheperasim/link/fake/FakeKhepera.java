@@ -60,6 +60,20 @@ public final class FakeKhepera implements AutoCloseable {
     private volatile int barrier;
     private volatile int resistivity;
     private final AtomicInteger replies = new AtomicInteger();
+    /** What the sensors see as the wheels move; null: the values set by {@link #setProximity}. */
+    private volatile Scene scene;
+
+    /** A world around the fake robot: its sensors answer from it and its wheels move in it. */
+    public interface Scene {
+        /** @param leftPulses left wheel's travel, encoder pulses @param rightPulses right wheel's */
+        void moved(double leftPulses, double rightPulses);
+
+        /** @return the eight proximity readings now */
+        int[] proximity();
+
+        /** @return the eight ambient-light readings now */
+        int[] light();
+    }
     private final AtomicInteger lateReplies = new AtomicInteger();
 
     /**
@@ -184,6 +198,10 @@ public final class FakeKhepera implements AutoCloseable {
         posLeft += left * ticks;
         posRight += right * ticks;
         lastUpdate = now;
+        Scene sc = scene;
+        if (sc != null && (left != 0 || right != 0)) {
+            sc.moved(left * ticks, right * ticks);
+        }
     }
 
     private Reply answer(Command c) {
@@ -210,10 +228,18 @@ public final class FakeKhepera implements AutoCloseable {
             return c.reply(100 + a.channel());
         } else if (c instanceof Command.ReadMotionStatus) {
             return c.reply(0, 0, 0, 0, 0, 0);
+        } else if (c instanceof Command.MoveToPosition m && scene != null) {
+            // With a scene, a position move ends at once: the wheels are where they were sent.
+            synchronized (this) {
+                scene.moved(m.left() - posLeft, m.right() - posRight);
+                posLeft = m.left();
+                posRight = m.right();
+            }
+            return c.reply();
         } else if (c instanceof Command.ReadProximity) {
-            return c.reply(proximity.clone());
+            return c.reply(scene != null ? scene.proximity() : proximity.clone());
         } else if (c instanceof Command.ReadLight) {
-            return c.reply(light.clone());
+            return c.reply(scene != null ? scene.light() : light.clone());
         } else if (c instanceof Command.ReadBus) {
             return c.reply(0);
         } else if (c instanceof Command.Turret t && t.id() == Command.Turret.VISION && visionFitted) {
@@ -255,6 +281,11 @@ public final class FakeKhepera implements AutoCloseable {
     }
 
     // ------------------------------------------------------------------ set the scene
+
+    /** @param s the world its sensors answer from and its wheels move in (null: none) */
+    public void setScene(Scene s) {
+        scene = s;
+    }
 
     /** @param values eight proximity values the robot reports */
     public void setProximity(int... values) {

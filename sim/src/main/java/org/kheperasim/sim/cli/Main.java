@@ -13,7 +13,7 @@ import picocli.CommandLine.Command;
         description = "A deterministic Khepera robot simulator. Runs a controller class in an arena.",
         subcommands = {GuiCommand.class, GuiBenchCommand.class, RunCommand.class, BenchCommand.class, SettingsCommand.class,
             ListCommand.class, RobotsCommand.class, ServeCommand.class, ImportWsuCommand.class, VerifyCommand.class, GradeCommand.class,
-            ReplayCommand.class, EvaluateCommand.class,
+            ReplayCommand.class, EvaluateCommand.class, CalibrationReportCommand.class, CompareCommand.class,
             CommandLine.HelpCommand.class})
 public final class Main implements java.util.concurrent.Callable<Integer> {
     static {

@@ -37,7 +37,7 @@ public final class Settings {
         num("api.callCostUs", "20", 0.001, 1_000_000, "simulated cost of each API call a controller makes, microseconds");
         num("noise.reading", "1", 0, 100, "scale of every per-reading noise (0 switches it off)");
         num("noise.robot", "1", 0, 100, "scale of every per-robot miscalibration drawn once a run (0 switches it off)");
-        DEFS.put("prox.profile", new Def("khepera1", Kind.PROFILE, 0, 0, "proximity response table: khepera1 (default) or khepera2"));
+        DEFS.put("prox.profile", new Def("khepera1", Kind.PROFILE, 0, 0, "proximity response table: khepera1 (default), khepera2, or sample:PATH (a table fitted to a sampled .sample wall file, docs/calibration.md)"));
         num("prox.offset", "15", 0, 1023, "proximity reading with nothing in range (the noise floor), counts");
         num("prox.offsetSpread", "10", 0, 1023, "per-robot spread of each sensor's offset, +/- counts");
         num("prox.gainSpread", "0.05", 0, 1, "per-robot spread of each sensor's gain, standard deviation (relative)");

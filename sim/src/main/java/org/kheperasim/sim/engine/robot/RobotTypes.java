@@ -85,14 +85,19 @@ public final class RobotTypes {
     }
 
     /**
-     * @param name {@code khepera1} or {@code khepera2}
+     * @param name {@code khepera1}, {@code khepera2}, or {@code sample:PATH} (a table fitted to a
+     *     sampled wall file, {@link SampleResponses})
      * @return that robot's proximity response, for the {@code prox.profile} setting
      */
     public static Response profile(String name) {
+        if (name.startsWith(SampleResponses.PREFIX)) {
+            return SampleResponses.fit(name.substring(SampleResponses.PREFIX.length()), KHEPERA1).table();
+        }
         return switch (name) {
             case "khepera1" -> KHEPERA1.proximity().response();
             case "khepera2" -> KHEPERA2.proximity().response();
-            default -> throw new IllegalArgumentException("unknown proximity profile '" + name + "'; use one of [khepera1, khepera2]");
+            default -> throw new IllegalArgumentException("unknown proximity profile '" + name
+                    + "'; use one of [khepera1, khepera2] or sample:PATH");
         };
     }
 

@@ -1,0 +1,155 @@
+package org.kheperasim.link.calibrate;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * One robot's dated calibration and the files it is written to (docs/calibration.md):
+ * {@code NAME-DATE.calibration} (the overlay on the robot's type that {@code khepera-sim} loads),
+ * {@code NAME-DATE-wall.sample} (the wall series' means in the evorobotpy {@code .sample} format)
+ * and {@code NAME-DATE-samples.csv} (every raw reading).
+ *
+ * @param robot the robot's name
+ * @param date the day it was measured, ISO (2026-12-02)
+ * @param base the robot type it overlays ({@code khepera1})
+ * @param drive the wheels' measured numbers
+ * @param wall the wall series
+ * @param lampMm the lamp series' distances, mm
+ * @param lamp the lamp series' mean ambient readings, {@code [distance][sensor]}
+ * @param raw every raw reading, as CSV lines
+ */
+public record Calibration(String robot, String date, String base, Drive drive, Wall wall, double[] lampMm, double[][] lamp,
+        List<String> raw) {
+    /** The first line of a calibration file. */
+    public static final String MAGIC = "khepera-calibration 1";
+
+    /**
+     * @param mmPerPulse wheel travel per encoder pulse, mm (straight run and ruler)
+     * @param wheelBaseMm distance between the wheels, mm (spin and the angle turned)
+     * @param mmPerSecondPerUnit wheel speed of one speed unit, mm/s (timed run, encoders)
+     * @param rightOverLeft the right wheel's travel over the left's at equal commands (the run's drift by ruler)
+     */
+    public record Drive(double mmPerPulse, double wheelBaseMm, double mmPerSecondPerUnit, double rightOverLeft) {
+    }
+
+    /**
+     * @param startMm the first block's gap between the robot's front and the wall, mm
+     * @param stepMm the step it backs away by, mm
+     * @param headings headings per block, evenly round the circle (the wall 360/headings degrees further right each)
+     * @param means {@code [block][heading][sensor]} mean readings
+     */
+    public record Wall(double startMm, double stepMm, int headings, double[][][] means) {
+        /** @param block a block @return its gap, mm */
+        public double gapMm(int block) {
+            return startMm + block * stepMm;
+        }
+    }
+
+    /** @param dir where to write @return the calibration file written (the other two beside it) */
+    public Path write(Path dir) throws IOException {
+        Files.createDirectories(dir);
+        String stem = robot + "-" + date;
+        Path sample = dir.resolve(stem + "-wall.sample");
+        Files.writeString(sample, sampleText(), StandardCharsets.UTF_8);
+        Path csv = dir.resolve(stem + "-samples.csv");
+        List<String> lines = new ArrayList<>();
+        lines.add("series,block,gap_mm,object_right_deg,repeat,s0,s1,s2,s3,s4,s5,s6,s7");
+        lines.addAll(raw);
+        Files.write(csv, lines, StandardCharsets.UTF_8);
+        Path cal = dir.resolve(stem + ".calibration");
+        StringBuilder sb = new StringBuilder(MAGIC).append('\n');
+        sb.append("# measured over robot-link by 'khepera-link calibrate'; docs/calibration.md\n");
+        sb.append("robot ").append(robot).append('\n');
+        sb.append("date ").append(date).append('\n');
+        sb.append("base ").append(base).append('\n');
+        sb.append("wall ").append(sample.getFileName()).append('\n');
+        sb.append("samples ").append(csv.getFileName()).append('\n');
+        sb.append(String.format(Locale.ROOT, "drive.mmPerPulse %.5f%ndrive.wheelBaseMm %.3f%ndrive.mmPerSecondPerUnit %.4f%n"
+                + "motor.rightOverLeft %.5f%n", drive.mmPerPulse(), drive.wheelBaseMm(), drive.mmPerSecondPerUnit(),
+                drive.rightOverLeft()));
+        for (int d = 0; d < lampMm.length; d++) {
+            sb.append(String.format(Locale.ROOT, "lamp %.1f", lampMm[d]));
+            for (double v : lamp[d]) {
+                sb.append(String.format(Locale.ROOT, " %.1f", v));
+            }
+            sb.append('\n');
+        }
+        Files.writeString(cal, sb.toString(), StandardCharsets.UTF_8);
+        return cal;
+    }
+
+    private String sampleText() {
+        int blocks = wall.means().length;
+        int sensors = wall.means()[0][0].length;
+        StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "%d %d %d %s %s%n", sensors, wall.headings(), blocks,
+                Answers.fmt(wall.startMm()), Answers.fmt(wall.stepMm())));
+        for (int t = 0; t < blocks; t++) {
+            sb.append("TURN ").append(t).append('\n');
+            for (int k = 0; k < wall.headings(); k++) {
+                for (int s = 0; s < sensors; s++) {
+                    double a = StrictMath.max(0, StrictMath.min(1, wall.means()[t][k][s] / 1023));
+                    sb.append(String.format(Locale.ROOT, "%.6f ", a));
+                }
+                sb.append('\n');
+            }
+        }
+        return sb.append("END\n").toString();
+    }
+
+    /**
+     * Reads back the wall means at heading 0 of a written calibration ({@code --check} compares them).
+     *
+     * @param calibration a calibration file
+     * @return the means with the wall straight ahead, block by block
+     */
+    public static Ahead ahead(Path calibration) throws IOException {
+        List<String> lines = Files.readAllLines(calibration, StandardCharsets.UTF_8);
+        if (lines.isEmpty() || !lines.get(0).trim().equals(MAGIC)) {
+            throw new IllegalArgumentException("calibration " + calibration + " does not start with '" + MAGIC
+                    + "': give a file written by 'khepera-link calibrate'");
+        }
+        String wallName = null;
+        double mmPerPulse = 0.08;
+        for (String l : lines) {
+            if (l.startsWith("wall ")) {
+                wallName = l.substring(5).trim();
+            } else if (l.startsWith("drive.mmPerPulse ")) {
+                mmPerPulse = Double.parseDouble(l.substring(17).trim());
+            }
+        }
+        if (wallName == null) {
+            throw new IllegalArgumentException("calibration " + calibration + " names no wall file: add a line 'wall FILE.sample'");
+        }
+        Path p = calibration.toAbsolutePath().getParent().resolve(wallName);
+        List<String> s = Files.readAllLines(p, StandardCharsets.UTF_8);
+        String[] head = s.get(0).trim().split("\\s+");
+        int ns = Integer.parseInt(head[0]);
+        int na = Integer.parseInt(head[1]);
+        int nd = Integer.parseInt(head[2]);
+        double init = Double.parseDouble(head[3]);
+        double step = Double.parseDouble(head[4]);
+        double[] gaps = new double[nd];
+        double[][] v = new double[nd][ns];
+        for (int t = 0; t < nd; t++) {
+            gaps[t] = init + t * step;
+            String[] row = s.get(1 + t * (na + 1) + 1).trim().split("\\s+");
+            for (int i = 0; i < ns; i++) {
+                v[t][i] = Double.parseDouble(row[i]) * 1023;
+            }
+        }
+        return new Ahead(gaps, v, mmPerPulse);
+    }
+
+    /**
+     * @param gapsMm the blocks' gaps, mm
+     * @param means {@code [block][sensor]} with the wall straight ahead
+     * @param mmPerPulse the calibrated wheel travel per pulse, mm
+     */
+    public record Ahead(double[] gapsMm, double[][] means, double mmPerPulse) {
+    }
+}

@@ -1,0 +1,168 @@
+package org.kheperasim.sim.calibration;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayInputStream;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.kheperasim.link.calibrate.Answers;
+import org.kheperasim.link.calibrate.Calibration;
+import org.kheperasim.link.calibrate.CalibrationRun;
+import org.kheperasim.link.io.LineEnd;
+import org.kheperasim.link.io.Links;
+import org.kheperasim.link.io.SerialSettings;
+import org.kheperasim.link.session.Session;
+import org.kheperasim.link.timing.LinkTiming;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.kheperasim.link.cli.Main;
+import org.kheperasim.link.fake.FakeKhepera;
+import org.kheperasim.link.fake.FakeWallScene;
+import org.kheperasim.link.fake.OnSocket;
+import org.kheperasim.sim.arena.ArenaFormat;
+import org.kheperasim.sim.arena.OccupancyGrid;
+import org.kheperasim.sim.arena.Pose;
+import org.kheperasim.sim.engine.Engine;
+import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.SimRobot;
+import org.kheperasim.sim.engine.World;
+
+/**
+ * {@code khepera-link calibrate --non-interactive} against a fake Khepera whose sensors follow a
+ * response the calibration is not told (warped per sensor by a gain and a distance shift drawn from
+ * a seed, its wheels off nominal): the simulator loaded with the calibration reads what the fake
+ * reads at gaps the calibration did not sample; {@code --check} passes on the same robot and fails
+ * once its sensors drift by 20 %.
+ */
+class CalibrateAgainstFakeTest {
+    private static final long SEED = 37;
+
+    @Test
+    void theSimulatorLoadedWithTheCalibrationMatchesTheFake(@TempDir Path dir) throws Exception {
+        FakeWallScene scene = new FakeWallScene(SEED);
+        Path cal = calibrate(scene, dir);
+        assertTrue(Files.exists(dir.resolve("lab3-2026-12-02-wall.sample")));
+        List<String> raw = Files.readAllLines(dir.resolve("lab3-2026-12-02-samples.csv"));
+        assertEquals(1 + 14 * 24 * 20 + 4 * 20, raw.size(), "one line per raw reading, with its header");
+
+        CalibrationFile c = CalibrationFile.load(cal, Settings.defaults().withNoise(0).with("prox.spikeRate", "0"));
+        // The ruler measures the axle's middle: the two wheels' mean travel per pulse.
+        assertEquals(scene.mmPerPulse() * (1 + scene.rightOverLeft()) / 2, c.type().drive().mmPerPulse(), 0.0002, "mm per pulse");
+        assertEquals(scene.rightOverLeft(), 2 * c.settings().number("motor.right.calibration")
+                / (2 * c.settings().number("motor.left.calibration")), 0.002, "right over left");
+        assertEquals(scene.wheelBaseMm(), c.type().drive().wheelBaseMm(), 0.6, "wheel base");
+        // Unsampled gaps: halfway between the calibration's 5, 8, 11, ... mm, at headings between its 15 degrees too.
+        List<Double> errors = new ArrayList<>();
+        List<Double> lit = new ArrayList<>();
+        double worst = 0;
+        for (double gap : new double[] {6.5, 9.5, 12.5, 15.5, 21.5, 27.5}) {
+            for (double right : new double[] {0, 7.5, 37.5, 82.5, 277.5, 322.5}) {
+                int[] sim = simulate(c, gap, right);
+                for (int i = 0; i < 8; i++) {
+                    double e = StrictMath.abs(sim[i] - scene.expected(i, gap, right));
+                    errors.add(e);
+                    if (scene.expected(i, gap, right) > 50) {
+                        lit.add(e);
+                    }
+                    worst = StrictMath.max(worst, e);
+                }
+            }
+        }
+        double[] e = errors.stream().mapToDouble(Double::doubleValue).sorted().toArray();
+        double median = e[e.length / 2];
+        double p90 = e[(int) (e.length * 0.9)];
+        double[] l = lit.stream().mapToDouble(Double::doubleValue).sorted().toArray();
+        double medianLit = l[l.length / 2];
+        System.out.printf(Locale.ROOT, "calibrated simulator vs fake at %d unsampled points: median %.1f, 90%% %.1f, worst %.1f counts;"
+                + " the %d lit (> 50): median %.1f%n", e.length, median, p90, worst, l.length, medianLit);
+        assertTrue(medianLit <= 0.05 * 1023, "median error of the lit readings " + medianLit);
+        assertTrue(median <= 0.05 * 1023, "median error " + median);
+        assertTrue(p90 <= 0.10 * 1023, "90th percentile error " + p90);
+    }
+
+    @Test
+    void checkNoticesATwentyPercentDrift(@TempDir Path dir) throws Exception {
+        FakeWallScene scene = new FakeWallScene(SEED + 1);
+        Path cal = calibrate(scene, dir);
+        assertEquals(0, check(scene, cal, 1.0), "the same robot has not drifted");
+        assertEquals(1, check(scene, cal, 1.2), "20 % more signal is a drift");
+        assertEquals(1, check(scene, cal, 0.8), "20 % less signal is a drift");
+    }
+
+    private static int check(FakeWallScene scene, Path cal, double drift) throws Exception {
+        scene.drift(drift);
+        scene.place(5, 0);
+        StringWriter out = new StringWriter();
+        int code;
+        try (OnSocket<FakeKhepera> fake = fake(scene)) {
+            code = Main.execute(new String[] {"calibrate", "--port", fake.url(), "--check", cal.toString(), "--non-interactive",
+                "--scan-ms", "0", "--readings", "10"}, new ByteArrayInputStream(new byte[0]), new PrintWriter(out),
+                new PrintWriter(new StringWriter()));
+        }
+        assertTrue(out.toString().contains("median change"), out.toString());
+        return code;
+    }
+
+    private static Path calibrate(FakeWallScene scene, Path dir) throws Exception {
+        StringWriter out = new StringWriter();
+        // What a person would measure by ruler and protractor on this robot.
+        double runMm = 2500 * scene.mmPerPulse() * (1 + scene.rightOverLeft()) / 2;
+        double spinDeg = StrictMath.toDegrees(2081 * scene.mmPerPulse() * (1 + scene.rightOverLeft()) / scene.wheelBaseMm());
+        double turn = 2500 * scene.mmPerPulse() * (scene.rightOverLeft() - 1) / scene.wheelBaseMm();
+        Map<String, String> given = Map.of("run.mm", String.format(Locale.ROOT, "%.2f", runMm),
+                "run.sideMm", String.format(Locale.ROOT, "%.2f", runMm * turn / 2),
+                "spin.deg", String.format(Locale.ROOT, "%.2f", spinDeg));
+        // The person puts the robot 5 mm from the wall, straight on, when the procedure asks for it.
+        Answers answers = new Answers(new PrintWriter(out), null, given, key -> {
+            if (key.equals("wall.placed")) {
+                scene.place(5, 0);
+            }
+        });
+        try (OnSocket<FakeKhepera> fake = fake(scene);
+                Session session = new Session(Links.open(new SerialSettings(fake.url(), 38400, 8, 2, SerialSettings.Parity.NONE,
+                        LineEnd.LF)), new LinkTiming(38400, 11, LinkTiming.DEFAULT_TURNAROUND_NANOS), Session.Options.defaults())) {
+            session.open();
+            CalibrationRun.Plan p = CalibrationRun.Plan.standard();
+            Calibration c = new CalibrationRun(session, answers, new PrintWriter(out),
+                    new CalibrationRun.Plan(p.readings(), 0, p.blocks(), p.headings(), p.runPulses(), p.spinPulses())).run("lab3", "2026-12-02");
+            return c.write(dir);
+        } finally {
+            System.out.println(out.toString().lines().filter(l -> l.startsWith("wheels") || l.startsWith("wall at 5"))
+                    .reduce("", (a, b) -> a + b + "\n"));
+        }
+    }
+
+    /** A fake Khepera on a loopback socket, in the scene. */
+    private static OnSocket<FakeKhepera> fake(FakeWallScene scene) throws Exception {
+        return OnSocket.start((in, o) -> {
+            FakeKhepera k = new FakeKhepera(in, o, null);
+            k.setScene(scene);
+            return k.start();
+        });
+    }
+
+    private static int[] simulate(CalibrationFile c, double gap, double right) {
+        double face = 300 * OccupancyGrid.CELL_MM;
+        double x = face - 27.5 - gap;
+        World world = new World(ArenaFormat.parse(String.format(Locale.ROOT, "khepera-arena 1\nname wall\nsize 1219.2 1219.2\n"
+                + "robot %s 600 0\nwall %s 300 %s 900 8\n", x, face + 4, face + 4), "wall.arena"));
+        Engine engine = new Engine(world, 7);
+        SimRobot robot = engine.addRobot("r", new Pose(x, 600, right), c.settings(), c.type());
+        for (int t = 0; t < 100; t++) {
+            engine.step();
+        }
+        int[] out = new int[8];
+        for (int i = 0; i < 8; i++) {
+            out[i] = robot.controls().visibleProximity(i);
+        }
+        return Arrays.copyOf(out, 8);
+    }
+}
