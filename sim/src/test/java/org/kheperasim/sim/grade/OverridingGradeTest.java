@@ -77,9 +77,8 @@ class OverridingGradeTest {
         student(subs, "quitsnohandler", "active = false;", QUIT,
                 "@Override public UncaughtExceptionHandler getUncaughtExceptionHandler() { " + SPIN + " return null; }");
         Path out = dir.resolve("report");
-        // Four at a time: the seven runs are a worker JVM's start each and a few seconds of cheap simulation.
         String printed = grade("--submissions", subs.toString(), "--arenas", "maze", "--seeds", "1", "--seconds", "20",
-                "--jobs", "4", "--out", out.toString(), "--hang-timeout", "5", "--wall-limit", "120", "--no-sandbox");
+                "--jobs", "2", "--out", out.toString(), "--hang-timeout", "5", "--wall-limit", "120", "--no-sandbox");
 
         Map<String, RunRecord> runs = new TreeMap<>();
         for (RunRecord r : ReportFiles.readCsv(out.resolve("results.csv"))) {
