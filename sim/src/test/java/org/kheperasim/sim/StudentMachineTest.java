@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
 import java.io.File;
-import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -17,9 +16,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.cli.Main;
 import org.kheperasim.sim.run.ControllerCompiler;
 import org.kheperasim.sim.sandbox.BoxProbe;
+import org.kheperasim.testfixtures.Cli;
 
 /**
  * What a student's own machine brings, as far as this one can show it: files saved with Windows's line
@@ -38,28 +37,8 @@ class StudentMachineTest {
         return text.replace("\r\n", "\n").replace("\n", "\r\n");
     }
 
-    private record Ran(int code, String out, String err) {
-    }
-
-    private static Ran main(String... args) {
-        PrintStream oldOut = System.out;
-        PrintStream oldErr = System.err;
-        ByteArrayOutputStream o = new ByteArrayOutputStream();
-        ByteArrayOutputStream e = new ByteArrayOutputStream();
-        int code;
-        try {
-            System.setOut(new PrintStream(o, true, StandardCharsets.UTF_8));
-            System.setErr(new PrintStream(e, true, StandardCharsets.UTF_8));
-            code = Main.commandLine().execute(args);
-        } finally {
-            System.setOut(oldOut);
-            System.setErr(oldErr);
-        }
-        return new Ran(code, o.toString(StandardCharsets.UTF_8), e.toString(StandardCharsets.UTF_8));
-    }
-
     /** The simulator's command line in a JVM of its own, started in {@code folder}, with extra JVM options. */
-    private static Ran child(Path folder, List<String> jvm, String... args) throws Exception {
+    private static Cli.Printed child(Path folder, List<String> jvm, String... args) throws Exception {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString()));
         cmd.addAll(jvm);
         cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main"));
@@ -78,7 +57,7 @@ class StudentMachineTest {
         String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         assertTrue(p.waitFor(120, TimeUnit.SECONDS), String.join(" ", args));
         drain.join();
-        return new Ran(p.exitValue(), out, err.toString(StandardCharsets.UTF_8));
+        return new Cli.Printed(p.exitValue(), out, err.toString(StandardCharsets.UTF_8));
     }
 
     @Test
@@ -98,16 +77,16 @@ class StudentMachineTest {
         assertEquals("MyFirst", compiled.className());
 
         Path crlfTrace = folder.resolve("traces é").resolve("run 1.trace");
-        Ran crlfRun = main("run", "--arena", arena.toString(), "--classpath", classes.toString(), "--controller", "MyFirst",
+        Cli.Printed crlfRun = Cli.main("run", "--arena", arena.toString(), "--classpath", classes.toString(), "--controller", "MyFirst",
                 "--seconds", "20", "--seed", "1", "--trace", crlfTrace.toString());
         assertEquals(0, crlfRun.code(), crlfRun.out() + crlfRun.err());
         Path lfTrace = home.resolve("lf.trace");
-        Ran lfRun = main("run", "--arena", "maze", "--classpath", classes.toString(), "--controller", "MyFirst",
+        Cli.Printed lfRun = Cli.main("run", "--arena", "maze", "--classpath", classes.toString(), "--controller", "MyFirst",
                 "--seconds", "20", "--seed", "1", "--trace", lfTrace.toString());
         assertEquals(0, lfRun.code(), lfRun.out() + lfRun.err());
         assertArrayEquals(Files.readAllBytes(lfTrace), Files.readAllBytes(crlfTrace),
                 "the CRLF arena in an accented folder runs byte for byte as the bundled one");
-        Ran verify = main("verify", "--classpath", classes.toString(), crlfTrace.toString());
+        Cli.Printed verify = Cli.main("verify", "--classpath", classes.toString(), crlfTrace.toString());
         assertEquals(0, verify.code(), verify.out() + verify.err());
         assertTrue(verify.out().startsWith("identical"), verify.out());
     }
@@ -127,10 +106,10 @@ class StudentMachineTest {
         Path classes = folder.resolve("classes");
         assertTrue(ControllerCompiler.compile(source, classes).success());
         Path trace = folder.resolve("run.trace");
-        Ran run = main("run", "--arena", "lab", "--classpath", classes.toString(), "--controller", "MyFirst", "--seconds", "5",
+        Cli.Printed run = Cli.main("run", "--arena", "lab", "--classpath", classes.toString(), "--controller", "MyFirst", "--seconds", "5",
                 "--seed", "1", "--trace", trace.toString());
         assertEquals(0, run.code(), run.out() + run.err());
-        Ran verify = main("verify", "--classpath", classes + File.pathSeparator + home, trace.toString());
+        Cli.Printed verify = Cli.main("verify", "--classpath", classes + File.pathSeparator + home, trace.toString());
         assertEquals(0, verify.code(), verify.out() + verify.err());
         assertTrue(verify.out().startsWith("identical"), verify.out());
     }
@@ -151,7 +130,7 @@ class StudentMachineTest {
         List<String> noBox = List.of("-D" + BoxProbe.PATH_PROPERTY + "=" + none);
         Path subs = Files.createDirectories(home.resolve("élèves").resolve("alice"));
         Files.writeString(subs.resolve("MyFirst.java"), ReadmeSnippets.firstController());
-        Ran grade = child(home, noBox, "grade", "--submissions", subs.getParent().toString(), "--arenas", "lab",
+        Cli.Printed grade = child(home, noBox, "grade", "--submissions", subs.getParent().toString(), "--arenas", "lab",
                 "--seeds", "1", "--seconds", "5", "--out", home.resolve("report").toString());
         assertEquals(2, grade.code(), grade.out() + grade.err());
         String line = grade.err().strip();
@@ -160,12 +139,12 @@ class StudentMachineTest {
                 + " bubblewrap (bwrap) is not installed"), line);
         assertTrue(line.contains("apt-get install bubblewrap") && line.contains("give --no-sandbox"), line);
 
-        Ran sandboxed = child(home, noBox, "run", "--sandbox", "--arena", "lab", "--controller", "Braitenberg", "--seconds", "5");
+        Cli.Printed sandboxed = child(home, noBox, "run", "--sandbox", "--arena", "lab", "--controller", "Braitenberg", "--seconds", "5");
         assertEquals(2, sandboxed.code(), sandboxed.out() + sandboxed.err());
         assertTrue(sandboxed.err().contains("bubblewrap (bwrap) is not installed") && sandboxed.err().contains("leave --sandbox out"),
                 sandboxed.err());
 
-        Ran run = child(home, noBox, "run", "--arena", "lab", "--controller", "Braitenberg", "--seconds", "5", "--seed", "1");
+        Cli.Printed run = child(home, noBox, "run", "--arena", "lab", "--controller", "Braitenberg", "--seconds", "5", "--seed", "1");
         assertEquals(0, run.code(), run.out() + run.err());
         assertTrue(run.out().contains("Braitenberg in lab: 5.0 s simulated"), run.out());
     }

@@ -120,6 +120,8 @@ final class HeapWatch {
     }
 
     private static volatile long lastCollection;
+    /** The heap's maximum (-Xmx), fixed for the JVM's life. */
+    private static final long MAX_BYTES = Runtime.getRuntime().maxMemory();
 
     /**
      * A cheap look, for the controller's thread every few API calls: when the heap holds more than
@@ -129,8 +131,11 @@ final class HeapWatch {
      */
     static String pressed() {
         Runtime rt = Runtime.getRuntime();
-        long max = rt.maxMemory();
-        if ((rt.totalMemory() - rt.freeMemory()) * 100 < max * THRESHOLD_PERCENT) {
+        long max = MAX_BYTES;
+        // The heap the JVM holds bounds what is in use: while it is under the threshold, one call of
+        // the JVM's answers (each costs a transition into the VM, and this runs every few API calls).
+        long total = rt.totalMemory();
+        if (total * 100 < max * THRESHOLD_PERCENT || (total - rt.freeMemory()) * 100 < max * THRESHOLD_PERCENT) {
             return null;
         }
         long now = System.nanoTime();

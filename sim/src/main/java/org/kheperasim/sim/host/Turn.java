@@ -52,8 +52,23 @@ final class Turn {
          * watchdog took the turn from it in the controller's code, and it must never enter the
          * simulator's again. The watchdog takes the turn only from a thread in the controller's code,
          * so a thread that the wall clock calls hung never touches the run while another steps it.
+         * Written through {@link #WHERE}: the entry and the watchdog's take are atomic exchanges out
+         * of {@link #STUDENT}, so only one of them wins; the way out is a plain release store, since
+         * nobody else writes while it is {@link #SIMULATOR} (an atomic exchange there cost a sixth
+         * of a lone robot's speed, two of them at every API call: bench).
          */
-        private final java.util.concurrent.atomic.AtomicInteger where = new java.util.concurrent.atomic.AtomicInteger(STUDENT);
+        private volatile int where = STUDENT;
+
+        /** {@link #where}'s handle, for its atomic exchanges. */
+        static final java.lang.invoke.VarHandle WHERE;
+
+        static {
+            try {
+                WHERE = java.lang.invoke.MethodHandles.lookup().findVarHandle(Seat.class, "where", int.class);
+            } catch (ReflectiveOperationException e) {
+                throw new ExceptionInInitializerError(e);
+            }
+        }
 
         Seat(Thread thread) {
             this.thread = thread;
@@ -66,29 +81,32 @@ final class Turn {
          *         turn was taken from it: it must not touch the run
          */
         int enterSimulator() {
-            while (true) {
-                int w = where.get();
-                if (w != STUDENT || where.compareAndSet(STUDENT, SIMULATOR)) {
-                    return w;
-                }
+            int w = where;
+            if (w != STUDENT) {
+                return w; // inside already, or taken: only the watchdog writes, and only out of STUDENT
             }
+            // Atomic against the watchdog's take (takeFromStuck): it fails only when the take came first.
+            return WHERE.compareAndSet(this, STUDENT, SIMULATOR) ? STUDENT : where;
         }
 
         /** @param before what {@link #enterSimulator} returned: back to the controller's code when it was there */
         void leaveSimulator(int before) {
-            if (before == STUDENT) {
-                where.compareAndSet(SIMULATOR, STUDENT);
+            // Only when inside (never over a take: a call that found itself taken leaves too). Nobody
+            // else writes while it is SIMULATOR, so the look and the store cannot be split; the release
+            // orders the simulator's writes before a later take, whose exchange reads it.
+            if (before == STUDENT && where == SIMULATOR) {
+                WHERE.setRelease(this, STUDENT);
             }
         }
 
         /** @return true while the seat's thread runs the simulator's code */
         boolean inSimulator() {
-            return where.get() == SIMULATOR;
+            return where == SIMULATOR;
         }
 
         /** @return true when the turn was taken from it ({@link Turn#takeFromStuck}) */
         boolean taken() {
-            return where.get() == TAKEN;
+            return where == TAKEN;
         }
 
         Thread thread() {
@@ -207,7 +225,7 @@ final class Turn {
      * @return true when the turn was taken
      */
     synchronized boolean takeFromStuck(Seat from, Seat to) {
-        if (holder != from || !from.where.compareAndSet(STUDENT, TAKEN)) {
+        if (holder != from || !Seat.WHERE.compareAndSet(from, STUDENT, TAKEN)) {
             return false;
         }
         giveTo(to);

@@ -3,10 +3,7 @@ package org.kheperasim.sim.grade;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -15,7 +12,7 @@ import java.util.TreeMap;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
-import org.kheperasim.sim.cli.Main;
+import org.kheperasim.testfixtures.Cli;
 
 /**
  * {@code grade} of students whose controllers override their {@code Thread}'s methods or the
@@ -115,17 +112,8 @@ class OverridingGradeTest {
         String[] full = new String[args.length + 1];
         full[0] = "grade";
         System.arraycopy(args, 0, full, 1, args.length);
-        PrintStream old = System.out;
-        ByteArrayOutputStream o = new ByteArrayOutputStream();
-        int code;
-        try {
-            System.setOut(new PrintStream(o, true, StandardCharsets.UTF_8));
-            code = Main.commandLine().execute(full);
-        } finally {
-            System.setOut(old);
-        }
-        String text = o.toString(StandardCharsets.UTF_8);
-        assertEquals(0, code, text);
-        return text;
+        Cli.Printed p = Cli.main(full);
+        assertEquals(0, p.code(), p.out() + p.err());
+        return p.out();
     }
 }
