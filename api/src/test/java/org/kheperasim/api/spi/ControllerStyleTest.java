@@ -55,7 +55,8 @@ class ControllerStyleTest {
 
     private static RobotPort port() {
         return (RobotPort) Proxy.newProxyInstance(RobotPort.class.getClassLoader(), new Class<?>[] {RobotPort.class},
-                (proxy, method, args) -> method.getName().equals("toString") ? "fake port" : null);
+                (proxy, method, args) -> method.getName().equals("toString") ? "fake port"
+                        : method.isDefault() ? java.lang.reflect.InvocationHandler.invokeDefault(proxy, method, args) : null);
     }
 
     @Test

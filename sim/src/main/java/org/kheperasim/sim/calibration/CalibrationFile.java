@@ -91,12 +91,8 @@ public record CalibrationFile(String robot, String date, RobotType type, Setting
         }
         Path wallFile = file.toAbsolutePath().getParent().resolve(wall);
         SampleFit.Result fit = SampleFit.fit(baseType, SampleResponses.samples(SampleTable.read(wallFile), baseType));
-        RobotType.Proximity p = baseType.proximity();
-        RobotType type = new RobotType(baseType.name(), "calibration of " + robot + " on " + date + " (" + file.getFileName() + ")",
-                baseType.body(), new RobotType.Drive(wheelBase, unit, d.maxSpeed(), mmPerPulse, d.motorPeriodNanos(),
-                        d.noisePeriodNanos(), d.moveSpeed(), d.acceleration()), baseType.sensors(),
-                new RobotType.Proximity(fit.table(), fit.offset(), fit.noiseAbs(), fit.noiseRel(), p.maxReading()),
-                baseType.light(), baseType.turrets(), baseType.dialect());
+        RobotType type = baseType.calibrated("calibration of " + robot + " on " + date + " (" + file.getFileName() + ")",
+                wheelBase, unit, mmPerPulse, fit.table(), fit.offset(), fit.noiseAbs(), fit.noiseRel());
         Settings s = base.with("prox.offsetSpread", "0").with("prox.gainSpread", "0").with("motor.spread", "0")
                 .with("encoder.mmPerPulse", fmt(mmPerPulse))
                 .with("motor.left.calibration", fmt(2 / (1 + rightOverLeft)))

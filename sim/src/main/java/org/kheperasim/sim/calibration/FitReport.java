@@ -41,19 +41,8 @@ public record FitReport(SampleTable table, RobotType type, SampleFit.Result held
      * @return the report
      */
     public static FitReport of(SampleTable table, RobotType type) {
-        List<SampleFit.Sample> train = new ArrayList<>();
-        List<SampleFit.Sample> all = new ArrayList<>();
-        for (int t = 0; t < table.blocks(); t++) {
-            for (int k = 0; k < table.angles(); k++) {
-                for (int i = 0; i < table.sensors(); i++) {
-                    SampleFit.Sample s = new SampleFit.Sample(i, table.gapMm(t), table.objectRightDeg(k), table.counts(t, k, i));
-                    all.add(s);
-                    if (!heldOut(t)) {
-                        train.add(s);
-                    }
-                }
-            }
-        }
+        List<SampleFit.Sample> train = SampleFit.samples(table, t -> !heldOut(t));
+        List<SampleFit.Sample> all = SampleFit.samples(table, t -> true);
         SampleFit.Result held = SampleFit.fit(type, train);
         SampleFit.Result full = SampleFit.fit(type, all);
         List<Errors> errors = new ArrayList<>();

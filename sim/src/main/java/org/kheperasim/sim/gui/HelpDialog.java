@@ -19,9 +19,9 @@ final class HelpDialog {
     private static final System.Logger LOG = System.getLogger(HelpDialog.class.getName());
 
     /** Every page of docs/, in reading order (a test checks that none is missing). */
-    static final List<String> PAGES = List.of("quick-start.md", "gui.md", "arena-format.md", "simulation-model.md",
+    static final List<String> PAGES = List.of("quick-start.md", "gui.md", "arena-format.md", "robot-files.md", "simulation-model.md",
             "controller-rules.md", "swarms.md", "robot-link.md", "protocol-server.md", "wsu-migration.md", "grading.md",
-            "testing.md", "autograding.md", "web-replay.md", "evaluate.md", "faq.md");
+            "testing.md", "autograding.md", "web-replay.md", "evaluate.md", "calibration.md", "adding-a-device.md", "faq.md");
 
     private HelpDialog() {
     }

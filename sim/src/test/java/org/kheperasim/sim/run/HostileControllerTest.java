@@ -45,7 +45,7 @@ class HostileControllerTest {
         {"Deleter", "new java.io.File(TARGET).delete(); sleepMillis(100);"},
         {"Networker", "try { new java.net.Socket(\"127.0.0.1\", 9).close(); } catch (Exception e) { } sleepMillis(100);"},
         {"Reflector", "try { Class<?> c = Class.forName(\"org.kheperasim.sim.engine.SimRobot\"); } catch (Exception e) { }"},
-        {"Intruder", "org.kheperasim.sim.engine.Khepera.class.getName(); sleepMillis(100);"},
+        {"Intruder", "org.kheperasim.sim.engine.Settings.class.getName(); sleepMillis(100);"},
         {"HandleBot", "try { java.lang.invoke.MethodHandles.lookup().findStatic(System.class, \"exit\","
             + " java.lang.invoke.MethodType.methodType(void.class, int.class)).invoke(0); } catch (Throwable t) { }"},
         {"Waiter", "synchronized (this) { try { wait(100); } catch (InterruptedException e) { } } setSpeeds(1, 1);"},
@@ -159,7 +159,7 @@ class HostileControllerTest {
     void filesNetworkReflectionAndTheSimulatorAreRefusedAtLoadNamingTheLine() throws IOException {
         for (String[] c : new String[][] {{"Writer", "java.nio.file."}, {"Deleter", "java.io.File"},
             {"Networker", "java.net.Socket"}, {"Reflector", "java.lang.Class.forName"},
-            {"Intruder", "org.kheperasim.sim.engine.Khepera"}, {"HandleBot", "java.lang.invoke.MethodHandles.lookup()"}}) {
+            {"Intruder", "org.kheperasim.sim.engine.Settings"}, {"HandleBot", "java.lang.invoke.MethodHandles.lookup()"}}) {
             ControllerException e = assertThrows(ControllerException.class, () -> run(c[0], 1), c[0]);
             assertTrue(e.getMessage().contains(c[1]), c[0] + " names the call: " + e.getMessage());
             assertTrue(e.getMessage().contains(c[0] + ".java:"), c[0] + " names the student's line: " + e.getMessage());

@@ -64,6 +64,27 @@ public record RobotType(String name, String source, Body body, Drive drive, List
         return far + REACH_SLACK_MM;
     }
 
+    /**
+     * The same robot as measured: a calibration's wheels and proximity response in place of the type's.
+     *
+     * @param source what the measurement was (robot, date, file), shown by {@code robots}
+     * @param wheelBaseMm measured wheel base, mm
+     * @param mmPerSecondPerUnit measured speed unit, mm/s
+     * @param mmPerPulse measured encoder resolution, mm
+     * @param response the fitted response
+     * @param offset the fitted reading with nothing in range
+     * @param noiseAbs the fitted per-reading noise, counts
+     * @param noiseRel the fitted relative noise
+     * @return the calibrated type
+     */
+    public RobotType calibrated(String source, double wheelBaseMm, double mmPerSecondPerUnit, double mmPerPulse,
+            Response response, double offset, double noiseAbs, double noiseRel) {
+        Drive d = drive;
+        return new RobotType(name, source, body, new Drive(wheelBaseMm, mmPerSecondPerUnit, d.maxSpeed(), mmPerPulse,
+                d.motorPeriodNanos(), d.noisePeriodNanos(), d.moveSpeed(), d.acceleration()), sensors,
+                new Proximity(response, offset, noiseAbs, noiseRel, proximity.maxReading()), light, turrets, dialect);
+    }
+
     /** @return whether it carries the gripper turret */
     public boolean hasGripper() {
         return turrets.contains(Turret.GRIPPER);

@@ -54,6 +54,26 @@ public final class SampleFit {
     }
 
     /**
+     * @param table sampled readings
+     * @param keep which distance blocks to take
+     * @return every reading of those blocks as a sample (sensor, gap, angle, counts)
+     */
+    public static List<Sample> samples(SampleTable table, java.util.function.IntPredicate keep) {
+        List<Sample> out = new java.util.ArrayList<>();
+        for (int t = 0; t < table.blocks(); t++) {
+            if (!keep.test(t)) {
+                continue;
+            }
+            for (int k = 0; k < table.angles(); k++) {
+                for (int i = 0; i < table.sensors(); i++) {
+                    out.add(new Sample(i, table.gapMm(t), table.objectRightDeg(k), table.counts(t, k, i)));
+                }
+            }
+        }
+        return out;
+    }
+
+    /**
      * @param type the robot the readings come from (body radius, sensor poses)
      * @param samples its readings
      * @return the fitted response
