@@ -52,7 +52,7 @@ public final class RobotEditorDriver {
         MainWindow w = GuiLauncher.lastLaunched().get(20, TimeUnit.SECONDS);
         Robot robot = new Robot();
         robot.setAutoDelay(10);
-        robot.waitForIdle();
+        settle(robot);
         SwingUtilities.invokeAndWait(() -> w.action("editRobot").actionPerformed(null));
         RobotEditor ed = onEdt(() -> w.robotEditing().last());
         if (ed == null || !onEdt(ed::robot).equals(RobotTypes.KHEPERA1)) {
@@ -224,7 +224,7 @@ public final class RobotEditorDriver {
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
         robot.mousePress(InputEvent.BUTTON1_DOWN_MASK);
         robot.mouseRelease(InputEvent.BUTTON1_DOWN_MASK);
-        robot.waitForIdle();
+        settle(robot);
         robot.keyPress(KeyEvent.VK_CONTROL);
         robot.keyPress(KeyEvent.VK_A);
         robot.keyRelease(KeyEvent.VK_A);
@@ -254,10 +254,17 @@ public final class RobotEditorDriver {
         return new Point(o.x + (int) StrictMath.round(onCanvas.getX()), o.y + (int) StrictMath.round(onCanvas.getY()));
     }
 
+    /**
+     * Let the window take what was done: the event queue emptied of what is queued now, a pause for the
+     * X server's events (the robot's gestures) to arrive, and the queue emptied again. Not
+     * {@code Robot.waitForIdle}: while a run paints, the queue is never idle, and it waited for good.
+     */
     private static void settle(Robot robot) throws Exception {
-        robot.waitForIdle();
+        SwingUtilities.invokeAndWait(() -> { });
         Thread.sleep(250);
-        robot.waitForIdle();
+        SwingUtilities.invokeAndWait(() -> { });
+        Thread.sleep(50);
+        SwingUtilities.invokeAndWait(() -> { });
     }
 
     private static void pause(MainWindow w, Robot robot) throws Exception {
@@ -270,10 +277,14 @@ public final class RobotEditorDriver {
     }
 
     private static Snapshot runPast(MainWindow w, double seconds) throws Exception {
+        // x4 while only waiting (20 simulated seconds in 5 s of wall time; the speed never changes what is computed),
+        // back to x1 before the next gesture: at x4 the painting keeps the event queue from ever being idle.
+        SwingUtilities.invokeAndWait(() -> w.chooseSpeed(4));
         long start = System.nanoTime();
         while (System.nanoTime() - start < 90_000_000_000L) {
             Snapshot s = w.runner() == null ? null : w.runner().latest();
             if (s != null && s.timeSeconds() >= seconds) {
+                SwingUtilities.invokeAndWait(() -> w.chooseSpeed(1));
                 return s;
             }
             Thread.sleep(20);
