@@ -65,9 +65,9 @@ final class ServeCommand implements Callable<Integer> {
                     + " as a serial port drives the robot")
     Path pty;
 
-    @Option(names = "--dialect", paramLabel = "NAME", defaultValue = Dialect.DEFAULT,
+    @Option(names = "--dialect", paramLabel = "NAME",
             description = "answer in this robot's protocol: khepera1, khepera2 or epuck (letters, replies, errors;"
-                    + " values are passed through as counts). Default: ${DEFAULT-VALUE}")
+                    + " values are passed through as counts). Default: each robot's own, from its robot file")
     String dialect;
 
     @Option(names = "--idle-timeout", paramLabel = "SECONDS", defaultValue = "60",
@@ -98,7 +98,7 @@ final class ServeCommand implements Callable<Integer> {
             return org.kheperasim.sim.sandbox.Reexec.run("serve", Sandboxed.argsAfter(spec, "serve"), read, List.of(), true,
                     org.kheperasim.sim.sandbox.BoxLimits.forCommand(ArenaFormat.resolve(arena).robots().size()), 10);
         }
-        Dialect served = Dialect.named(dialect);
+        Dialect served = dialect == null ? null : Dialect.named(dialect);
         Settings settings = settingsOptions.settings();
         long runSeed = seed != null ? seed : Simulation.randomSeed();
         Arena a = RobotFiles.arena(arena, robotFile);
@@ -146,9 +146,10 @@ final class ServeCommand implements Callable<Integer> {
         Runtime.getRuntime().addShutdownHook(hook);
         try {
             out.println("seed " + runSeed);
-            if (served != Dialect.named(Dialect.DEFAULT)) {
-                out.println("dialect " + served.name() + ": the robots answer as " + served.robot() + "s do"
-                        + " (connect with khepera-link --dialect " + served.name() + ")");
+            Dialect shown = served != null ? served : Dialect.named(a.robotType(0).dialect());
+            if (shown != Dialect.named(Dialect.DEFAULT)) {
+                out.println("dialect " + shown.name() + ": the robots answer as " + shown.robot() + "s do"
+                        + " (connect with khepera-link --dialect " + shown.name() + ")");
             }
             if (robots.size() == 1) {
                 out.printf(Locale.ROOT, "serving a simulated Khepera in arena %s at %s (%d baud timing, speed x%s)%n",

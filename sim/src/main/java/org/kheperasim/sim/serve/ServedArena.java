@@ -6,7 +6,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
 import org.kheperasim.link.protocol.dialect.Dialect;
-import org.kheperasim.link.protocol.dialect.KheperaDialect;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.engine.Engine;
 import org.kheperasim.sim.engine.Settings;
@@ -38,7 +37,8 @@ public final class ServedArena implements AutoCloseable {
     private volatile long wallStart;
     private volatile long leadNanos;
     private volatile long lastCommandNanos;
-    private volatile Dialect dialect = KheperaDialect.KHEPERA1;
+    /** The dialect {@code serve --dialect} gave for every robot, or null: each robot's own. */
+    private volatile Dialect dialect;
 
     /**
      * @param arena the arena; each of its robot poses is a robot to serve
@@ -70,9 +70,9 @@ public final class ServedArena implements AutoCloseable {
     }
 
     /**
-     * Serve every robot in this dialect ({@code serve --dialect}) instead of the Khepera I's.
+     * Serve every robot in this dialect ({@code serve --dialect}) instead of its own.
      *
-     * @param served the dialect
+     * @param served the dialect, or null for each robot's own (its robot file's {@code dialect})
      * @return this arena
      */
     public ServedArena dialect(Dialect served) {
@@ -81,14 +81,15 @@ public final class ServedArena implements AutoCloseable {
     }
 
     /**
-     * The one place that decides which protocol a served robot answers in. Today {@code serve
-     * --dialect} chooses it for every robot; when each robot has a type, its type's dialect.
+     * The one place that decides which protocol a served robot answers in: its type's dialect (an
+     * e-puck answers as an e-puck), unless {@code serve --dialect} chose one for every robot.
      *
      * @param robot a robot of this arena
      * @return the dialect it answers in
      */
     Dialect dialectFor(SimRobot robot) {
-        return dialect;
+        Dialect chosen = dialect;
+        return chosen != null ? chosen : Dialect.named(robot.type().dialect());
     }
 
     /** @return the robots served, in the arena's order, each to be given to its own protocol server */

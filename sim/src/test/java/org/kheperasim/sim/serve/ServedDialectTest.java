@@ -96,4 +96,23 @@ class ServedDialectTest {
             assertEquals(0, (int) served.robot.<Integer>inspect(r -> r.onBoard().leds()), "S turns the LEDs off");
         }
     }
+
+    @Test
+    void anEpuckInTheArenaAnswersAsAnEpuckWithoutBeingTold() throws IOException {
+        // The robot's type chooses its dialect (its robot file's "dialect: epuck"); the Khepera beside it keeps its own.
+        String arena = "khepera-arena 1\nname t\nsize 1219.2 1219.2\nrobot 300 600 0 epuck\nrobot 900 600 180\n";
+        try (ServedArena world = new ServedArena(ArenaFormat.parse(arena, "t.arena"), Settings.defaults(), 1, 1)) {
+            ProtocolServer epuck = ProtocolServer.start(world.robots().get(0), 0);
+            ProtocolServer khepera = ProtocolServer.start(world.robots().get(1), 0);
+            try (LineClient e = new LineClient(epuck.port()); LineClient k = new LineClient(khepera.port())) {
+                assertTrue(e.ask("V").startsWith("v,Version"), "the e-puck names its SerCom firmware");
+                assertEquals("q,0,0", e.ask("Q"), "the e-puck's step counters");
+                assertEquals("Command not found", k.ask("Q"), "the Khepera has no Q");
+                assertTrue(k.ask("B").startsWith("b,"), "the Khepera's BIOS version");
+            } finally {
+                epuck.close();
+                khepera.close();
+            }
+        }
+    }
 }
