@@ -1,5 +1,7 @@
 package org.kheperasim.sim.gui;
 
+import static org.kheperasim.sim.gui.KeyBindingsDriverSupport.onEdt;
+
 import java.awt.Frame;
 import java.awt.Rectangle;
 import java.awt.Robot;
@@ -90,16 +92,8 @@ public final class WsuCorpusWindowDriver {
         });
     }
 
-    private static <T> T onEdt(java.util.function.Supplier<T> s) throws Exception {
-        Object[] box = new Object[1];
-        SwingUtilities.invokeAndWait(() -> box[0] = s.get());
-        @SuppressWarnings("unchecked")
-        T t = (T) box[0];
-        return t;
-    }
 
     private static void fail(String why) {
-        System.out.println("FAIL: " + why);
-        System.exit(1);
+        KeyBindingsDriverSupport.check(false, why);
     }
 }
