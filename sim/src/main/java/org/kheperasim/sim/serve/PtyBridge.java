@@ -207,6 +207,10 @@ public final class PtyBridge implements AutoCloseable {
                 pty.lockSlave(false);
             }
         }
+        // A reply that came after the client closed may have gone on into the slave's own buffer, where the master's
+        // flush does not reach (CI saw the next client read "d", the reply to the last one's D command). After the
+        // master's flush: what was still on its way in then has arrived by now, or was thrown away by it.
+        pty.discardUnreadReplies();
         drop();
         if (had) {
             log.accept("the program on " + link + " closed it; the pty is ready for the next");

@@ -50,6 +50,8 @@ final class PtyDevice implements AutoCloseable {
     private static final int TCSANOW = 0;
     /** On the master, only both queues at once also reach the bytes waiting for the slave to read. */
     private static final int TCIOFLUSH = 2;
+    private static final int TCIFLUSH = 0;
+    private static final int O_NONBLOCK = 04000;
     static final int POLLIN = 0x1;
     static final int POLLHUP = 0x10;
     /** ioctl TIOCSPTLCK (_IOW('T', 0x31, int)) where the ioctl numbers are the generic ones; 0 elsewhere (no lock). */
@@ -142,6 +144,20 @@ final class PtyDevice implements AutoCloseable {
     /** Throw away what waits in either direction: what a client that left wrote, and replies it never read. */
     void discardPending() {
         libc.tcflush(master, TCIOFLUSH);
+    }
+
+    /**
+     * Throw away the replies that wait on the slave's side, unread: flushing from the master empties only the
+     * bytes not yet taken in by the slave's line discipline, and a reply written just after its client closed is
+     * taken in there at once (Linux), to be read by the next program that opens the pty. Opened and closed here,
+     * unlocked: a program that opens it meanwhile has had no reply yet, so nothing of its own is thrown away.
+     */
+    void discardUnreadReplies() {
+        int s = libc.open(slave, O_RDWR | O_NOCTTY | O_NONBLOCK);
+        if (s >= 0) {
+            libc.tcflush(s, TCIFLUSH);
+            libc.close(s);
+        }
     }
 
     /**

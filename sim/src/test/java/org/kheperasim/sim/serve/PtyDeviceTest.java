@@ -31,4 +31,34 @@ class PtyDeviceTest {
             }
         }
     }
+
+    /**
+     * A reply written after its client closed waits in the slave's own buffer, where the master's flush does not
+     * reach: the next program to open the pty would read it as the reply to its first command (CI saw "d").
+     */
+    @Test
+    void aReplyLeftForAClientThatHasGoneIsThrownAwayBeforeTheNextOpens() throws Exception {
+        assumeTrue(System.getProperty("os.name", "").toLowerCase(java.util.Locale.ROOT).contains("linux"), "Linux only");
+        for (boolean discard : new boolean[] {false, true}) {
+            try (PtyDevice pty = PtyDevice.open()) {
+                new RandomAccessFile(pty.slavePath(), "rw").close(); // a client came and went
+                pty.write("d\r\n".getBytes(java.nio.charset.StandardCharsets.US_ASCII), 3);
+                Thread.sleep(100); // the line discipline takes it in
+                pty.discardPending();
+                if (discard) {
+                    pty.discardUnreadReplies();
+                }
+                pty.makeRaw();
+                try (java.io.FileInputStream next = new java.io.FileInputStream(pty.slavePath())) {
+                    Thread.sleep(100);
+                    int waiting = next.available();
+                    if (discard) {
+                        assertEquals(0, waiting, "nothing of the last client's reaches the next");
+                    } else {
+                        System.out.println("without the slave's flush, the next client finds " + waiting + " byte(s)");
+                    }
+                }
+            }
+        }
+    }
 }
