@@ -90,7 +90,7 @@ final class ContactFinder {
             double gap = StrictMath.hypot(s.x[k] - cap.x(), s.y[k] - cap.y()) - a.caps().get(c).radius() - radius(a, robot);
             if (cap.heldBy() != robot && gap <= TOUCH_MM) {
                 double rel = StrictMath.atan2(cap.y() - s.y[k], cap.x() - s.x[k]) - StrictMath.toRadians(s.heading[k]);
-                return org.kheperasim.sim.engine.Contact.ofAngle(rel).name();
+                return org.kheperasim.sim.engine.view.Contact.ofAngle(rel).name();
             }
         }
         return null;

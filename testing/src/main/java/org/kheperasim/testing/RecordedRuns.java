@@ -13,7 +13,7 @@ import org.kheperasim.sim.arena.ArenaFiles;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Region;
 import org.kheperasim.sim.arena.Task;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.files.TextFiles;
 import org.kheperasim.sim.replay.ReplayFiles;
 import org.kheperasim.sim.run.EditLog;

@@ -12,7 +12,7 @@ import java.util.Set;
 import java.util.TreeMap;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.run.SettingsFile;
 
 /**

@@ -4,9 +4,9 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Optional;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
-import org.kheperasim.sim.engine.SnapshotListener;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
+import org.kheperasim.sim.engine.view.SnapshotListener;
 import org.kheperasim.sim.host.ConsoleLine;
 import org.kheperasim.sim.host.ConsoleSink;
 

@@ -8,7 +8,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.SortedMap;
 import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.run.EditLog;
 import org.kheperasim.sim.run.Simulation;

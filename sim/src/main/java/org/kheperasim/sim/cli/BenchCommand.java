@@ -74,7 +74,7 @@ final class BenchCommand implements Callable<Integer> {
     private org.kheperasim.sim.host.HostOptions hostOptions;
 
     private Arena scenario;
-    private org.kheperasim.sim.engine.Settings settings;
+    private org.kheperasim.sim.engine.model.Settings settings;
     /** Where the first run's controllers ran ({@code RunSession.modeLine}), printed with the figures. */
     private volatile String modeLine;
 

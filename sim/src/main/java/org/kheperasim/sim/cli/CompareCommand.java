@@ -11,7 +11,7 @@ import org.kheperasim.sim.compare.Divergence;
 import org.kheperasim.sim.compare.PathPlot;
 import org.kheperasim.sim.compare.SimulatedRun;
 import org.kheperasim.sim.compare.Track;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.engine.robot.RobotType;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;

@@ -13,13 +13,12 @@ import org.kheperasim.link.tool.ControllerOptions;
 import org.kheperasim.link.tool.ExitCodes;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.grade.FailureLines;
 import org.kheperasim.sim.grade.FailureText;
 import org.kheperasim.sim.host.ConsoleLine;
-
-import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.host.ControllerStatus;
+import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.run.BoundedConsole;
 import org.kheperasim.sim.run.EditLog;
 import org.kheperasim.sim.run.RunResult;

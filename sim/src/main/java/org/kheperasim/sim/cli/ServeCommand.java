@@ -13,7 +13,7 @@ import org.kheperasim.link.protocol.dialect.Dialect;
 import org.kheperasim.link.tool.CliNumbers;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.run.Simulation;
 import org.kheperasim.sim.serve.ProtocolServer;
 import org.kheperasim.sim.serve.PtyBridge;

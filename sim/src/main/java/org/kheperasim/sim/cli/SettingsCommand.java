@@ -1,7 +1,7 @@
 package org.kheperasim.sim.cli;
 
 import java.util.Map;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import picocli.CommandLine.Command;
 
 /** {@code settings}: every setting with its default and meaning. */

@@ -3,7 +3,7 @@ package org.kheperasim.sim.cli;
 import java.util.ArrayList;
 import java.util.List;
 import org.kheperasim.link.tool.CliNumbers;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import picocli.CommandLine.Option;
 
 /** The options that change a robot's settings, shared by the commands that build one ({@code run}, {@code serve}). */

@@ -11,7 +11,7 @@ import org.kheperasim.link.tool.ExitCodes;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFiles;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.files.TextFiles;
 import org.kheperasim.sim.replay.ReplayFiles;
 import org.kheperasim.sim.run.EditLog;

@@ -2,8 +2,8 @@ package org.kheperasim.sim.commandlog;
 
 import java.io.IOException;
 import java.io.Writer;
-import org.kheperasim.sim.engine.DriverRecorder;
 import org.kheperasim.sim.engine.Engine;
+import org.kheperasim.sim.engine.view.DriverRecorder;
 
 /**
  * Writes a run's command log as it goes: the header, then one line per thing the controllers did to

@@ -11,10 +11,10 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Engine;
 import org.kheperasim.sim.engine.RobotDriver;
-import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
-import org.kheperasim.sim.engine.SnapshotListener;
-import org.kheperasim.sim.engine.World;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.space.World;
+import org.kheperasim.sim.engine.view.SnapshotListener;
 import org.kheperasim.sim.host.ControllerStatus;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.trace.TraceWriter;
@@ -80,7 +80,7 @@ public final class OpenLoopReplay {
      * As {@link #replay(Run, CommandLogReader, Writer)}, telling a recorder what the replay's drivers do
      * (a test's check that the replay does what the log says, in the same order).
      */
-    static Outcome replay(Run run, CommandLogReader log, Writer trace, org.kheperasim.sim.engine.DriverRecorder recorder) {
+    static Outcome replay(Run run, CommandLogReader log, Writer trace, org.kheperasim.sim.engine.view.DriverRecorder recorder) {
         return replay(run, log, trace, recorder, null, 0);
     }
 
@@ -96,7 +96,7 @@ public final class OpenLoopReplay {
         return replay(run, log, trace, null, listener, periodMillis);
     }
 
-    private static Outcome replay(Run run, CommandLogReader log, Writer trace, org.kheperasim.sim.engine.DriverRecorder recorder,
+    private static Outcome replay(Run run, CommandLogReader log, Writer trace, org.kheperasim.sim.engine.view.DriverRecorder recorder,
             SnapshotListener listener, long periodMillis) {
         LogHeader h = log.header();
         check(run, h);

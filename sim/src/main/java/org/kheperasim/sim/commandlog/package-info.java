@@ -1,6 +1,6 @@
 /**
  * A run's command log and its open-loop replay. While a run goes, the engine tells a
- * {@link org.kheperasim.sim.engine.DriverRecorder} everything its controllers do to the world (the
+ * {@link org.kheperasim.sim.engine.view.DriverRecorder} everything its controllers do to the world (the
  * commands that reach each robot's link, emergency stops, when each controller wakes, the reads that
  * bring a reply in early, each image the vision turret takes, where a run stopped early ends);
  * {@link org.kheperasim.sim.commandlog.CommandLogWriter} writes it as text,

@@ -5,9 +5,9 @@ import java.util.List;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.arena.RobotKind;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.engine.robot.RobotType;
+import org.kheperasim.sim.engine.view.RobotView;
 import org.kheperasim.sim.run.Simulation;
 
 /** Runs a controller in the simulator from a start pose and keeps robot 0's samples as a {@link Track}. */

@@ -5,7 +5,7 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Light;
 import org.kheperasim.sim.arena.Wall;
-import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.engine.view.RobotView;
 
 /**
  * Whether an edited arena is possible. The arena file's own checks decide (a robot start inside a

@@ -11,7 +11,7 @@ import java.util.Set;
 import java.util.function.Consumer;
 import java.util.function.Supplier;
 import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.engine.view.RobotView;
 
 /**
  * The arena being edited, with its selection and an undo/redo stack. Every change goes through

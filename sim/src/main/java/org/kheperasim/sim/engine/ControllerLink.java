@@ -3,6 +3,9 @@ package org.kheperasim.sim.engine;
 import org.kheperasim.api.ArmPosition;
 import org.kheperasim.api.GripperState;
 import org.kheperasim.link.timing.PollStep;
+import org.kheperasim.sim.engine.link.RobotLink;
+import org.kheperasim.sim.engine.robot.GripperTurret;
+import org.kheperasim.sim.engine.view.DriverRecorder;
 
 /**
  * What a controller does to its simulated robot and reads from it. Tethered (the default for a

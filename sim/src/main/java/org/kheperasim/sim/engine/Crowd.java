@@ -2,6 +2,9 @@ package org.kheperasim.sim.engine;
 
 import java.util.Arrays;
 import java.util.List;
+import org.kheperasim.sim.engine.body.DriveBody;
+import org.kheperasim.sim.engine.model.Ticks;
+import org.kheperasim.sim.engine.space.Bodies;
 
 /**
  * Moves the robots that may see each other during a stretch, without stepping them all tick by
@@ -73,7 +76,7 @@ final class Crowd implements Bodies.Visitor {
                 advance(find(sight[k]), tick);
             }
             r.sightScope(sight, first[r.id()], first[r.id() + 1]);
-            r.scanAt(tick * Engine.TICK_NANOS);
+            r.scanAt(tick * Ticks.NANOS);
             r.sightScope(null, 0, 0);
             schedule(r, end);
         }
@@ -188,7 +191,7 @@ final class Crowd implements Bodies.Visitor {
             SimRobot r = robots.get(root);
             while (t < tick) {
                 long k = StrictMath.max(1, StrictMath.min(tick - t, r.glideTicks(tick - t)));
-                r.move(k, (t + k) * Engine.TICK_NANOS, k > 1, Motion.NO_ONE, 0);
+                r.move(k, (t + k) * Ticks.NANOS, k > 1, Motion.NO_ONE, 0);
                 t += k;
             }
             return;
@@ -207,12 +210,12 @@ final class Crowd implements Bodies.Visitor {
             if (k > 1) {
                 // Too far apart to touch for k ticks: each glides along its arc as it would on its own.
                 for (int id = root; id >= 0; id = nextMember[id]) {
-                    robots.get(id).move(k, (t + k) * Engine.TICK_NANOS, true, unit, members);
+                    robots.get(id).move(k, (t + k) * Ticks.NANOS, true, unit, members);
                 }
                 t += k;
             } else {
                 for (int id = root; id >= 0; id = nextMember[id]) {
-                    robots.get(id).move(1, (t + 1) * Engine.TICK_NANOS, false, unit, members);
+                    robots.get(id).move(1, (t + 1) * Ticks.NANOS, false, unit, members);
                 }
                 t++;
             }

@@ -1,12 +1,21 @@
 package org.kheperasim.sim.engine;
 
-import org.kheperasim.sim.engine.robot.RobotType;
-import org.kheperasim.sim.engine.robot.RobotTypes;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
 import java.util.function.Function;
 import org.kheperasim.sim.arena.Pose;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.model.Ticks;
+import org.kheperasim.sim.engine.model.WsuProfile;
+import org.kheperasim.sim.engine.robot.RobotType;
+import org.kheperasim.sim.engine.robot.RobotTypes;
+import org.kheperasim.sim.engine.space.World;
+import org.kheperasim.sim.engine.view.DriverRecorder;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
+import org.kheperasim.sim.engine.view.SnapshotListener;
+import org.kheperasim.sim.engine.view.VisionView;
 
 /**
  * The simulation engine: advances the world in fixed ticks of simulated time, runs each robot's
@@ -20,7 +29,7 @@ import org.kheperasim.sim.arena.Pose;
  */
 public final class Engine {
     /** The tick: 1 ms of simulated time. */
-    public static final long TICK_NANOS = 1_000_000L;
+    public static final long TICK_NANOS = Ticks.NANOS;
 
 
     private final World world;
@@ -312,7 +321,7 @@ public final class Engine {
             // The reference stepping stops at every tick; a run whose controllers have all ended ends with this tick.
             return 1;
         }
-        long limit = ceilTicks(endNanos) - tick;
+        long limit = Ticks.ceil(endNanos) - tick;
         for (int i = 0; i < drivers.size(); i++) {
             RobotDriver d = drivers.get(i);
             if (d != null) {
@@ -331,15 +340,10 @@ public final class Engine {
         for (int i = 0; i < robots.size() && limit > 1 && robots.size() > 1; i++) {
             long due = robots.get(i).nextDueNanos();
             if (due != Long.MAX_VALUE) {
-                limit = StrictMath.min(limit, ceilTicks(due) - tick);
+                limit = StrictMath.min(limit, Ticks.ceil(due) - tick);
             }
         }
         return StrictMath.max(1, limit);
-    }
-
-    /** @return the first tick starting at or after {@code nanos} (far in the future for {@link Long#MAX_VALUE}: never) */
-    static long ceilTicks(long nanos) {
-        return nanos == Long.MAX_VALUE ? Long.MAX_VALUE / 2 : -Math.floorDiv(-nanos, TICK_NANOS);
     }
 
     /**

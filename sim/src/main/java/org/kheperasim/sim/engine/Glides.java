@@ -1,5 +1,11 @@
 package org.kheperasim.sim.engine;
 
+import org.kheperasim.sim.engine.body.CapContacts;
+import org.kheperasim.sim.engine.body.DriveBody;
+import org.kheperasim.sim.engine.body.GripperModel;
+import org.kheperasim.sim.engine.model.RobotModel;
+import org.kheperasim.sim.engine.sensing.Coverage;
+
 /**
  * How far a robot may glide along its arc before anything could happen that needs a tick-by-tick
  * step: a contact with a wall, a lamp or a cap, a region entered, the gripper moving. Cheap bounds

@@ -2,6 +2,8 @@ package org.kheperasim.sim.engine;
 
 import java.util.ArrayList;
 import java.util.List;
+import org.kheperasim.sim.engine.model.Ticks;
+import org.kheperasim.sim.engine.space.Bodies;
 
 /**
  * Moves every robot through a stretch of ticks with nothing due (no command, controller, noise
@@ -101,12 +103,12 @@ final class Motion {
             long t = start + k;
             if (k > 0) {
                 for (int i = 0; i < together.size(); i++) {
-                    together.get(i).beginTick(t * Engine.TICK_NANOS);
+                    together.get(i).beginTick(t * Ticks.NANOS);
                 }
             }
             for (int i = 0; i < together.size(); i++) {
                 SimRobot r = together.get(i);
-                r.move(1, (t + 1) * Engine.TICK_NANOS, false, null, 0);
+                r.move(1, (t + 1) * Ticks.NANOS, false, null, 0);
             }
         }
     }
@@ -136,16 +138,16 @@ final class Motion {
         long end = start + n;
         while (t < end) {
             if (t > start) {
-                r.beginTick(t * Engine.TICK_NANOS);
+                r.beginTick(t * Ticks.NANOS);
             }
             long k = end - t;
             long due = r.nextDueNanos();
             if (due != Long.MAX_VALUE) {
                 // Something of its own falls due on the way (its tick begins there).
-                k = StrictMath.min(k, -Math.floorDiv(-due, Engine.TICK_NANOS) - t);
+                k = StrictMath.min(k, -Math.floorDiv(-due, Ticks.NANOS) - t);
             }
             k = StrictMath.max(1, StrictMath.min(k, r.glideTicks(k)));
-            r.move(k, (t + k) * Engine.TICK_NANOS, k > 1, NO_ONE, 0);
+            r.move(k, (t + k) * Ticks.NANOS, k > 1, NO_ONE, 0);
             t += k;
         }
     }

@@ -1,5 +1,8 @@
 package org.kheperasim.sim.engine;
 
+import org.kheperasim.sim.engine.body.DriveBody;
+import org.kheperasim.sim.engine.body.GripperModel;
+import org.kheperasim.sim.engine.body.PositionControl;
 import org.kheperasim.sim.engine.robot.RobotType;
 
 /**

@@ -1,6 +1,9 @@
 package org.kheperasim.sim.engine;
 
 import org.kheperasim.api.GripperState;
+import org.kheperasim.sim.engine.body.DriveBody;
+import org.kheperasim.sim.engine.body.GripperModel;
+import org.kheperasim.sim.engine.sensing.Scans;
 
 /**
  * A controller running on the robot's own processor (on-board): no serial link between it and the

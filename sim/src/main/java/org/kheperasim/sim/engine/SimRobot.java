@@ -4,8 +4,29 @@ import java.util.Map;
 import java.util.SplittableRandom;
 import org.kheperasim.link.timing.LinkTiming;
 import org.kheperasim.sim.arena.Pose;
+import org.kheperasim.sim.engine.body.CapContacts;
+import org.kheperasim.sim.engine.body.DriveBody;
+import org.kheperasim.sim.engine.body.GripperModel;
+import org.kheperasim.sim.engine.body.GripperPort;
+import org.kheperasim.sim.engine.link.LinkEnd;
+import org.kheperasim.sim.engine.link.RobotLink;
+import org.kheperasim.sim.engine.model.Miscalibration;
+import org.kheperasim.sim.engine.model.RobotModel;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.model.Ticks;
+import org.kheperasim.sim.engine.model.VisionModel;
 import org.kheperasim.sim.engine.noise.CounterNoise;
 import org.kheperasim.sim.engine.robot.RobotType;
+import org.kheperasim.sim.engine.sensing.Coverage;
+import org.kheperasim.sim.engine.sensing.LightSensing;
+import org.kheperasim.sim.engine.sensing.LinearCamera;
+import org.kheperasim.sim.engine.sensing.ProximitySensing;
+import org.kheperasim.sim.engine.sensing.SamplePose;
+import org.kheperasim.sim.engine.sensing.Scans;
+import org.kheperasim.sim.engine.sensing.SensorPlacement;
+import org.kheperasim.sim.engine.space.World;
+import org.kheperasim.sim.engine.view.Contact;
+import org.kheperasim.sim.engine.view.DriverRecorder;
 
 /**
  * One simulated robot of a {@link RobotType}, assembled from the parts it models: the {@link DriveBody} on its wheels,
@@ -131,7 +152,7 @@ public final class SimRobot {
 
     /** Take the scan of the tick at {@code now} if it is wanted; the sample pose is at that tick. */
     private void captureDue(long now, boolean computeNow) {
-        long tick = now / Engine.TICK_NANOS;
+        long tick = now / Ticks.NANOS;
         if (scans.nextTick() == tick) {
             scans.capture(tick, computeNow);
         }
@@ -140,7 +161,7 @@ public final class SimRobot {
     /** @return when the robot next takes a scan or a poll sample, ns ({@link Long#MAX_VALUE}: neither) */
     private long nextSenseDue() {
         long t = scans.nextTick();
-        return StrictMath.min(link.nextPollDue(), t == Long.MAX_VALUE ? Long.MAX_VALUE : t * Engine.TICK_NANOS);
+        return StrictMath.min(link.nextPollDue(), t == Long.MAX_VALUE ? Long.MAX_VALUE : t * Ticks.NANOS);
     }
 
     /** @return the tick of the robot's next scan (far in the future: none wanted) */
@@ -270,7 +291,7 @@ public final class SimRobot {
      */
     void move(long ticks, long endNanos, boolean glide, int[] mates, int mateCount) {
         if (glide) {
-            long start = endNanos - ticks * Engine.TICK_NANOS;
+            long start = endNanos - ticks * Ticks.NANOS;
             // Scans and poll samples that fall inside the glide are taken where the robot is at their
             // tick. Gliding, it is alone (no other robot can come within its sensors' reach): a scan's
             // proximity values can wait for their first read, unless a cap or the gripper may move meanwhile.
@@ -281,7 +302,7 @@ public final class SimRobot {
                 if (at >= endNanos) {
                     break;
                 }
-                sense.at((at - start) / Engine.TICK_NANOS);
+                sense.at((at - start) / Ticks.NANOS);
                 captureDue(at, computeNow);
                 link.pollDue(at);
                 due = nextSenseDue();
@@ -291,7 +312,7 @@ public final class SimRobot {
         } else {
             // A step among others that may touch it: its own poll samples of this tick first (they read
             // only its own scan and counters), then the step.
-            long start = endNanos - Engine.TICK_NANOS;
+            long start = endNanos - Ticks.NANOS;
             if (link.nextPollDue() <= start) {
                 sense.at(0);
                 link.pollDue(start);
@@ -305,7 +326,7 @@ public final class SimRobot {
     }
 
     private static long ceilTick(long nanos) {
-        return -Math.floorDiv(-nanos, Engine.TICK_NANOS) * Engine.TICK_NANOS;
+        return -Math.floorDiv(-nanos, Ticks.NANOS) * Ticks.NANOS;
     }
 
     // ------------------------------------------------------------------ moving among others (Crowd)
@@ -366,7 +387,7 @@ public final class SimRobot {
      * taken first (the world is there, as at the start of the tick).
      */
     private void scanReady() {
-        long tick = movedTo / Engine.TICK_NANOS;
+        long tick = movedTo / Ticks.NANOS;
         if (scans.nextTick() <= tick) {
             sense.at(0);
             scans.capture(tick - Math.floorMod(tick, Scans.PERIOD_TICKS), true);

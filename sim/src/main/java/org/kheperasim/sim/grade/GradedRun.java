@@ -12,7 +12,7 @@ import org.kheperasim.link.tool.ToolErrors;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.commandlog.CommandLogWriter;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.host.ConsoleLine;
 import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.run.RunResult;

@@ -15,7 +15,7 @@ import org.kheperasim.sim.commandlog.LogFormatException;
 import org.kheperasim.sim.commandlog.OpenLoopReplay;
 import org.kheperasim.sim.commandlog.ReplayMismatchException;
 import org.kheperasim.sim.commandlog.TornLogException;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.task.RunFacts;
 import org.kheperasim.sim.task.Score;
 import org.kheperasim.sim.web.RunOutcome;

@@ -1,9 +1,5 @@
 package org.kheperasim.sim.gui;
 
-import org.kheperasim.sim.engine.robot.RobotType;
-import org.kheperasim.sim.edit.EditorModel;
-import org.kheperasim.sim.edit.Item;
-import org.kheperasim.sim.edit.ItemHits;
 import java.awt.AlphaComposite;
 import java.awt.BasicStroke;
 import java.awt.Color;
@@ -27,11 +23,15 @@ import org.kheperasim.sim.arena.Light;
 import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.arena.Region;
 import org.kheperasim.sim.arena.Wall;
-import org.kheperasim.sim.engine.CapView;
-import org.kheperasim.sim.engine.GripperTurret;
-import org.kheperasim.sim.engine.GripperView;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.edit.EditorModel;
+import org.kheperasim.sim.edit.Item;
+import org.kheperasim.sim.edit.ItemHits;
+import org.kheperasim.sim.engine.robot.GripperTurret;
+import org.kheperasim.sim.engine.robot.RobotType;
+import org.kheperasim.sim.engine.view.CapView;
+import org.kheperasim.sim.engine.view.GripperView;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
 
 /**
  * Draws an arena and a snapshot of a run into a {@link Graphics2D}: floor, regions, lamps, walls,

@@ -1,21 +1,21 @@
 package org.kheperasim.sim.gui;
 
-import org.kheperasim.sim.edit.EditorModel;
 import java.awt.Cursor;
 import java.awt.Dimension;
-import java.awt.Graphics;
 import java.awt.Graphics2D;
+import java.awt.Graphics;
 import java.awt.event.MouseAdapter;
-import java.awt.image.BufferedImage;
-import org.kheperasim.sim.arena.Arena;
 import java.awt.event.MouseEvent;
 import java.awt.event.MouseWheelEvent;
+import java.awt.image.BufferedImage;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.Supplier;
 import javax.swing.JComponent;
 import javax.swing.SwingUtilities;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.arena.Arena;
+import org.kheperasim.sim.edit.EditorModel;
+import org.kheperasim.sim.engine.view.Snapshot;
 
 /**
  * The arena view: hosts {@link ArenaRenderer#draw}, turns mouse events into {@link EditGestures}

@@ -2,7 +2,7 @@ package org.kheperasim.sim.gui;
 
 import java.util.Locale;
 import javax.swing.Timer;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.Snapshot;
 import org.kheperasim.sim.run.PacedRunner;
 
 /**

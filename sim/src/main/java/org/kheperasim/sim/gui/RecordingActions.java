@@ -11,7 +11,7 @@ import javax.swing.JFileChooser;
 import javax.swing.JFrame;
 import javax.swing.JOptionPane;
 import org.kheperasim.sim.edit.EditorModel;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.files.AtomicFiles;
 import org.kheperasim.sim.host.HostedController;
 import org.kheperasim.sim.replay.Replay;

@@ -2,7 +2,7 @@ package org.kheperasim.sim.gui;
 
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.edit.EditorModel;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.Snapshot;
 import org.kheperasim.sim.replay.Replay;
 import org.kheperasim.sim.replay.RobotSeries;
 

@@ -2,8 +2,8 @@ package org.kheperasim.sim.gui;
 
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
 
 /**
  * Which robot the sensor panel and the plot show: the first until the user clicks another robot

@@ -3,7 +3,7 @@ package org.kheperasim.sim.gui;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 
 /**
  * What the next run uses, as the window's menus set it: the arena's file, settings, seed,

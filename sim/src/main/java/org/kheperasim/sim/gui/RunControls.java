@@ -9,9 +9,8 @@ import javax.swing.SwingUtilities;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.edit.EditorModel;
 import org.kheperasim.sim.engine.Engine;
-import org.kheperasim.sim.engine.Settings;
-import org.kheperasim.sim.engine.Snapshot;
-
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.view.Snapshot;
 import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.replay.RobotSeries;
 import org.kheperasim.sim.replay.SeriesRecorder;
@@ -370,7 +369,7 @@ final class RunControls implements SnapshotSource {
     }
 
     /** @return the robots of the live run (for the editor's checks), or none */
-    List<org.kheperasim.sim.engine.RobotView> liveRobots() {
+    List<org.kheperasim.sim.engine.view.RobotView> liveRobots() {
         PacedRunner r = runner;
         return r == null ? List.of() : r.latest().robots();
     }

@@ -4,7 +4,7 @@ import java.awt.BorderLayout;
 import java.awt.Graphics;
 import java.util.function.Supplier;
 import javax.swing.JPanel;
-import org.kheperasim.sim.engine.VisionView;
+import org.kheperasim.sim.engine.view.VisionView;
 
 /**
  * The selected robot's sensors: the {@link SensorPanel}, and under it the image its K213 vision

@@ -1,11 +1,11 @@
 package org.kheperasim.sim.gui;
 
 import java.awt.Dimension;
-import java.awt.Graphics;
 import java.awt.Graphics2D;
+import java.awt.Graphics;
 import java.util.function.Supplier;
 import javax.swing.JComponent;
-import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.engine.view.RobotView;
 
 /** Hosts {@link SensorRenderer#draw} for the selected robot of the latest snapshot. */
 final class SensorPanel extends JComponent {

@@ -12,11 +12,11 @@ import java.awt.geom.Rectangle2D;
 import java.awt.geom.RoundRectangle2D;
 import java.util.Locale;
 import org.kheperasim.api.GripperState;
+import org.kheperasim.sim.engine.robot.GripperTurret;
 import org.kheperasim.sim.engine.robot.RobotType;
 import org.kheperasim.sim.engine.robot.RobotTypes;
-import org.kheperasim.sim.engine.GripperTurret;
-import org.kheperasim.sim.engine.GripperView;
-import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.engine.view.GripperView;
+import org.kheperasim.sim.engine.view.RobotView;
 
 /**
  * Draws the sensor panel of the paper's Figure 2 into a {@link Graphics2D}: a top view of the

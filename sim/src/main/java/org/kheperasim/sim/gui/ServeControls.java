@@ -6,7 +6,7 @@ import java.util.List;
 import java.util.concurrent.atomic.AtomicReference;
 import org.kheperasim.sim.edit.EditorModel;
 import org.kheperasim.sim.engine.Engine;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.Snapshot;
 import org.kheperasim.sim.replay.RobotSeries;
 import org.kheperasim.sim.replay.SeriesRecorder;
 import org.kheperasim.sim.run.Simulation;

@@ -23,7 +23,7 @@ import javax.swing.event.DocumentListener;
 import javax.swing.filechooser.FileNameExtensionFilter;
 import javax.swing.table.AbstractTableModel;
 import javax.swing.table.TableRowSorter;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.run.SettingsFile;
 
 /**

@@ -1,6 +1,6 @@
 package org.kheperasim.sim.gui;
 
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.Snapshot;
 import org.kheperasim.sim.replay.RobotSeries;
 
 /**

@@ -1,9 +1,9 @@
 package org.kheperasim.sim.gui;
 
 import java.util.Arrays;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
-import org.kheperasim.sim.engine.SnapshotListener;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
+import org.kheperasim.sim.engine.view.SnapshotListener;
 
 /**
  * Keeps the path each robot took, for the trail in the arena view. Called on the engine's thread

@@ -2,8 +2,8 @@ package org.kheperasim.sim.gui;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
 import org.kheperasim.sim.replay.RobotSeries;
 
 /**
@@ -53,7 +53,7 @@ final class ViewFeed {
     }
 
     /** @return the image the selected robot's vision turret last gave its controller, or null */
-    org.kheperasim.sim.engine.VisionView selectedVision() {
+    org.kheperasim.sim.engine.view.VisionView selectedVision() {
         Snapshot s = shown.snapshot();
         return s == null ? null : s.vision(selection.index()).orElse(null);
     }

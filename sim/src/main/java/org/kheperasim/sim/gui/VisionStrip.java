@@ -3,14 +3,14 @@ package org.kheperasim.sim.gui;
 import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.FontMetrics;
-import java.awt.Graphics;
 import java.awt.Graphics2D;
+import java.awt.Graphics;
 import java.awt.RenderingHints;
 import java.awt.geom.Rectangle2D;
 import java.util.Locale;
 import java.util.function.Supplier;
 import javax.swing.JComponent;
-import org.kheperasim.sim.engine.VisionView;
+import org.kheperasim.sim.engine.view.VisionView;
 
 /**
  * The image of the selected robot's K213 vision turret, as a strip of 64 grey cells, pixel 0 (the

@@ -7,8 +7,8 @@ import org.kheperasim.api.GripperState;
 import org.kheperasim.api.spi.RobotPort;
 import org.kheperasim.api.spi.TruePose;
 import org.kheperasim.link.timing.LinkTiming;
-import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
+import org.kheperasim.sim.engine.model.Settings;
 
 /**
  * The simulated robot behind a controller's API: every call goes through the controller's clock

@@ -3,7 +3,7 @@ package org.kheperasim.sim.replay;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import org.kheperasim.sim.engine.CapView;
+import org.kheperasim.sim.engine.view.CapView;
 
 /** Where each cap was over a run: its moves, as a trace's cap lines give them, and the cap at any time. */
 final class CapTrack {

@@ -2,9 +2,9 @@ package org.kheperasim.sim.replay;
 
 import java.util.List;
 import org.kheperasim.api.GripperState;
-import org.kheperasim.sim.engine.Contact;
-import org.kheperasim.sim.engine.GripperTurret;
+import org.kheperasim.sim.engine.robot.GripperTurret;
 import org.kheperasim.sim.engine.robot.RobotTypes;
+import org.kheperasim.sim.engine.view.Contact;
 import org.kheperasim.sim.trace.TraceFormatException;
 
 /**

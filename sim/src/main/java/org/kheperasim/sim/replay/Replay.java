@@ -3,8 +3,8 @@ package org.kheperasim.sim.replay;
 import java.util.ArrayList;
 import java.util.List;
 import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
 import org.kheperasim.sim.run.EditLog;
 
 /**

@@ -2,9 +2,9 @@ package org.kheperasim.sim.replay;
 
 import java.util.Arrays;
 import org.kheperasim.api.GripperState;
-import org.kheperasim.sim.engine.Contact;
-import org.kheperasim.sim.engine.GripperView;
-import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.engine.view.Contact;
+import org.kheperasim.sim.engine.view.GripperView;
+import org.kheperasim.sim.engine.view.RobotView;
 
 /**
  * One robot's samples over a run, oldest first, growing as samples are added: the time, the pose,

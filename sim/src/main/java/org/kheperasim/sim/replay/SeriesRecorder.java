@@ -2,9 +2,9 @@ package org.kheperasim.sim.replay;
 
 import java.util.ArrayList;
 import java.util.List;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
-import org.kheperasim.sim.engine.SnapshotListener;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
+import org.kheperasim.sim.engine.view.SnapshotListener;
 
 /**
  * Keeps every sample of a live run for the plots, one {@link RobotSeries} per robot, called on the

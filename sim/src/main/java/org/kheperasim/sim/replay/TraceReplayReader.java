@@ -6,7 +6,7 @@ import java.util.Locale;
 import org.kheperasim.api.GripperState;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.Cap;
-import org.kheperasim.sim.engine.Contact;
+import org.kheperasim.sim.engine.view.Contact;
 import org.kheperasim.sim.trace.TraceFormatException;
 import org.kheperasim.sim.trace.TraceWriter;
 

@@ -10,7 +10,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Consumer;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.engine.Engine;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.Snapshot;
 
 /**
  * Runs a {@link RunSession} on its own thread (the engine's thread), in chunks of simulated time,

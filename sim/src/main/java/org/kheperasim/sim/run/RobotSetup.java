@@ -2,7 +2,7 @@ package org.kheperasim.sim.run;
 
 import java.util.Objects;
 import org.kheperasim.api.Parameters;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 
 /**
  * What one robot of a run is given: its controller, its settings (one robot with a worn motor,

@@ -10,7 +10,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.stream.Stream;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.files.AtomicFiles;
 import org.kheperasim.sim.files.InputFileException;
 import org.kheperasim.sim.files.TextFiles;

@@ -7,24 +7,24 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
+import org.kheperasim.api.spi.Controllers;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.engine.Engine;
-import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
-import org.kheperasim.sim.engine.Snapshot;
-import org.kheperasim.sim.engine.SnapshotListener;
-import org.kheperasim.sim.engine.World;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.space.World;
+import org.kheperasim.sim.engine.view.Snapshot;
+import org.kheperasim.sim.engine.view.SnapshotListener;
 import org.kheperasim.sim.host.ConsoleSink;
-import org.kheperasim.api.spi.Controllers;
 import org.kheperasim.sim.host.ControllerHost;
+import org.kheperasim.sim.host.ControllerStatus;
+import org.kheperasim.sim.host.ControllerWindows;
 import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.host.HostedController;
-import org.kheperasim.sim.host.StepHost;
-import org.kheperasim.sim.host.ControllerWindows;
-import org.kheperasim.sim.host.ControllerStatus;
 import org.kheperasim.sim.host.Lockstep;
+import org.kheperasim.sim.host.StepHost;
 import org.kheperasim.sim.trace.TraceWriter;
 
 /**
@@ -97,7 +97,7 @@ public final class RunSession implements AutoCloseable {
      * recorder that hears every command from the controllers' construction on (a command log).
      */
     RunSession(Arena arena, List<RobotSetup> setups, ControllerCatalog catalog, long seed, ConsoleSink console,
-            HostOptions hostOptions, org.kheperasim.sim.engine.DriverRecorder recorder) {
+            HostOptions hostOptions, org.kheperasim.sim.engine.view.DriverRecorder recorder) {
         Lockstep.prepare();
         this.arena = Objects.requireNonNull(arena, "no arena given");
         if (setups.size() != arena.robots().size()) {

@@ -12,10 +12,9 @@ import java.util.function.BooleanSupplier;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.engine.Engine;
-import org.kheperasim.sim.engine.Settings;
-import org.kheperasim.sim.engine.SnapshotListener;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.view.SnapshotListener;
 import org.kheperasim.sim.host.ConsoleSink;
-
 import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.trace.LineFileWriter;
 
@@ -65,7 +64,7 @@ public final class Simulation {
         private boolean trusted;
         private EditLog edits = new EditLog();
         private BooleanSupplier stop = () -> false;
-        private org.kheperasim.sim.engine.DriverRecorder recorder;
+        private org.kheperasim.sim.engine.view.DriverRecorder recorder;
         private java.util.function.Consumer<RunSession> started = session -> { };
         private long outputLimit = DEFAULT_OUTPUT_LIMIT;
         private final java.util.Map<Integer, String> robotOverrides = new java.util.TreeMap<>();
@@ -253,7 +252,7 @@ public final class Simulation {
          *     ({@code org.kheperasim.sim.commandlog})
          * @return this
          */
-        public Builder record(org.kheperasim.sim.engine.DriverRecorder recorder) {
+        public Builder record(org.kheperasim.sim.engine.view.DriverRecorder recorder) {
             this.recorder = recorder;
             return this;
         }

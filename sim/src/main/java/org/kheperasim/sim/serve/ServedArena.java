@@ -8,11 +8,11 @@ import java.util.concurrent.locks.ReentrantLock;
 import org.kheperasim.link.protocol.dialect.Dialect;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.engine.Engine;
-import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
-import org.kheperasim.sim.engine.Snapshot;
-import org.kheperasim.sim.engine.SnapshotListener;
-import org.kheperasim.sim.engine.World;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.space.World;
+import org.kheperasim.sim.engine.view.Snapshot;
+import org.kheperasim.sim.engine.view.SnapshotListener;
 
 /**
  * An arena whose robots answer the robot's serial protocol, each to its own client: one engine,

@@ -11,10 +11,10 @@ import org.kheperasim.link.protocol.TurretCommand;
 import org.kheperasim.link.protocol.dialect.Dialect;
 import org.kheperasim.link.timing.LinkTiming;
 import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
-import org.kheperasim.sim.engine.Snapshot;
-import org.kheperasim.sim.engine.SnapshotListener;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.view.Snapshot;
+import org.kheperasim.sim.engine.view.SnapshotListener;
 
 /**
  * One simulated Khepera that answers the robot's serial protocol: a robot of a {@link ServedArena}

@@ -7,7 +7,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.regex.Pattern;
 import org.kheperasim.api.GripperState;
-import org.kheperasim.sim.engine.Contact;
+import org.kheperasim.sim.engine.view.Contact;
 import org.kheperasim.sim.files.TextFiles;
 
 /**

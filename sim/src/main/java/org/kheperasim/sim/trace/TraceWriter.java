@@ -9,11 +9,11 @@ import java.security.NoSuchAlgorithmException;
 import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
-import org.kheperasim.sim.engine.CapView;
-import org.kheperasim.sim.engine.GripperView;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
-import org.kheperasim.sim.engine.SnapshotListener;
+import org.kheperasim.sim.engine.view.CapView;
+import org.kheperasim.sim.engine.view.GripperView;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
+import org.kheperasim.sim.engine.view.SnapshotListener;
 
 /**
  * Writes a run as text: a header that says what produced it, then one line per robot per sample.
@@ -124,7 +124,7 @@ public final class TraceWriter implements SnapshotListener, AutoCloseable {
             }
         }
         first = false;
-        for (org.kheperasim.sim.engine.VisionView v : snapshot.vision()) {
+        for (org.kheperasim.sim.engine.view.VisionView v : snapshot.vision()) {
             if (v.robot() >= visionTaken.length) {
                 int old = visionTaken.length;
                 visionTaken = java.util.Arrays.copyOf(visionTaken, v.robot() + 1);

@@ -1,7 +1,5 @@
 package org.kheperasim.sim.web;
 
-import org.kheperasim.sim.engine.robot.RobotType;
-import org.kheperasim.sim.engine.robot.RobotTypes;
 import java.util.List;
 import org.kheperasim.api.GripperState;
 import org.kheperasim.sim.arena.Arena;
@@ -10,8 +8,10 @@ import org.kheperasim.sim.arena.Light;
 import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.arena.Region;
 import org.kheperasim.sim.arena.Wall;
-import org.kheperasim.sim.engine.Contact;
-import org.kheperasim.sim.engine.GripperTurret;
+import org.kheperasim.sim.engine.robot.GripperTurret;
+import org.kheperasim.sim.engine.robot.RobotType;
+import org.kheperasim.sim.engine.robot.RobotTypes;
+import org.kheperasim.sim.engine.view.Contact;
 import org.kheperasim.sim.task.Score;
 
 /**

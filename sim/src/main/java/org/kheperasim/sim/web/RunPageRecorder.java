@@ -3,8 +3,8 @@ package org.kheperasim.sim.web;
 import java.util.ArrayList;
 import java.util.List;
 import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.engine.Snapshot;
-import org.kheperasim.sim.engine.SnapshotListener;
+import org.kheperasim.sim.engine.view.Snapshot;
+import org.kheperasim.sim.engine.view.SnapshotListener;
 import org.kheperasim.sim.host.ConsoleLine;
 import org.kheperasim.sim.run.EditLog;
 

@@ -6,10 +6,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.engine.CapView;
-import org.kheperasim.sim.engine.GripperView;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.CapView;
+import org.kheperasim.sim.engine.view.GripperView;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
 import org.kheperasim.sim.host.ControllerStatus;
 import org.kheperasim.sim.replay.Replay;
 

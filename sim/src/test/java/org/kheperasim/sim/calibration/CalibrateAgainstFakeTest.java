@@ -13,27 +13,27 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.link.calibrate.Answers;
 import org.kheperasim.link.calibrate.Calibration;
 import org.kheperasim.link.calibrate.CalibrationRun;
+import org.kheperasim.link.cli.Main;
+import org.kheperasim.link.fake.FakeKhepera;
+import org.kheperasim.link.fake.FakeWallScene;
+import org.kheperasim.link.fake.OnSocket;
 import org.kheperasim.link.io.LineEnd;
 import org.kheperasim.link.io.Links;
 import org.kheperasim.link.io.SerialSettings;
 import org.kheperasim.link.session.Session;
 import org.kheperasim.link.timing.LinkTiming;
-import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
-import org.kheperasim.link.cli.Main;
-import org.kheperasim.link.fake.FakeKhepera;
-import org.kheperasim.link.fake.FakeWallScene;
-import org.kheperasim.link.fake.OnSocket;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.OccupancyGrid;
 import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.engine.Engine;
-import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
-import org.kheperasim.sim.engine.World;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.space.World;
 
 /**
  * {@code khepera-link calibrate --non-interactive} against a fake Khepera whose sensors follow a

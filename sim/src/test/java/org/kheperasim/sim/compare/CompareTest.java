@@ -10,8 +10,8 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.view.RobotView;
 import org.kheperasim.sim.run.Simulation;
 import org.kheperasim.testfixtures.Cli;
 

@@ -1,14 +1,16 @@
 package org.kheperasim.sim.engine;
 
-import org.kheperasim.sim.engine.robot.RobotTypes;
-
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.junit.jupiter.api.Test;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Pose;
-import org.junit.jupiter.api.Test;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.robot.RobotTypes;
+import org.kheperasim.sim.engine.space.World;
+import org.kheperasim.sim.engine.view.Contact;
 
 /** Differential drive in Khepera units, encoders, and what happens against a wall. */
 class MotionTest {

@@ -1,7 +1,5 @@
 package org.kheperasim.sim.gui;
 
-import org.kheperasim.sim.edit.Item;
-import org.kheperasim.sim.edit.ItemHits;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -18,11 +16,13 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.Cap;
 import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.arena.Wall;
-import org.kheperasim.sim.engine.CapView;
-import org.kheperasim.sim.engine.Contact;
-import org.kheperasim.sim.engine.GripperView;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.edit.Item;
+import org.kheperasim.sim.edit.ItemHits;
+import org.kheperasim.sim.engine.view.CapView;
+import org.kheperasim.sim.engine.view.Contact;
+import org.kheperasim.sim.engine.view.GripperView;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
 
 /** The renderer draws into an image headless: things appear where the model says, in their colours. */
 class ArenaRendererTest {

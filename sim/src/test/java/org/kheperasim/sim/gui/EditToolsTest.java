@@ -1,8 +1,5 @@
 package org.kheperasim.sim.gui;
 
-import org.kheperasim.sim.edit.ArenaEdits;
-import org.kheperasim.sim.edit.EditorModel;
-import org.kheperasim.sim.edit.Item;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -17,9 +14,12 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.arena.Wall;
-import org.kheperasim.sim.engine.Contact;
-import org.kheperasim.sim.engine.GripperView;
-import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.edit.ArenaEdits;
+import org.kheperasim.sim.edit.EditorModel;
+import org.kheperasim.sim.edit.Item;
+import org.kheperasim.sim.engine.view.Contact;
+import org.kheperasim.sim.engine.view.GripperView;
+import org.kheperasim.sim.engine.view.RobotView;
 
 /** The editing tools against the model: gestures in millimetres in, arenas out, undo/redo, refusals. */
 class EditToolsTest {

@@ -10,7 +10,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import java.util.function.Supplier;
 import org.kheperasim.sim.cli.Main;
-import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.engine.view.RobotView;
 import org.kheperasim.sim.run.PacedRunner;
 
 /**

@@ -20,7 +20,7 @@ import javax.swing.SwingUtilities;
 import javax.swing.plaf.basic.BasicSliderUI;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.cli.Main;
-import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.engine.view.RobotView;
 import org.kheperasim.sim.run.Simulation;
 
 /**

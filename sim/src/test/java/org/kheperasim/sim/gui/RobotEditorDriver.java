@@ -17,10 +17,10 @@ import javax.imageio.ImageIO;
 import javax.swing.JTable;
 import javax.swing.SwingUtilities;
 import org.kheperasim.sim.cli.Main;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
 import org.kheperasim.sim.engine.robot.RobotType;
 import org.kheperasim.sim.engine.robot.RobotTypes;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
 import org.kheperasim.sim.gui.robot.RobotEditor;
 import org.kheperasim.sim.gui.robot.RobotFiles;
 

@@ -9,8 +9,8 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
 import javax.swing.SwingUtilities;
 import org.kheperasim.sim.cli.Main;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
 
 /**
  * Runs in a child JVM under Xvfb (see {@link RobotSelectionTest}): a run of two robots in the
@@ -96,8 +96,8 @@ public final class RobotSelectionDriver {
                 Thread.sleep(100);
                 Snapshot served = onEdt(w::snapshot);
                 met = served != null && served.robots().size() == 2
-                        && served.robots().get(0).contact() != org.kheperasim.sim.engine.Contact.NONE
-                        && served.robots().get(1).contact() != org.kheperasim.sim.engine.Contact.NONE;
+                        && served.robots().get(0).contact() != org.kheperasim.sim.engine.view.Contact.NONE
+                        && served.robots().get(1).contact() != org.kheperasim.sim.engine.view.Contact.NONE;
             }
             GuiE2EDriver.shot(robot, w, out.resolve("robots-3-served-and-met.png"));
             if (!met) {

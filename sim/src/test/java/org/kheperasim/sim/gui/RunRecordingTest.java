@@ -1,7 +1,5 @@
 package org.kheperasim.sim.gui;
 
-import org.kheperasim.sim.edit.ArenaEdits;
-import org.kheperasim.sim.edit.EditorModel;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -17,8 +15,9 @@ import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.cli.Main;
-import org.kheperasim.sim.engine.Settings;
-
+import org.kheperasim.sim.edit.ArenaEdits;
+import org.kheperasim.sim.edit.EditorModel;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.run.ControllerCatalog;
 import org.kheperasim.sim.run.PacedRunner;

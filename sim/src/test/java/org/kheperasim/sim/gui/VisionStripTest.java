@@ -7,7 +7,7 @@ import java.awt.Graphics2D;
 import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
 import org.junit.jupiter.api.Test;
-import org.kheperasim.sim.engine.VisionView;
+import org.kheperasim.sim.engine.view.VisionView;
 
 /** The vision turret's strip: 64 cells in their grey levels, pixel 0 on the left, drawn into an image. */
 class VisionStripTest {

@@ -11,7 +11,7 @@ import java.util.concurrent.TimeUnit;
 import javax.imageio.ImageIO;
 import javax.swing.SwingUtilities;
 import org.kheperasim.sim.cli.Main;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.Snapshot;
 
 /**
  * Runs in a child JVM under Xvfb (see {@link WsuWindowTest}): the window opens a WSU world file

@@ -11,9 +11,9 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.engine.CapView;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.CapView;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
 import org.kheperasim.sim.files.InputFileException;
 import org.kheperasim.sim.run.Simulation;
 

@@ -9,8 +9,8 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.engine.Settings;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.view.Snapshot;
 
 /**
  * Two robots too far apart to see each other, and caps that the first moves while the second, which

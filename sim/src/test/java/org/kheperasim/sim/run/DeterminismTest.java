@@ -7,8 +7,7 @@ import java.io.StringWriter;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import org.kheperasim.sim.engine.Settings;
-
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.host.HostOptions;
 
 /**

@@ -13,8 +13,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.sim.ReadmeSnippets;
-import org.kheperasim.sim.engine.Contact;
-import org.kheperasim.sim.engine.RobotView;
+import org.kheperasim.sim.engine.view.Contact;
+import org.kheperasim.sim.engine.view.RobotView;
 
 /**
  * The first controllers a newcomer meets, the README's {@code MyFirst} (compiled from the README

@@ -1,6 +1,5 @@
 package org.kheperasim.sim.run;
 
-import org.kheperasim.sim.host.HostOptions;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -24,6 +23,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.api.spi.ControllerException;
 import org.kheperasim.sim.host.ConsoleLine;
 import org.kheperasim.sim.host.ControllerStatus;
+import org.kheperasim.sim.host.HostOptions;
 
 /**
  * Student code cannot take the simulator down, harm the machine or fake a result: each hostile
@@ -45,7 +45,7 @@ class HostileControllerTest {
         {"Deleter", "new java.io.File(TARGET).delete(); sleepMillis(100);"},
         {"Networker", "try { new java.net.Socket(\"127.0.0.1\", 9).close(); } catch (Exception e) { } sleepMillis(100);"},
         {"Reflector", "try { Class<?> c = Class.forName(\"org.kheperasim.sim.engine.SimRobot\"); } catch (Exception e) { }"},
-        {"Intruder", "org.kheperasim.sim.engine.Settings.class.getName(); sleepMillis(100);"},
+        {"Intruder", "org.kheperasim.sim.engine.model.Settings.class.getName(); sleepMillis(100);"},
         {"HandleBot", "try { java.lang.invoke.MethodHandles.lookup().findStatic(System.class, \"exit\","
             + " java.lang.invoke.MethodType.methodType(void.class, int.class)).invoke(0); } catch (Throwable t) { }"},
         {"Waiter", "synchronized (this) { try { wait(100); } catch (InterruptedException e) { } } setSpeeds(1, 1);"},
@@ -159,7 +159,7 @@ class HostileControllerTest {
     void filesNetworkReflectionAndTheSimulatorAreRefusedAtLoadNamingTheLine() throws IOException {
         for (String[] c : new String[][] {{"Writer", "java.nio.file."}, {"Deleter", "java.io.File"},
             {"Networker", "java.net.Socket"}, {"Reflector", "java.lang.Class.forName"},
-            {"Intruder", "org.kheperasim.sim.engine.Settings"}, {"HandleBot", "java.lang.invoke.MethodHandles.lookup()"}}) {
+            {"Intruder", "org.kheperasim.sim.engine.model.Settings"}, {"HandleBot", "java.lang.invoke.MethodHandles.lookup()"}}) {
             ControllerException e = assertThrows(ControllerException.class, () -> run(c[0], 1), c[0]);
             assertTrue(e.getMessage().contains(c[1]), c[0] + " names the call: " + e.getMessage());
             assertTrue(e.getMessage().contains(c[0] + ".java:"), c[0] + " names the student's line: " + e.getMessage());
@@ -255,7 +255,7 @@ class HostileControllerTest {
             {"Parker", "RUNNING"}, {"Spinner", "HUNG"}, {"Swallower", "RUNNING"}}) {
             List<String> console = new ArrayList<>();
             RunSession s = new RunSession(org.kheperasim.sim.arena.ArenaFormat.loadBundled("lab"), c[0],
-                    new ControllerCatalog(List.of(classes)), 1, org.kheperasim.sim.engine.Settings.defaults(),
+                    new ControllerCatalog(List.of(classes)), 1, org.kheperasim.sim.engine.model.Settings.defaults(),
                     line -> {
                         synchronized (console) {
                             console.add(line.text());
@@ -280,7 +280,7 @@ class HostileControllerTest {
         assertThreadsBackTo(before, "after the window's runs");
         for (String refused : List.of("Writer", "Deleter", "Networker", "Reflector", "Intruder", "HandleBot")) {
             assertThrows(ControllerException.class, () -> new RunSession(org.kheperasim.sim.arena.ArenaFormat.loadBundled("lab"),
-                    refused, new ControllerCatalog(List.of(classes)), 1, org.kheperasim.sim.engine.Settings.defaults(),
+                    refused, new ControllerCatalog(List.of(classes)), 1, org.kheperasim.sim.engine.model.Settings.defaults(),
                     line -> { }, org.kheperasim.sim.host.HostOptions.defaults()),
                     refused + " is refused when the window starts it, as headless");
         }
@@ -292,7 +292,7 @@ class HostileControllerTest {
         List<String> console = new java.util.concurrent.CopyOnWriteArrayList<>();
         long began = System.nanoTime();
         RunSession s = new RunSession(org.kheperasim.sim.arena.ArenaFormat.loadBundled("lab"), "org.kheperasim.testcontrollers.Looper",
-                new ControllerCatalog(List.of()), 1, org.kheperasim.sim.engine.Settings.defaults(), line -> console.add(line.format()),
+                new ControllerCatalog(List.of()), 1, org.kheperasim.sim.engine.model.Settings.defaults(), line -> console.add(line.format()),
                 org.kheperasim.sim.host.HostOptions.defaults().withHangTimeout(TimeUnit.SECONDS.toNanos(60)));
         PacedRunner runner = new PacedRunner(s, null);
         runner.setSpeed(PacedRunner.MAX_SPEED);

@@ -11,7 +11,7 @@ import org.junit.jupiter.api.Timeout;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.ArenaFormatException;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 
 /** One arena with robots of several types: each gets its type's body and sensors, and the run is deterministic. */
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)

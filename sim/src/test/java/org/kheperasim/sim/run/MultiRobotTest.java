@@ -10,9 +10,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
-
-import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.host.ControllerStatus;
+import org.kheperasim.sim.host.HostOptions;
 
 /** The engine holds a list of robots: three controllers pass the turn between them deterministically. */
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
@@ -66,7 +65,7 @@ class MultiRobotTest {
         StringWriter trace = new StringWriter();
         RunResult r = Simulation.builder().arena(THREE).controller("org.kheperasim.testcontrollers.Straight")
                 .robot(1, "Braitenberg", null)
-                .robot(2, null, org.kheperasim.sim.engine.Settings.defaults().with("motor.left.calibration", "0.5"))
+                .robot(2, null, org.kheperasim.sim.engine.model.Settings.defaults().with("motor.left.calibration", "0.5"))
                 .seed(21).seconds(3).trace(trace).run();
         assertEquals(List.of("Straight#0", "Braitenberg#1", "Straight#2"),
                 r.robots().stream().map(RunResult.RobotResult::name).toList());

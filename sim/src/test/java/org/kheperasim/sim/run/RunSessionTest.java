@@ -12,8 +12,7 @@ import org.junit.jupiter.api.Timeout;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Wall;
-import org.kheperasim.sim.engine.Settings;
-
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.host.HostOptions;
 
 /**

@@ -11,7 +11,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.link.fuzz.Fuzz;
 import org.kheperasim.link.fuzz.Mutations;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 
 /** Whatever the text, a settings file reads and writes back the same, or the error names its line. */
 @Tag("properties")

@@ -10,9 +10,8 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.sim.host.ConsoleLine;
-
-import org.kheperasim.sim.host.HostOptions;
 import org.kheperasim.sim.host.ControllerStatus;
+import org.kheperasim.sim.host.HostOptions;
 
 /**
  * Step-style controllers: stepped inline once per period, with the same sensors, motors and link
@@ -43,7 +42,7 @@ class StepControllerTest {
         StringWriter step = new StringWriter();
         Simulation.builder().arena("lab").controller("Braitenberg").seed(9).seconds(120).trace(thread).run();
         RunResult r = Simulation.builder().arena("lab").controller("StepBraitenberg").seed(9).seconds(120)
-                .settings(org.kheperasim.sim.engine.Settings.defaults().with("controller.mode", "tethered")).trace(step)
+                .settings(org.kheperasim.sim.engine.model.Settings.defaults().with("controller.mode", "tethered")).trace(step)
                 .run();
         // The same reads and commands at the same times through the link: the same path, to the last digit. (A
         // step runs whole inside its tick, so a reply its late calls bring in shows in that tick's sample, where
@@ -60,7 +59,7 @@ class StepControllerTest {
         for (String mode : List.of("onboard", "tethered")) {
             long[] first = {-1};
             Simulation.builder().arena("lab").controller("StepBraitenberg").seed(9).seconds(1)
-                    .settings(org.kheperasim.sim.engine.Settings.defaults().with("controller.mode", mode))
+                    .settings(org.kheperasim.sim.engine.model.Settings.defaults().with("controller.mode", mode))
                     .listener(s -> {
                         if (first[0] < 0 && s.robots().get(0).speedLeft() != 0) {
                             first[0] = s.timeNanos();

@@ -10,8 +10,8 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
-import org.kheperasim.sim.engine.Settings;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.view.Snapshot;
 
 /**
  * The event-driven engine and the reference that steps every millisecond compute the same run:

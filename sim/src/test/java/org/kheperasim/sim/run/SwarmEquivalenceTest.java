@@ -13,8 +13,8 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.engine.Settings;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.view.Snapshot;
 
 /**
  * Many robots close together, the case where the event-driven engine moves robots that see each

@@ -104,7 +104,7 @@ class SwarmThreadsTest {
         StringWriter two = new StringWriter();
         for (int threads : new int[] {1, 2}) {
             Simulation.builder().arena(arena).controller("StepBraitenberg").seed(3).seconds(3)
-                    .settings(org.kheperasim.sim.engine.Settings.defaults().with("controller.mode", "tethered"))
+                    .settings(org.kheperasim.sim.engine.model.Settings.defaults().with("controller.mode", "tethered"))
                     .hostOptions(HostOptions.defaults().withEngineThreads(threads)).trace(threads == 1 ? one : two).run();
         }
         assertEquals(one.toString(), two.toString());

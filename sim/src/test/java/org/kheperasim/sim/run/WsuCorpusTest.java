@@ -1,7 +1,5 @@
 package org.kheperasim.sim.run;
 
-import org.kheperasim.sim.engine.robot.RobotTypes;
-
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -24,9 +22,10 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.Light;
 import org.kheperasim.sim.arena.Wall;
 import org.kheperasim.sim.arena.wsu.WsuWorld;
-import org.kheperasim.sim.engine.CapView;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.robot.RobotTypes;
+import org.kheperasim.sim.engine.view.CapView;
+import org.kheperasim.sim.engine.view.RobotView;
 
 /**
  * Public course code written for the WSU simulator, compiled unchanged and run on its own maps: the

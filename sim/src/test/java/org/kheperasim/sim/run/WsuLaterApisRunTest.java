@@ -16,8 +16,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.sim.arena.wsu.WsuWorldWriter;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.view.RobotView;
 import org.kheperasim.sim.host.ConsoleLine;
 
 /**

@@ -21,9 +21,9 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.wsu.WsuWorld;
-import org.kheperasim.sim.engine.CapView;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.view.CapView;
+import org.kheperasim.sim.engine.view.RobotView;
 
 /**
  * The course pairings under {@code --set profile=wsu}, 60 simulated seconds, seed 1, beside the

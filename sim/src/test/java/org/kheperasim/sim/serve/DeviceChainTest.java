@@ -14,16 +14,16 @@ import java.util.Map;
 import java.util.Set;
 import org.junit.jupiter.api.Test;
 import org.kheperasim.api.spi.RobotPort;
-import org.kheperasim.link.protocol.dialect.Dialect;
 import org.kheperasim.link.protocol.Command;
+import org.kheperasim.link.protocol.dialect.Dialect;
 import org.kheperasim.link.robot.RobotBackend;
-import org.kheperasim.sim.engine.GripperView;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Settings;
-import org.kheperasim.sim.engine.VisionView;
+import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.engine.robot.Device;
 import org.kheperasim.sim.engine.robot.RobotType;
 import org.kheperasim.sim.engine.robot.RobotTypes;
+import org.kheperasim.sim.engine.view.GripperView;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.VisionView;
 import org.kheperasim.sim.gui.VisionStrip;
 import org.kheperasim.sim.trace.TraceWriter;
 import org.objectweb.asm.ClassReader;
@@ -121,7 +121,7 @@ class DeviceChainTest {
     @Test
     void theChainCheckSeesAMissingLink() throws Exception {
         // The check itself: a panel that reads no vision image, and a port without a method, are reported.
-        assertTrue(!calls(VisionStrip.class).contains("org/kheperasim/sim/engine/RobotView.encoderLeft"));
+        assertTrue(!calls(VisionStrip.class).contains("org/kheperasim/sim/engine/view/RobotView.encoderLeft"));
         assertTrue(!declares(RobotPort.class, "noSuchDevice"));
         assertTrue(strings(TraceWriter.class).stream().noneMatch(s -> s.contains("no_such_column")));
     }

@@ -15,9 +15,9 @@ import org.kheperasim.link.timing.LinkTiming;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.engine.Engine;
-import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
-import org.kheperasim.sim.engine.World;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.space.World;
 
 /**
  * One link timing model, and it holds on the wire: the poll rate robot-link measures against the

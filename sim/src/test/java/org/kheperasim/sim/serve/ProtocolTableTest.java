@@ -9,9 +9,9 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.link.timing.LinkTiming;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.view.RobotView;
 
 /**
  * Every command of the reference against the served robot, over TCP, with the replies a real

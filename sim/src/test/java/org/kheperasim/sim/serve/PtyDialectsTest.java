@@ -5,17 +5,17 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
-import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.kheperasim.link.io.SerialLink;
 import org.kheperasim.link.io.SerialSettings;
 import org.kheperasim.link.protocol.dialect.Dialect;
 import org.kheperasim.link.session.Session;
 import org.kheperasim.link.timing.LinkTiming;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 
 /**
  * Over {@code serve --pty}, in each dialect, a client of that dialect drives the robot: it opens

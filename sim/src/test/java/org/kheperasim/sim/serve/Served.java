@@ -2,7 +2,7 @@ package org.kheperasim.sim.serve;
 
 import java.io.IOException;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 
 /** A served robot and its server, on a 1219 mm arena with the robot at (300, 600) facing +x. */
 final class Served implements AutoCloseable {

@@ -1,7 +1,5 @@
 package org.kheperasim.sim.serve;
 
-import org.kheperasim.sim.engine.robot.RobotTypes;
-
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -10,8 +8,9 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.engine.Contact;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.robot.RobotTypes;
+import org.kheperasim.sim.engine.view.Contact;
 
 /**
  * Serving a whole arena: each robot answers on its own port, and two clients drive two robots that

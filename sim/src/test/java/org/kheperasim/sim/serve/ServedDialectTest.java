@@ -11,7 +11,7 @@ import org.kheperasim.link.io.LineEnd;
 import org.kheperasim.link.io.TcpLink;
 import org.kheperasim.link.protocol.dialect.Dialect;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.engine.Settings;
+import org.kheperasim.sim.engine.model.Settings;
 
 /**
  * {@code serve} answers in a dialect: the recorded transcript of each dialect (robot-link's test

@@ -29,9 +29,9 @@ import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Region;
 import org.kheperasim.sim.engine.Engine;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.view.RobotView;
 import org.kheperasim.sim.run.RunResult;
 import org.kheperasim.sim.run.Simulation;
 

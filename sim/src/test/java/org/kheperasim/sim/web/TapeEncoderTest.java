@@ -11,11 +11,11 @@ import java.util.zip.Inflater;
 import org.junit.jupiter.api.Test;
 import org.kheperasim.api.GripperState;
 import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.engine.CapView;
-import org.kheperasim.sim.engine.Contact;
-import org.kheperasim.sim.engine.GripperView;
-import org.kheperasim.sim.engine.RobotView;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.CapView;
+import org.kheperasim.sim.engine.view.Contact;
+import org.kheperasim.sim.engine.view.GripperView;
+import org.kheperasim.sim.engine.view.RobotView;
+import org.kheperasim.sim.engine.view.Snapshot;
 import org.kheperasim.testfixtures.Arenas;
 
 /** The packed samples: what the page unpacks is what the run had, and a run too big for a page is thinned to fit. */

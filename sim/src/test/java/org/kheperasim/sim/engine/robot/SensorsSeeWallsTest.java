@@ -8,9 +8,9 @@ import org.junit.jupiter.params.provider.ValueSource;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.engine.Engine;
-import org.kheperasim.sim.engine.Settings;
 import org.kheperasim.sim.engine.SimRobot;
-import org.kheperasim.sim.engine.World;
+import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.space.World;
 
 /** For each robot, a wall placed in front of each sensor in turn raises that sensor above its open-floor value. */
 class SensorsSeeWallsTest {

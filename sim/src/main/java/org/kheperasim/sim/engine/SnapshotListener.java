@@ -1,8 +1,0 @@
-package org.kheperasim.sim.engine;
-
-/** Receives the engine's snapshots. Called on the engine's thread: keep it short, never block. */
-@FunctionalInterface
-public interface SnapshotListener {
-    /** @param snapshot the world at this instant */
-    void onSnapshot(Snapshot snapshot);
-}
