@@ -48,7 +48,8 @@ class NoPackageCyclesTest {
 
     @Test
     void theCycleLeftIsStillThere() {
-        assertThrows(AssertionError.class, () -> rule().check(api), "api and api.spi no longer depend on each other"
-                + " both ways: drop the ignored dependency of theApisPackagesAreFreeOfCyclesButTheOneLeft and this test");
+        assertThrows(AssertionError.class, () -> rule().check(api), "api and api.spi no longer depend on each"
+                + " other both ways: drop the ignored dependency of theApisPackagesAreFreeOfCyclesButTheOneLeft"
+                + " and this test");
     }
 }

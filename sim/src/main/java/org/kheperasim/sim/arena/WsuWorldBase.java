@@ -47,7 +47,7 @@ final class WsuWorldBase {
             return ArenaFiles.readWsuWorld(file, warning -> System.err.println(file + ": warning: " + warning));
         } catch (InputFileException e) {
             throw e;   // the file itself refused (its size, its kind), as the reader says it
-        } catch (IllegalArgumentException | UncheckedIOException e) {   // a damaged world: the reader's WsuWorldException
+        } catch (IllegalArgumentException | UncheckedIOException e) {   // a damaged world (WsuWorldException)
             throw new ArenaFormatException(source, line, "wsu-world: " + e.getMessage());
         }
     }
