@@ -4,8 +4,7 @@ import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
-import org.kheperasim.sim.arena.wsu.WsuWorld;
-import org.kheperasim.sim.arena.wsu.WsuWorldException;
+import org.kheperasim.sim.files.InputFileException;
 
 /**
  * The arena format's {@code wsu-world PATH} line: a world file of the WSU Khepera Simulator, read as
@@ -45,8 +44,10 @@ final class WsuWorldBase {
                     + " start with the serialization stream's bytes AC ED); name a world file saved by the WSU simulator");
         }
         try {
-            return WsuWorld.read(file, warning -> System.err.println(file + ": warning: " + warning));
-        } catch (WsuWorldException | UncheckedIOException e) {
+            return ArenaFiles.readWsuWorld(file, warning -> System.err.println(file + ": warning: " + warning));
+        } catch (InputFileException e) {
+            throw e;   // the file itself refused (its size, its kind), as the reader says it
+        } catch (IllegalArgumentException | UncheckedIOException e) {   // a damaged world (WsuWorldException)
             throw new ArenaFormatException(source, line, "wsu-world: " + e.getMessage());
         }
     }

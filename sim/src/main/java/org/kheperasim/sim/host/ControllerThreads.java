@@ -234,10 +234,10 @@ final class ControllerThreads {
             Held h = p.lock == null ? null : held.get(p.lock);
             sb.append(p.index == 0 ? "the controller's own thread" : "thread " + p);
             if (p.waiting) {
-                sb.append(" waits in wait() on a ").append(org.kheperasim.sim.host.loading.MonitorHooks.typeName(p.lock))
+                sb.append(" waits in wait() on a ").append(MonitorStandIn.typeName(p.lock))
                         .append(" that nobody notifies");
             } else if (h != null) {
-                sb.append(" waits for a lock on a ").append(org.kheperasim.sim.host.loading.MonitorHooks.typeName(p.lock))
+                sb.append(" waits for a lock on a ").append(MonitorStandIn.typeName(p.lock))
                         .append(" held by ")
                         .append(h.owner.index == 0 ? "the controller's own thread" : "thread " + h.owner);
             } else {

@@ -238,7 +238,7 @@ final class ThreadRunners {
 
     /** @return true when {@code controller}'s code is contained: loaded and rewritten by a containing class loader */
     static boolean contained(Class<?> controller) {
-        return controller.getClassLoader() instanceof org.kheperasim.sim.host.loading.ControllerClassLoader l && l.contained();
+        return controller.getClassLoader() instanceof ContainingLoader l && l.contained();
     }
 
     /** @return the thread that runs {@code thread}'s code: a thread made for it, or itself */

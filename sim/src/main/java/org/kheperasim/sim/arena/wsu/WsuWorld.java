@@ -9,6 +9,7 @@ import java.util.function.Consumer;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.ArenaFormatException;
+import org.kheperasim.sim.arena.WsuWorldReader;
 import org.kheperasim.sim.arena.wsu.StreamModel.Top;
 import org.kheperasim.sim.arena.wsu.WsuWorldObjects.WsuObject;
 import org.kheperasim.sim.files.InputFileException;
@@ -24,7 +25,7 @@ import org.kheperasim.sim.files.TextFiles;
  */
 public final class WsuWorld {
     /** The first two bytes of every Java serialization stream, hence of every WSU world file. */
-    public static final int MAGIC = 0xACED;
+    public static final int MAGIC = WsuWorldReader.MAGIC;
     /** The largest world file read, bytes (real ones are a few kilobytes). */
     public static final long MAX_BYTES = 16L << 20;
 
@@ -36,7 +37,7 @@ public final class WsuWorld {
      * @return whether they start a Java serialization stream, as every WSU world file does
      */
     public static boolean isWsuWorld(byte[] head) {
-        return head.length >= 2 && (head[0] & 0xFF) == (MAGIC >>> 8) && (head[1] & 0xFF) == (MAGIC & 0xFF);
+        return WsuWorldReader.isWsuWorld(head);
     }
 
     /**

@@ -12,6 +12,7 @@ import java.util.Collections;
 import java.util.Enumeration;
 import java.util.List;
 import java.util.Objects;
+import org.kheperasim.sim.host.ContainingLoader;
 
 /**
  * Loads controller classes with their time calls rewritten onto the simulation clock (see
@@ -32,7 +33,7 @@ import java.util.Objects;
  * looked up in the classpath entries first, then in the parent. Closing the loader closes its jar
  * files; classes and resources not yet loaded from them can then no longer be found.
  */
-public final class ControllerClassLoader extends ClassLoader implements Closeable {
+public final class ControllerClassLoader extends ClassLoader implements Closeable, ContainingLoader {
     static {
         registerAsParallelCapable();
     }
@@ -104,6 +105,7 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
     }
 
     /** @return true when it contains the code it loads (rewrites its escapes and thread calls) */
+    @Override
     public boolean contained() {
         return contained;
     }

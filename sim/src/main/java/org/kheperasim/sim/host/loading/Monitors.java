@@ -2,6 +2,7 @@ package org.kheperasim.sim.host.loading;
 
 import java.lang.ref.ReferenceQueue;
 import java.lang.ref.WeakReference;
+import org.kheperasim.sim.host.MonitorStandIn;
 
 /**
  * One controller class loader's own monitors for the objects its code does not own (see
@@ -32,13 +33,18 @@ final class Monitors {
     }
 
     /** The object a stand-in takes the place of, for the lockstep's messages: only its type. */
-    static final class StandIn {
+    static final class StandIn implements MonitorStandIn {
         private final Monitors table;
         private final String type;
 
         private StandIn(Monitors table, String type) {
             this.table = table;
             this.type = type;
+        }
+
+        @Override
+        public String standsForType() {
+            return type;
         }
 
         @Override
@@ -73,7 +79,7 @@ final class Monitors {
      * @return the binary name of the type of the object a stand-in stands for, else of {@code monitor}'s own type
      */
     static String typeName(Object monitor) {
-        return monitor instanceof StandIn s ? s.type : monitor.getClass().getName();
+        return MonitorStandIn.typeName(monitor);
     }
 
     private synchronized Object standIn(Object monitor) {
