@@ -27,7 +27,8 @@ final class GuiCommand implements Callable<Integer> {
     String arena;
 
     @Option(names = "--robot-file", paramLabel = "FILE",
-            description = "the robot for the arena's robot lines that name none: a robot file or a bundled robot (see robots)")
+            description = "the robot for the arena's robot lines that name none: a robot file or a bundled robot"
+                    + " (see robots)")
     String robotFile;
 
     @Option(names = "--controller", paramLabel = "NAME", defaultValue = "WallFollower",

@@ -44,7 +44,10 @@ public record GuiOptions(String arena, String controller, List<Path> classpath, 
         return new GuiOptions(arena, controller, classpath, seed, javaSource, true, robotFile);
     }
 
-    /** @param robot a robot file or a bundled robot's name, or null @return these options with it as {@code robotFile} */
+    /**
+     * @param robot a robot file or a bundled robot's name, or null
+     * @return these options with it as {@code robotFile}
+     */
     public GuiOptions withRobotFile(String robot) {
         return new GuiOptions(arena, controller, classpath, seed, javaSource, trusted, robot);
     }
