@@ -17,11 +17,19 @@ public final class Sensor {
     }
 
     /**
-     * @return the latest proximity reading, 0..1023: higher is nearer (about 1000 touching a wall,
-     *     about 600 at 15–20 mm, a few tens beyond 50 mm)
+     * @return the latest proximity reading, 0..{@link #getMaxDistValue()}: higher is nearer (on a Khepera,
+     *     0..1023: about 1000 touching a wall, about 600 at 15–20 mm, a few tens beyond 50 mm)
      */
     public int getDistValue() {
         return port.proximity(mount.index());
+    }
+
+    /**
+     * @return the top of this robot's proximity scale, counts: 1023 on a Khepera, 4095 on an e-puck. A
+     *     controller that takes {@link #getDistValue()} as a fraction of it runs on every robot
+     */
+    public int getMaxDistValue() {
+        return port.maxProximity();
     }
 
     /** @return the latest ambient-light reading, 0..1023: lower is brighter (about 480 in the dark) */

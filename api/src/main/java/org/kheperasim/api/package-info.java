@@ -24,11 +24,13 @@
  *       {@code O} replies): 0 left 90°, 1 left 45°, 2 front left, 3 front right, 4 right 45°,
  *       5 right 90°, 6 back right, 7 back left. See {@link org.kheperasim.api.IrSensor}.</li>
  *   <li><b>Proximity</b>: 0..1023, <em>higher is nearer</em>. About 1000 touching a white wall,
- *       about 600 at 15–20 mm, a noise floor of a few tens beyond about 50 mm.</li>
+ *       about 600 at 15–20 mm, a noise floor of a few tens beyond about 50 mm. Another robot reads on
+ *       its own scale, 0..{@link org.kheperasim.api.Sensor#getMaxDistValue()} (an e-puck's 0..4095).</li>
  *   <li><b>Ambient light</b>: 0..1023 (10-bit), <em>lower is brighter</em>; about 450–500 in the
  *       dark, falling towards 20 next to a lamp.</li>
  *   <li><b>Wheel speed</b>: signed integer, −127..127; one unit is one encoder pulse per 10 ms,
- *       about 8 mm/s.</li>
+ *       about 8 mm/s. Another robot's units and limit: {@link org.kheperasim.api.Motor#getMmPerSecondPerUnit()}
+ *       and {@link org.kheperasim.api.Motor#getMaxSpeed()} (docs/robot-files.md).</li>
  *   <li><b>Wheel position</b> (encoders): signed 32-bit count of pulses, one pulse about 0.08 mm of
  *       wheel travel. They stop counting when the robot is blocked.</li>
  *   <li><b>Time</b>: {@code Thread.sleep(ms)} sleeps that many milliseconds of robot time. In the

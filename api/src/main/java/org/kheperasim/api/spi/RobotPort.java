@@ -19,7 +19,7 @@ public interface RobotPort {
 
     /**
      * @param index the sensor, 0..7 ({@link org.kheperasim.api.IrSensor#index()})
-     * @return proximity of sensor {@code index}, 0..1023, higher = nearer
+     * @return proximity of sensor {@code index}, 0..1023 on a Khepera ({@link #maxProximity()}), higher = nearer
      */
     int proximity(int index);
 
@@ -185,5 +185,13 @@ public interface RobotPort {
     /** @return the wheel speed of one speed unit, mm/s; by default the Khepera's 8 */
     default double mmPerSecondPerUnit() {
         return 8;
+    }
+
+    /**
+     * @return the largest proximity reading, counts: the top of the robot's scale ({@code max_reading} of its
+     *     robot file); by default the Khepera's 1023 (an e-puck's 12-bit sensors: 4095)
+     */
+    default int maxProximity() {
+        return 1023;
     }
 }

@@ -39,4 +39,5 @@ class DelegatingPort implements RobotPort {
     @Override public org.kheperasim.api.SensorMount mount(int index) { return target.mount(index); }
     @Override public int maxSpeed() { return target.maxSpeed(); }
     @Override public double mmPerSecondPerUnit() { return target.mmPerSecondPerUnit(); }
+    @Override public int maxProximity() { return target.maxProximity(); }
 }

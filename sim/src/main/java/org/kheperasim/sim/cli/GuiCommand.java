@@ -26,6 +26,11 @@ final class GuiCommand implements Callable<Integer> {
             description = "an arena file, or a bundled arena (${COMPLETION-CANDIDATES}) (default: ${DEFAULT-VALUE})")
     String arena;
 
+    @Option(names = "--robot-file", paramLabel = "FILE",
+            description = "the robot for the arena's robot lines that name none: a robot file or a bundled robot"
+                    + " (see robots)")
+    String robotFile;
+
     @Option(names = "--controller", paramLabel = "NAME", defaultValue = "WallFollower",
             completionCandidates = BundledControllers.class,
             description = "a bundled controller (${COMPLETION-CANDIDATES}), a class name on --classpath, or a controller's"
@@ -45,19 +50,25 @@ final class GuiCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        if (robotFile != null) {
+            // A wrong robot file is said now, naming its line, as run says it, not by a window that fails to open.
+            RobotFiles.arena(arena, robotFile);
+        }
         Path source = Path.of(controller.strip());
         if (controller.strip().endsWith(".java") && Files.isRegularFile(source)) {
             // The window compiles it as it opens, as Controller > Open .java does.
-            return open(trusting(new GuiOptions(arena, controller, classpath, seed, source)));
+            return open(completed(new GuiOptions(arena, controller, classpath, seed, source)));
         }
         // A wrong name is said now, with what to type, not at the first Start (loaded as trusted code only to find
         // it: the window checks its calls when it runs it, and its Trust menu may still allow them).
         new ControllerCatalog(classpath, true).load(controller);
-        return open(trusting(new GuiOptions(arena, controller, classpath, seed)));
+        return open(completed(new GuiOptions(arena, controller, classpath, seed)));
     }
 
-    private GuiOptions trusting(GuiOptions o) {
-        return trusted ? o.trusting() : o;
+    /** @return the options with --robot-file and --trusted as given */
+    private GuiOptions completed(GuiOptions o) {
+        GuiOptions robot = o.withRobotFile(robotFile);
+        return trusted ? robot.trusting() : robot;
     }
 
     static int open(GuiOptions options) {

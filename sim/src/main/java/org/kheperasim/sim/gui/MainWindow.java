@@ -60,6 +60,9 @@ public final class MainWindow {
 
     MainWindow(GuiOptions options) {
         Arena arena = ArenaFormat.resolve(options.arena());
+        if (options.robotFile() != null) {
+            arena = arena.withDefaultRobot(org.kheperasim.sim.arena.RobotKind.of(options.robotFile()));
+        }
         Path maybeFile = Path.of(options.arena());
         choices.arenaFile = Files.isRegularFile(maybeFile) ? maybeFile : null;
         if (choices.arenaFile != null && Files.isRegularFile(SettingsFile.besideArena(choices.arenaFile))) {

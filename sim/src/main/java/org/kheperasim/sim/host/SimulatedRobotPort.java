@@ -248,6 +248,11 @@ final class SimulatedRobotPort implements RobotPort {
     }
 
     @Override
+    public int maxProximity() {
+        return robot.type().proximity().maxReading();
+    }
+
+    @Override
     public String option(String key) {
         return Settings.catalogue().containsKey(key) ? robot.settings().raw(key) : null;
     }

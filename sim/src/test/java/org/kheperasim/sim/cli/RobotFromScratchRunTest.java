@@ -15,7 +15,8 @@ import org.kheperasim.testfixtures.Cli;
  * A robot file made from scratch, not bundled ({@code src/test/resources/robots/roundbot.yaml}:
  * radius 40 mm, wheel base 64 mm, 6 mm/s speed units, its own sensor ring, a table response), runs
  * the bundled Braitenberg headless with {@code run --robot-file}: the trace names its type, it
- * drives at its own speed unit (6 units are 36 mm/s, where a Khepera's would be 48), and it travels.
+ * cruises at the Braitenberg's 48 mm/s in its own speed units (8 of its 6 mm/s units, where a Khepera
+ * sets 6 of 8 mm/s), and it travels.
  */
 @Timeout(value = 120, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class RobotFromScratchRunTest {
@@ -44,14 +45,14 @@ class RobotFromScratchRunTest {
                 double step = StrictMath.hypot(xy[0] - last[0], xy[1] - last[1]);
                 travelled += step;
                 double t = Double.parseDouble(f[0]);
-                if (Double.isNaN(cruise) && f[5].equals("6") && f[6].equals("6") && t >= 0.5) {
+                if (Double.isNaN(cruise) && f[5].equals("8") && f[6].equals("8") && t >= 0.5) {
                     cruise = step / (t - lastT);
                 }
             }
             last = xy;
             lastT = Double.parseDouble(f[0]);
         }
-        assertEquals(36, cruise, 2, "6 speed units of 6 mm/s, mm/s");
+        assertEquals(48, cruise, 2, "8 speed units of 6 mm/s, mm/s");
         assertTrue(travelled > 500, "it travelled " + travelled + " mm in 30 s");
     }
 }

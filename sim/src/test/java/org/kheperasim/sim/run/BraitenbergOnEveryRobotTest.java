@@ -2,6 +2,7 @@ package org.kheperasim.sim.run;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import org.junit.jupiter.api.Disabled;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -11,37 +12,54 @@ import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.RobotKind;
 
 /**
- * The bundled Braitenberg, unchanged, on the bundled robots in the maze for 60 s: on the Kheperas it
- * travels a metre and turns away from walls (fewer wall contacts than the same robot driving straight).
+ * The bundled Braitenberg, unchanged, on each bundled robot in the maze for 60 s: it travels a metre
+ * and turns away from walls (fewer wall contacts than the same robot driving straight at the same
+ * 48 mm/s, {@link DriveStraight}). It works in mm/s and in a fraction of its robot's proximity scale,
+ * so the one class cruises at 48 mm/s on each (6 units of a Khepera, 373 steps/s of an e-puck).
  */
 @Timeout(value = 300, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class BraitenbergOnEveryRobotTest {
 
     private static RunResult.RobotResult run(String robot, String controller) {
         Arena maze = ArenaFormat.resolve("maze").withDefaultRobot(RobotKind.of(robot));
-        return Simulation.builder().arena(maze).controller(controller).trusted(true).seed(4).seconds(60).run().robots().get(0);
+        return Simulation.builder().arena(maze).controller(controller).trusted(true).seed(4).seconds(60).run()
+                .robots().get(0);
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"khepera1", "khepera2", "epuck"})
+    void itTravelsAMetre(String robot) {
+        RunResult.RobotResult b = run(robot, "Braitenberg");
+        assertTrue(b.distanceMm() >= 1000, robot + " travelled " + b.distanceMm() + " mm");
     }
 
     @ParameterizedTest
     @ValueSource(strings = {"khepera1", "khepera2"})
-    void itTravelsAMetreAndTurnsAwayFromWalls(String robot) {
-        RunResult.RobotResult b = run(robot, "Braitenberg");
-        RunResult.RobotResult straight = run(robot, DriveStraight.class.getName());
-        assertTrue(b.distanceMm() >= 1000, robot + " travelled " + b.distanceMm() + " mm");
-        assertTrue(straight.collisions() > 0, robot + " driving straight met no wall: the comparison says nothing");
-        assertTrue(b.collisions() < straight.collisions(),
-                robot + ": " + b.collisions() + " contacts against " + straight.collisions() + " driving straight");
+    void itTurnsAwayFromWalls(String robot) {
+        turnsAwayFromWalls(robot);
     }
 
     /**
-     * On the e-puck a speed unit is its own, a step per second (0.1288 mm/s): the Braitenberg's
-     * cruising speed of 6 units, 48 mm/s on a Khepera, is 0.77 mm/s there, so it moves its 46 mm a
-     * minute and no metre (docs/robot-files.md, "Units are the robot's"). This holds it to that.
+     * Not yet on the e-puck: over seeds 1 to 6 it touches a wall 2 to 4 times (seed 4: 4) where driving
+     * straight touches once and stays. Its response (Enki's, epuck.yaml) tops out at 2966 + 10 counts, 72 %
+     * of its 4095 scale, and falls faster: as a fraction of the scale a wall 20 mm from a sensor reads about
+     * 0.15 on the e-puck, 0.6 on a Khepera, so every weighted sum turns it a quarter as hard. The front
+     * counts as blocked at 49 % of the scale, 2001 counts, which the e-puck reads about 8.5 mm from a front
+     * sensor, 5 mm from its body's edge (they sit 31 mm out on a 35 mm body): one 100 ms decision at
+     * 48 mm/s (a Khepera: 24 mm from the sensor, 22 from its edge). Taking the scale as the response's top
+     * (2976) instead, it touches no wall on seeds 1 to 4; so does a threshold of 200 on seed 4.
      */
     @Test
-    void onTheEpuckItMovesAtItsCruisingSpeedInTheEpucksUnits() {
-        RunResult.RobotResult b = run("epuck", "Braitenberg");
-        double cruise = 6 * org.kheperasim.sim.engine.robot.RobotTypes.named("epuck").drive().mmPerSecondPerUnit() * 60;
-        assertTrue(StrictMath.abs(b.distanceMm() - cruise) < 0.1 * cruise, "travelled " + b.distanceMm() + " mm, cruise " + cruise);
+    @Disabled("issue 36: the e-puck's readings fill 72 % of its 4095 scale; see the Javadoc")
+    void onTheEpuckItTurnsAwayFromWallsToo() {
+        turnsAwayFromWalls("epuck");
+    }
+
+    private static void turnsAwayFromWalls(String robot) {
+        RunResult.RobotResult b = run(robot, "Braitenberg");
+        RunResult.RobotResult straight = run(robot, DriveStraight.class.getName());
+        assertTrue(straight.collisions() > 0, robot + " driving straight met no wall: the comparison says nothing");
+        assertTrue(b.collisions() < straight.collisions(),
+                robot + ": " + b.collisions() + " contacts against " + straight.collisions() + " driving straight");
     }
 }
