@@ -391,6 +391,10 @@ final class DriveBody {
         return blocked;
     }
 
+    double[] touchPoint() {
+        return new double[] {touchX, touchY};
+    }
+
     int collisions() {
         return collisions;
     }
