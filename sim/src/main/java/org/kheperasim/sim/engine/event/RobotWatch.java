@@ -46,6 +46,14 @@ final class RobotWatch {
         if (now == null && side != Contact.NONE) {
             now = touching;
         }
+        if (side == Contact.NONE && world.capCount() > 0) {
+            // A cap that gives way is pushed, not flagged: it touches the body all the same.
+            int cap = touches.pushedCap(robot);
+            if (cap >= 0) {
+                now = new Touched(Touched.Kind.CAP, cap);
+                side = touches.sideOfCap(robot, cap);
+            }
+        }
         if (now == null ? touching != null : !now.equals(touching)) {
             if (touching != null) {
                 long at = now == null ? StrictMath.min(end, lastEnd + Engine.TICK_NANOS) : end;

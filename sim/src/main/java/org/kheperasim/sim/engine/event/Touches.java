@@ -6,6 +6,7 @@ import org.kheperasim.sim.arena.Light;
 import org.kheperasim.sim.arena.OccupancyGrid;
 import org.kheperasim.sim.arena.Wall;
 import org.kheperasim.sim.engine.CapView;
+import org.kheperasim.sim.engine.Contact;
 import org.kheperasim.sim.engine.SimRobot;
 import org.kheperasim.sim.engine.World;
 
@@ -17,6 +18,9 @@ import org.kheperasim.sim.engine.World;
  * another robot's position while that one moves.
  */
 final class Touches {
+    /** The engine's touching margin (its contact handling's), mm. */
+    static final double TOUCH_MM = 0.5;
+
     private final World world;
     private final List<SimRobot> robots;
 
@@ -61,6 +65,31 @@ final class Touches {
             }
         }
         return null;
+    }
+
+    /**
+     * @return the first cap (arena order) on the floor or in another robot's gripper whose body is within
+     *     the engine's touching margin of this robot's body, or -1: a cap being pushed aside, which the
+     *     engine's contact flag does not show (only a cap that blocks the robot is flagged)
+     */
+    int pushedCap(SimRobot robot) {
+        List<CapView> caps = world.caps();
+        double radius = robot.type().body().radiusMm();
+        for (int c = 0; c < caps.size(); c++) {
+            CapView cap = caps.get(c);
+            double gap = StrictMath.hypot(robot.x() - cap.x(), robot.y() - cap.y()) - cap.radius() - radius;
+            if (cap.heldBy() != robot.id() && gap <= TOUCH_MM) {
+                return c;
+            }
+        }
+        return -1;
+    }
+
+    /** @return the side of the robot cap {@code c} lies on */
+    Contact sideOfCap(SimRobot robot, int c) {
+        CapView cap = world.caps().get(c);
+        double rel = StrictMath.atan2(cap.y() - robot.y(), cap.x() - robot.x()) - StrictMath.toRadians(robot.headingDeg());
+        return Contact.ofAngle(rel);
     }
 
     private static int nearestWall(List<Wall> walls, double x, double y) {
