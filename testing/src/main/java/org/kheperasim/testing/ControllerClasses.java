@@ -60,7 +60,8 @@ final class ControllerClasses {
         URL url = (loader != null ? loader : ControllerClasses.class.getClassLoader()).getResource(resource);
         if (url == null) {
             throw new IllegalArgumentException("no controller class '" + name + "' on the test's classpath, and no bundled"
-                    + " controller of that name (bundled: " + String.join(", ", TestKit.bundledControllers()) + "); give the"
+                    + " controller of that name (bundled: " + String.join(", ", TestKit.bundledControllers())
+                    + "); give the"
                     + " class's full name with its package, e.g. Run.of(\"mypackage." + name + "\"), or its class:"
                     + " Run.of(" + name.substring(name.lastIndexOf('.') + 1) + ".class)");
         }

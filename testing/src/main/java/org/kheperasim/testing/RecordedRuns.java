@@ -49,7 +49,8 @@ final class RecordedRuns {
                     + " sample line");
         }
         KitArena arena = arena(path, traceFile, folder, arenaFile, h.get("arena"));
-        KitEdits edits = folder && Files.isRegularFile(path.resolve("run.edits")) ? KitEdits.load(path.resolve("run.edits")) : null;
+        KitEdits edits = folder && Files.isRegularFile(path.resolve("run.edits"))
+                ? KitEdits.load(path.resolve("run.edits")) : null;
         KitSettings base = folder && Files.isRegularFile(path.resolve("run.settings"))
                 ? KitSettings.load(path.resolve("run.settings")) : settings(h.get("settings"));
         int n = samples.robots.size();
@@ -92,7 +93,8 @@ final class RecordedRuns {
         for (KitRegion r : arena.regions()) {
             capsIn.put(r.name(), (int) caps.stream().filter(c -> c.heldAtEnd() < 0 && r.contains(c.endX(), c.endY())).count());
         }
-        Score score = withoutCoverage(RunShapes.score(TestKit.score(arena, spec.seconds(), enteredByAny, capsIn)), arena);
+        Score score = withoutCoverage(RunShapes.score(TestKit.score(arena, spec.seconds(), enteredByAny, capsIn)),
+                arena);
         return new Run(spec, traceFile, SimTime.ofSeconds(spec.seconds()), robots, caps, score, text, List.of());
     }
 

@@ -24,8 +24,8 @@ import org.kheperasim.sim.testkit.TestKit;
  * assertThat(recorded).replaysIdentically();
  * }</pre>
  * A recorded run has the same shape, less what a trace does not record: how the controllers ended, the
- * simulator's collision count (so contacts between samples) and the floor covered. Regions are checked at
- * every sample of a trace, where a run made here has the simulator's millisecond times.
+ * engine's contact events (its contacts are those its samples saw), the collision count and the floor
+ * covered. Regions are checked at every sample of a trace, where a run made here has the simulator's millisecond times.
  *
  * <p>Immutable, apart from remembering where its trace was saved.
  */

@@ -40,7 +40,8 @@ final class RunShapes {
             }
             Optional<String> region = Optional.empty();
             if (last.heldBy() < 0) {
-                region = arena.regions().stream().filter(r -> r.contains(last.x(), last.y())).map(KitRegion::name).findFirst();
+                region = arena.regions().stream().filter(r -> r.contains(last.x(), last.y())).map(KitRegion::name)
+                        .findFirst();
             }
             out.add(new Cap(i, first.x(), first.y(), last.x(), last.y(), firstMoved, last.heldBy(), region));
         }

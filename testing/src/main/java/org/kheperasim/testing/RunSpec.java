@@ -29,8 +29,9 @@ import org.kheperasim.sim.testkit.KitSettings;
  * @param hangTimeoutSeconds real seconds without an API call after which a controller counts as hung
  * @param edits a window's arena edits with their times, or null
  */
-record RunSpec(String arenaArg, KitArena arena, List<String> controllers, List<KitSettings> settings, List<Path> classpath,
-        long seed, double seconds, long sampleMillis, boolean trusted, double hangTimeoutSeconds, KitEdits edits) {
+record RunSpec(String arenaArg, KitArena arena, List<String> controllers, List<KitSettings> settings,
+        List<Path> classpath, long seed, double seconds, long sampleMillis, boolean trusted, double hangTimeoutSeconds,
+        KitEdits edits) {
 
     /** The default hang timeout, as {@code run}'s. */
     static final double DEFAULT_HANG_TIMEOUT = 5;

@@ -165,7 +165,8 @@ public final class Engine {
      * @param moved told each robot's every move's end, ns, on the thread moving it (robots added so far)
      * @param stretch told the end of each stretch, ns, by the turn holder, once every robot has moved
      */
-    public void watchMoves(java.util.function.ObjLongConsumer<SimRobot> moved, java.util.function.LongConsumer stretch) {
+    public void watchMoves(java.util.function.ObjLongConsumer<SimRobot> moved,
+            java.util.function.LongConsumer stretch) {
         stretchWatch = stretch;
         for (SimRobot r : robots) {
             r.watchMoves(moved);

@@ -21,7 +21,8 @@ public record KitScore(List<Part> parts, double points, double max) {
     }
 
     static KitScore of(org.kheperasim.sim.task.Score s) {
-        return new KitScore(s.parts().stream().map(p -> new Part(p.task(), p.fraction(), p.points(), p.max(), p.detail()))
-                .toList(), s.points(), s.max());
+        return new KitScore(s.parts().stream()
+                .map(p -> new Part(p.task(), p.fraction(), p.points(), p.max(), p.detail())).toList(),
+                s.points(), s.max());
     }
 }

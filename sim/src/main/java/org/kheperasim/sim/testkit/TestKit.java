@@ -180,7 +180,8 @@ public final class TestKit {
      * @throws RuntimeException naming the file when it is too large, not UTF-8 or not a file
      */
     public static String readTrace(Path file, long maxBytes) {
-        return TextFiles.readUtf8(file, maxBytes, "trace", (line, what) -> new TraceFormatException(file.toString(), line, what));
+        return TextFiles.readUtf8(file, maxBytes, "trace",
+                (line, what) -> new TraceFormatException(file.toString(), line, what));
     }
 
     /**

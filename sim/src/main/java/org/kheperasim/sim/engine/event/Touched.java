@@ -18,7 +18,7 @@ public record Touched(Kind kind, int index) {
         LAMP,
         /** Another robot. */
         ROBOT,
-        /** A cap that blocks the robot (the engine flags a cap being pushed aside as no contact). */
+        /** A cap: one that blocks the robot (the engine's flag), or one it pushes aside (its flag shows none). */
         CAP
     }
 

@@ -88,7 +88,8 @@ final class Touches {
     /** @return the side of the robot cap {@code c} lies on */
     Contact sideOfCap(SimRobot robot, int c) {
         CapView cap = world.caps().get(c);
-        double rel = StrictMath.atan2(cap.y() - robot.y(), cap.x() - robot.x()) - StrictMath.toRadians(robot.headingDeg());
+        double rel = StrictMath.atan2(cap.y() - robot.y(), cap.x() - robot.x())
+                - StrictMath.toRadians(robot.headingDeg());
         return Contact.ofAngle(rel);
     }
 
