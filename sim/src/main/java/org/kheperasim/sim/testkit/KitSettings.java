@@ -32,8 +32,10 @@ public final class KitSettings {
     }
 
     /**
-     * @throws IllegalArgumentException naming the setting and its allowed values when either is wrong
+     * @param key a setting's name
+     * @param value its value
      * @return these settings with one changed
+     * @throws IllegalArgumentException naming the setting and its allowed values when either is wrong
      */
     public KitSettings with(String key, String value) {
         return new KitSettings(settings.with(key, value));

@@ -209,7 +209,13 @@ public final class TestKit {
         return new KitTraceDiff(d.header(), d.firstSample(), d.samples());
     }
 
-    /** Write a file at once or not at all (a temporary file, then a rename). */
+    /**
+     * Write a file at once or not at all (a temporary file, then a rename).
+     *
+     * @param file the file
+     * @param text its text
+     * @throws IOException when it cannot be written
+     */
     public static void writeAtomically(Path file, String text) throws IOException {
         AtomicFiles.write(file, text);
     }
