@@ -130,6 +130,39 @@ class EngineEventsTest {
         }
     }
 
+    /** 64 robots, one per 200 mm cell of a walled square, each driving its own arc: a swarm the engine may split. */
+    private static List<EngineEvent> swarm(int threads) {
+        StringBuilder a = new StringBuilder("khepera-arena 1\nname swarm\nsize 1600 1600\n");
+        a.append("wall 0 4 1600 4 8\nwall 0 1596 1600 1596 8\nwall 4 0 4 1600 8\nwall 1596 0 1596 1600 8\n");
+        a.append("region middle 600 600 1000 1000\n");
+        for (int i = 0; i < 64; i++) {
+            a.append("robot ").append(100 + 200 * (i % 8)).append(' ').append(100 + 200 * (i / 8)).append(' ')
+                    .append(45 * (i % 8)).append('\n');
+        }
+        Engine e = new Engine(new World(ArenaFormat.parse(a.toString(), "swarm.arena")), 3);
+        for (Pose p : e.world().arena().robots()) {
+            SimRobot r = e.addRobot("r", p, Settings.defaults());
+            r.onBoard().driveSpeeds(12, 8 + r.id() % 5);
+        }
+        e.threads(threads);
+        List<EngineEvent> events = new ArrayList<>();
+        EngineEvents.watch(e, events::add);
+        try {
+            e.runUntil(10_000 * Engine.TICK_NANOS);
+        } finally {
+            e.close();
+        }
+        return events;
+    }
+
+    @Test
+    void aSwarmMovedOnTwoThreadsHasTheSameEventsInTheSameOrder() {
+        List<EngineEvent> one = swarm(1);
+        assertTrue(one.stream().anyMatch(ContactBegan.class::isInstance), one.size() + " events");
+        assertTrue(one.stream().anyMatch(RegionLeft.class::isInstance), one.size() + " events");
+        assertEquals(one, swarm(2));
+    }
+
     private static List<Long> times(Runs run, Class<? extends EngineEvent> kind) {
         return run.events.stream().filter(kind::isInstance).map(EngineEvent::timeNanos).toList();
     }
