@@ -5,7 +5,7 @@ import java.net.URL;
 import java.nio.file.Path;
 import java.security.CodeSource;
 import java.util.Optional;
-import org.kheperasim.sim.run.ControllerCatalog;
+import org.kheperasim.sim.testkit.TestKit;
 
 /**
  * Where a test's controller class comes from, in the terms of {@code khepera-sim run}: the name to give
@@ -30,7 +30,7 @@ final class ControllerClasses {
      * @return its name and where it was loaded from
      */
     static Found of(Class<?> type) {
-        if (type.getPackageName().equals(ControllerCatalog.BUNDLED_PACKAGE)) {
+        if (type.getPackageName().equals(TestKit.bundledControllerPackage())) {
             return new Found(type.getSimpleName(), Optional.empty());
         }
         CodeSource source = type.getProtectionDomain().getCodeSource();
@@ -51,8 +51,8 @@ final class ControllerClasses {
             throw new IllegalArgumentException("no controller named: give a controller class name, e.g. Run.of(\"MyController\"),"
                     + " or its class, Run.of(MyController.class)");
         }
-        if (!name.contains(".") && ControllerCatalog.bundled().contains(name)
-                || name.startsWith(ControllerCatalog.BUNDLED_PACKAGE + ".")) {
+        if (!name.contains(".") && TestKit.bundledControllers().contains(name)
+                || name.startsWith(TestKit.bundledControllerPackage() + ".")) {
             return new Found(name, Optional.empty());
         }
         String resource = name.replace('.', '/') + ".class";
@@ -60,7 +60,8 @@ final class ControllerClasses {
         URL url = (loader != null ? loader : ControllerClasses.class.getClassLoader()).getResource(resource);
         if (url == null) {
             throw new IllegalArgumentException("no controller class '" + name + "' on the test's classpath, and no bundled"
-                    + " controller of that name (bundled: " + String.join(", ", ControllerCatalog.bundled()) + "); give the"
+                    + " controller of that name (bundled: " + String.join(", ", TestKit.bundledControllers())
+                    + "); give the"
                     + " class's full name with its package, e.g. Run.of(\"mypackage." + name + "\"), or its class:"
                     + " Run.of(" + name.substring(name.lastIndexOf('.') + 1) + ".class)");
         }

@@ -2,7 +2,7 @@ package org.kheperasim.testing;
 
 import java.util.List;
 import java.util.Locale;
-import org.kheperasim.sim.arena.Region;
+import org.kheperasim.sim.testkit.KitRegion;
 
 /**
  * A region that was entered, to say by when: {@code assertThat(run).entered("goal").before(seconds(60))}.
@@ -28,7 +28,7 @@ public final class EntryAssert extends RunAssert {
      */
     public RunAssert before(SimTime deadline) {
         if (!at.isBefore(deadline)) {
-            Region g = run.region(region);
+            KitRegion g = run.region(region);
             Pose then = first.poseAt(deadline);
             throw Failure.of(first.name() + " entered region '" + region + "' too late, at " + at + ".")
                     .expected("to enter region '" + region + "' " + bounds(g) + " before " + deadline)

@@ -8,18 +8,11 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.function.LongFunction;
-import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.arena.ArenaFiles;
-import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.arena.Region;
-import org.kheperasim.sim.arena.Task;
-import org.kheperasim.sim.engine.model.Settings;
-import org.kheperasim.sim.files.TextFiles;
-import org.kheperasim.sim.replay.ReplayFiles;
-import org.kheperasim.sim.run.EditLog;
-import org.kheperasim.sim.run.SettingsFile;
-import org.kheperasim.sim.task.RunFacts;
-import org.kheperasim.sim.trace.TraceFormatException;
+import org.kheperasim.sim.testkit.KitArena;
+import org.kheperasim.sim.testkit.KitEdits;
+import org.kheperasim.sim.testkit.KitRegion;
+import org.kheperasim.sim.testkit.KitSettings;
+import org.kheperasim.sim.testkit.TestKit;
 
 /**
  * Reads a recorded run into a {@link Run}: a trace written by {@code khepera-sim run --trace FILE} (or by a
@@ -48,21 +41,21 @@ final class RecordedRuns {
                     : "no trace file " + path + "; give a trace written by 'khepera-sim run --trace FILE' or a run"
                     + " recording folder");
         }
-        String text = TextFiles.readUtf8(traceFile, MAX_TRACE_BYTES, "trace",
-                (line, what) -> new TraceFormatException(traceFile.toString(), line, what));
+        String text = TestKit.readTrace(traceFile, MAX_TRACE_BYTES);
         TraceSamples samples = TraceSamples.parse(text, traceFile.toString());
         Map<String, String> h = samples.header;
         if (samples.robots.isEmpty()) {
-            throw new TraceFormatException(traceFile.toString(), 0, "the trace has no sample; it ends before its first"
+            throw TestKit.traceError(traceFile.toString(), 0, "the trace has no sample; it ends before its first"
                     + " sample line");
         }
-        Arena arena = arena(path, traceFile, folder, arenaFile, h.get("arena"));
-        EditLog edits = folder && Files.isRegularFile(path.resolve("run.edits")) ? EditLog.load(path.resolve("run.edits")) : null;
-        Settings base = folder && Files.isRegularFile(path.resolve("run.settings"))
-                ? SettingsFile.load(path.resolve("run.settings")) : settings(h.get("settings"));
+        KitArena arena = arena(path, traceFile, folder, arenaFile, h.get("arena"));
+        KitEdits edits = folder && Files.isRegularFile(path.resolve("run.edits"))
+                ? KitEdits.load(path.resolve("run.edits")) : null;
+        KitSettings base = folder && Files.isRegularFile(path.resolve("run.settings"))
+                ? KitSettings.load(path.resolve("run.settings")) : settings(h.get("settings"));
         int n = samples.robots.size();
         List<String> controllers = new ArrayList<>();
-        List<Settings> settings = new ArrayList<>();
+        List<KitSettings> settings = new ArrayList<>();
         for (int i = 0; i < n; i++) {
             String own = h.get("robot-" + i);
             String[] parts = own == null ? null : own.split(" settings ", 2);
@@ -77,20 +70,11 @@ final class RecordedRuns {
         return shape(spec, samples, text, traceFile, edits);
     }
 
-    private static Run shape(RunSpec spec, TraceSamples samples, String text, Path traceFile, EditLog edits) {
-        Arena arena = spec.arena();
-        LongFunction<Arena> arenaAt = t -> {
-            Arena a = arena;
-            if (edits != null) {
-                for (EditLog.Edit e : edits.edits()) {
-                    if (e.timeNanos() <= t) {
-                        a = e.arena();
-                    }
-                }
-            }
-            return a;
-        };
-        ContactFinder finder = new ContactFinder(samples, arenaAt);
+    private static Run shape(RunSpec spec, TraceSamples samples, String text, Path traceFile, KitEdits edits) {
+        KitArena arena = spec.arena();
+        LongFunction<KitArena> arenaAt = t -> edits == null ? arena : edits.arenaAt(arena, t);
+        // A trace has no events: its contacts are those its samples saw (see RecordedContacts).
+        RecordedContacts finder = new RecordedContacts(samples, arenaAt);
         int n = samples.robots.size();
         List<RobotRun> robots = new ArrayList<>();
         Map<String, Double> enteredByAny = new LinkedHashMap<>();
@@ -101,64 +85,62 @@ final class RecordedRuns {
             String simple = cls.substring(cls.lastIndexOf('.') + 1);
             Map<String, SimTime> entered = RunShapes.regionsEntered(s, arena);
             entered.forEach((r, t) -> enteredByAny.merge(r, t.seconds(), StrictMath::min));
-            robots.add(new RobotRun(i, n == 1 ? simple : simple + "#" + i, cls, RunShapes.path(s), finder.contacts(i, null),
+            robots.add(new RobotRun(i, n == 1 ? simple : simple + "#" + i, cls, RunShapes.path(s), finder.contacts(i),
                     entered, unknown, RunShapes.pathLength(s), -1, Double.NaN));
         }
         List<Cap> caps = RunShapes.caps(samples, arena);
         Map<String, Integer> capsIn = new LinkedHashMap<>();
-        for (Region r : arena.regions()) {
+        for (KitRegion r : arena.regions()) {
             capsIn.put(r.name(), (int) caps.stream().filter(c -> c.heldAtEnd() < 0 && r.contains(c.endX(), c.endY())).count());
         }
-        org.kheperasim.sim.task.Score simScore = org.kheperasim.sim.task.Score.of(arena,
-                new RunFacts(spec.seconds(), enteredByAny, 0, capsIn, arena.caps().size()));
-        Score score = withoutCoverage(RunShapes.score(simScore), arena);
+        Score score = withoutCoverage(RunShapes.score(TestKit.score(arena, spec.seconds(), enteredByAny, capsIn)),
+                arena);
         return new Run(spec, traceFile, SimTime.ofSeconds(spec.seconds()), robots, caps, score, text, List.of());
     }
 
     /** A trace does not record the floor a robot covered: its {@code cover} tasks say so rather than score 0 silently. */
-    private static Score withoutCoverage(Score s, Arena arena) {
+    private static Score withoutCoverage(Score s, KitArena arena) {
         List<TaskScore> tasks = new ArrayList<>();
-        List<Task> defined = arena.assignment().tasks();
         for (int i = 0; i < s.tasks().size(); i++) {
             TaskScore t = s.tasks().get(i);
-            tasks.add(defined.get(i) instanceof Task.Cover ? new TaskScore(t.task(), 0, 0, t.max(),
+            tasks.add(arena.isCoverTask(i) ? new TaskScore(t.task(), 0, 0, t.max(),
                     "not known from a trace (the floor covered is not recorded; rerun() the run for it)") : t);
         }
         return new Score(tasks, tasks.stream().mapToDouble(TaskScore::points).sum(), s.max());
     }
 
     /** The recorded arena: given, the recording's start.arena, an arena file beside the trace, or the bundled one it names. */
-    private static Arena arena(Path path, Path traceFile, boolean folder, Path arenaFile, String recorded) {
+    private static KitArena arena(Path path, Path traceFile, boolean folder, Path arenaFile, String recorded) {
         String[] nameAndSha = recorded.split(" sha256=", 2);
         String sha = nameAndSha.length == 2 ? nameAndSha[1] : null;
-        Arena a;
+        KitArena a;
         if (arenaFile != null) {
-            a = ArenaFiles.load(arenaFile);
+            a = TestKit.arenaFile(arenaFile);
         } else if (folder && Files.isRegularFile(path.resolve("start.arena"))) {
-            a = ArenaFormat.load(path.resolve("start.arena"));
+            a = TestKit.arenaFormatFile(path.resolve("start.arena"));
         } else {
-            ReplayFiles.Beside beside = ReplayFiles.arenaBeside(traceFile, nameAndSha[0], sha);
-            if (beside != null) {
-                a = beside.arena();
-            } else if (ArenaFormat.bundledNames().contains(nameAndSha[0])) {
-                a = ArenaFormat.loadBundled(nameAndSha[0]);
+            Optional<KitArena> beside = TestKit.arenaBeside(traceFile, nameAndSha[0], sha);
+            if (beside.isPresent()) {
+                a = beside.get();
+            } else if (TestKit.bundledArenas().contains(nameAndSha[0])) {
+                a = TestKit.bundledArena(nameAndSha[0]);
             } else {
                 throw new IllegalArgumentException("the arena '" + nameAndSha[0] + "' of " + traceFile + " is not bundled"
                         + " and no " + nameAndSha[0] + ".arena or start.arena with its SHA-256 lies beside the trace;"
                         + " give it: Run.load(trace, Path.of(\"" + nameAndSha[0] + ".arena\"))");
             }
         }
-        if (sha != null && !ArenaFormat.sha256(a).equals(sha)) {
+        if (sha != null && !a.sha256().equals(sha)) {
             throw new IllegalArgumentException("the arena " + a.name() + " is not the one " + traceFile + " was recorded in"
-                    + " (its SHA-256 is " + ArenaFormat.sha256(a) + ", the trace names " + sha + "); give the recorded"
+                    + " (its SHA-256 is " + a.sha256() + ", the trace names " + sha + "); give the recorded"
                     + " one: Run.load(trace, arenaFile)");
         }
         return a;
     }
 
     /** @return the settings a trace's header describes: {@code defaults}, or {@code key=value} pairs */
-    static Settings settings(String described) {
-        Settings s = Settings.defaults();
+    static KitSettings settings(String described) {
+        KitSettings s = KitSettings.defaults();
         if (described == null || described.isBlank() || described.equals("defaults")) {
             return s;
         }

@@ -3,8 +3,9 @@ package org.kheperasim.testing;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
-import org.kheperasim.sim.arena.Region;
-import org.kheperasim.sim.trace.TraceDiff;
+import org.kheperasim.sim.testkit.KitRegion;
+import org.kheperasim.sim.testkit.KitTraceDiff;
+import org.kheperasim.sim.testkit.TestKit;
 
 /**
  * A run of the simulator, shaped for a test's assertions: each robot's path, contacts, regions entered
@@ -23,8 +24,8 @@ import org.kheperasim.sim.trace.TraceDiff;
  * assertThat(recorded).replaysIdentically();
  * }</pre>
  * A recorded run has the same shape, less what a trace does not record: how the controllers ended, the
- * simulator's collision count (so contacts between samples) and the floor covered. Regions are checked at
- * every sample of a trace, where a run made here has the simulator's millisecond times.
+ * engine's contact events (its contacts are those its samples saw), the collision count and the floor
+ * covered. Regions are checked at every sample of a trace, where a run made here has the simulator's millisecond times.
  *
  * <p>Immutable, apart from remembering where its trace was saved.
  */
@@ -151,7 +152,7 @@ public final class Run {
      * @throws IllegalArgumentException when the arena has no such region
      */
     public int capsIn(String region) {
-        Region r = region(region);
+        KitRegion r = region(region);
         return (int) caps.stream().filter(c -> c.heldAtEnd() < 0 && r.contains(c.endX(), c.endY())).count();
     }
 
@@ -219,7 +220,7 @@ public final class Run {
     public Rerun rerun() {
         RunSpec again = recordedFrom == null ? spec : Rerun.withClasspath(spec);
         Run made = LiveRuns.run(again);
-        TraceDiff.Result diff = TraceDiff.compare(trace, made.trace);
+        KitTraceDiff diff = TestKit.compareTraces(trace, made.trace);
         return new Rerun(made, diff.header(), Optional.ofNullable(diff.firstSample()), diff.samples());
     }
 
@@ -228,15 +229,15 @@ public final class Run {
     }
 
     /** @return the arena's region of this name */
-    Region region(String name) {
-        for (Region r : spec.arena().regions()) {
+    KitRegion region(String name) {
+        for (KitRegion r : spec.arena().regions()) {
             if (r.name().equals(name)) {
                 return r;
             }
         }
         throw new IllegalArgumentException("the arena " + arena() + " has no region named '" + name + "'; its regions are "
                 + (spec.arena().regions().isEmpty() ? "none" : String.join(", ",
-                spec.arena().regions().stream().map(Region::name).toList())));
+                spec.arena().regions().stream().map(KitRegion::name).toList())));
     }
 
     /** @return e.g. {@code MyController in lab, seed 1, 60.000 s: ended at (380.0, 610.2) mm heading 90.0 deg; score 0/100} */

@@ -8,7 +8,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import java.util.Set;
-import org.kheperasim.sim.arena.Region;
+import org.kheperasim.sim.testkit.KitRegion;
 
 /**
  * Assertions about a run, made by {@link KheperaAssertions#assertThat(Run)} (every robot of the run) or
@@ -94,7 +94,7 @@ public sealed class RunAssert permits EntryAssert {
      * @throws IllegalArgumentException when the arena has no such region
      */
     public EntryAssert entered(String region) {
-        Region g = run.region(region);
+        KitRegion g = run.region(region);
         Optional<RobotRun> first = firstIn(region);
         if (first.isEmpty()) {
             Nearest n = nearest(g, run.duration());
@@ -136,7 +136,7 @@ public sealed class RunAssert permits EntryAssert {
      * @return this, for the next check
      */
     public RunAssert endedIn(String region) {
-        Region g = run.region(region);
+        KitRegion g = run.region(region);
         for (RobotRun r : robots) {
             Pose p = r.finalPose();
             if (!g.contains(p.x(), p.y())) {
@@ -291,7 +291,7 @@ public sealed class RunAssert permits EntryAssert {
     }
 
     /** The robot of this assertion that came nearest the region up to {@code until}, and when. */
-    Nearest nearest(Region g, SimTime until) {
+    Nearest nearest(KitRegion g, SimTime until) {
         Nearest best = null;
         for (RobotRun r : robots) {
             for (PathPoint p : r.path()) {
@@ -307,7 +307,7 @@ public sealed class RunAssert permits EntryAssert {
         return best;
     }
 
-    static String bounds(Region g) {
+    static String bounds(KitRegion g) {
         return String.format(Locale.ROOT, "(x %.1f..%.1f mm, y %.1f..%.1f mm)", g.x1(), g.x2(), g.y1(), g.y2());
     }
 

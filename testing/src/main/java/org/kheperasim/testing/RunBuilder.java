@@ -10,10 +10,9 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
 import java.util.TreeMap;
-import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.engine.model.Settings;
-import org.kheperasim.sim.run.SettingsFile;
+import org.kheperasim.sim.testkit.KitArena;
+import org.kheperasim.sim.testkit.KitSettings;
+import org.kheperasim.sim.testkit.TestKit;
 
 /**
  * Says what to run, then runs it: made by {@link Run#of(Class)} or {@link Run#of(String)}.
@@ -37,10 +36,10 @@ public final class RunBuilder {
     private final Map<Integer, ControllerClasses.Found> robotControllers = new TreeMap<>();
     private final Map<Integer, Map<String, String>> robotSettings = new TreeMap<>();
     private String arenaArg;
-    private Arena arena;
+    private KitArena arena;
     private Double seconds;
     private long seed = 1;
-    private Settings settings = Settings.defaults();
+    private KitSettings settings = KitSettings.defaults();
     private long sampleMillis = 50;
     private boolean trusted;
     private double hangTimeoutSeconds = RunSpec.DEFAULT_HANG_TIMEOUT;
@@ -59,7 +58,7 @@ public final class RunBuilder {
      */
     public RunBuilder in(String arena) {
         Objects.requireNonNull(arena, "arena");
-        this.arena = ArenaFormat.resolve(arena);
+        this.arena = TestKit.arena(arena);
         this.arenaArg = arena;
         return this;
     }
@@ -151,7 +150,7 @@ public final class RunBuilder {
      * @return this
      */
     public RunBuilder settings(Path settingsFile) {
-        this.settings = SettingsFile.load(settingsFile);
+        this.settings = KitSettings.load(settingsFile);
         return this;
     }
 
@@ -186,11 +185,11 @@ public final class RunBuilder {
      * @return this
      */
     public RunBuilder robotSetting(int index, String key, String value) {
-        if (Settings.wholeRun(key)) {
+        if (KitSettings.wholeRun(key)) {
             throw new IllegalArgumentException("robotSetting(" + index + ", \"" + key + "\", ...): " + key + " is one setting"
                     + " for the whole run, not per robot; give it with set(\"" + key + "\", \"" + value + "\")");
         }
-        Settings.defaults().with(key, value);
+        KitSettings.defaults().with(key, value);
         robotSettings.computeIfAbsent(index, i -> new LinkedHashMap<>()).put(key, value);
         return this;
     }
@@ -254,7 +253,7 @@ public final class RunBuilder {
         if (arena == null) {
             throw new IllegalStateException("no arena: say where to run, e.g. .in(\"lab\") or .in(Path.of(\"src/test/resources/my.arena\"))");
         }
-        int n = arena.robots().size();
+        int n = arena.robotCount();
         Set<Integer> given = new LinkedHashSet<>(robotControllers.keySet());
         given.addAll(robotSettings.keySet());
         for (int i : given) {
@@ -264,19 +263,19 @@ public final class RunBuilder {
             }
         }
         List<String> names = new ArrayList<>();
-        List<Settings> each = new ArrayList<>();
+        List<KitSettings> each = new ArrayList<>();
         Set<Path> classpath = new LinkedHashSet<>();
         for (int i = 0; i < n; i++) {
             ControllerClasses.Found c = robotControllers.getOrDefault(i, controller);
             names.add(c.name());
             c.root().ifPresent(classpath::add);
-            Settings s = settings;
+            KitSettings s = settings;
             for (Map.Entry<String, String> e : robotSettings.getOrDefault(i, Map.of()).entrySet()) {
                 s = s.with(e.getKey(), e.getValue());
             }
             each.add(s);
         }
-        double s = seconds != null ? seconds : arena.assignment().secondsOr(600);
+        double s = seconds != null ? seconds : arena.timeLimitOr(600);
         return new RunSpec(arenaArg, arena, names, each, new ArrayList<>(classpath), seed, s, sampleMillis, trusted,
                 hangTimeoutSeconds, null);
     }

@@ -9,10 +9,8 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
-import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.files.AtomicFiles;
-import org.kheperasim.sim.web.RunOutcome;
-import org.kheperasim.sim.web.RunPage;
+import org.kheperasim.sim.testkit.KitFailure;
+import org.kheperasim.sim.testkit.TestKit;
 
 /**
  * Writes a run's files for a person to look at: the trace, the arena beside it (so that the window's
@@ -44,12 +42,12 @@ final class RunFiles {
         String name = trace.getFileName().toString().replaceFirst("\\.trace$", "");
         try {
             Files.createDirectories(folder);
-            AtomicFiles.write(trace, run.trace());
-            ArenaFormat.save(run.spec().arena(), folder.resolve(run.arena() + ArenaFormat.EXTENSION));
+            TestKit.writeAtomically(trace, run.trace());
+            TestKit.saveArena(run.spec().arena(), folder);
             run.saved(trace);
             // The run as a web page beside the trace, to watch in a browser (no simulator needed).
-            RunPage.write(trace, run.spec().arena(), outcome(run), page(trace));
-            AtomicFiles.write(folder.resolve(name + ".txt"), about(run, trace));
+            TestKit.writeRunPage(trace, run.spec().arena(), run.toString(), failures(run), page(trace));
+            TestKit.writeAtomically(folder.resolve(name + ".txt"), about(run, trace));
         } catch (IOException e) {
             throw new UncheckedIOException("cannot write the run's files in " + folder.toAbsolutePath() + ": " + e.getMessage(), e);
         }
@@ -61,17 +59,17 @@ final class RunFiles {
         return trace.resolveSibling(trace.getFileName().toString().replaceFirst("\\.trace$", "") + ".html");
     }
 
-    /** What the page shows beyond the samples: its heading and how each controller that failed ended. */
-    private static RunOutcome outcome(Run run) {
-        List<RunOutcome.Failure> failures = new ArrayList<>();
+    /** What the page shows beyond the samples and its heading: how each controller that failed ended. */
+    private static List<KitFailure> failures(Run run) {
+        List<KitFailure> failures = new ArrayList<>();
         for (int i = 0; i < run.robots().size(); i++) {
             Ending e = run.robots().get(i).ending();
             if (!e.normal() && e.kind() != Ending.Kind.NOT_RECORDED) {
-                failures.add(new RunOutcome.Failure(i, e.at().map(SimTime::seconds).orElse(Double.NaN),
+                failures.add(new KitFailure(i, e.at().map(SimTime::seconds).orElse(Double.NaN),
                         e.kind().name().toLowerCase(Locale.ROOT).replace('_', ' '), e.toString()));
             }
         }
-        return new RunOutcome(run.toString(), failures, null);
+        return failures;
     }
 
     /** The text beside a trace: what the run was, how to watch it and make it again, and its console. */

@@ -7,11 +7,10 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.SortedMap;
-import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.engine.model.Settings;
-import org.kheperasim.sim.host.HostOptions;
-import org.kheperasim.sim.run.EditLog;
-import org.kheperasim.sim.run.Simulation;
+import org.kheperasim.sim.testkit.KitArena;
+import org.kheperasim.sim.testkit.KitEdits;
+import org.kheperasim.sim.testkit.KitRunSpec;
+import org.kheperasim.sim.testkit.KitSettings;
 
 /**
  * Everything that decides a run, as {@code khepera-sim run}'s options do: the arena, each robot's
@@ -30,8 +29,9 @@ import org.kheperasim.sim.run.Simulation;
  * @param hangTimeoutSeconds real seconds without an API call after which a controller counts as hung
  * @param edits a window's arena edits with their times, or null
  */
-record RunSpec(String arenaArg, Arena arena, List<String> controllers, List<Settings> settings, List<Path> classpath,
-        long seed, double seconds, long sampleMillis, boolean trusted, double hangTimeoutSeconds, EditLog edits) {
+record RunSpec(String arenaArg, KitArena arena, List<String> controllers, List<KitSettings> settings,
+        List<Path> classpath, long seed, double seconds, long sampleMillis, boolean trusted, double hangTimeoutSeconds,
+        KitEdits edits) {
 
     /** The default hang timeout, as {@code run}'s. */
     static final double DEFAULT_HANG_TIMEOUT = 5;
@@ -40,33 +40,16 @@ record RunSpec(String arenaArg, Arena arena, List<String> controllers, List<Sett
         controllers = List.copyOf(controllers);
         settings = List.copyOf(settings);
         classpath = List.copyOf(classpath);
-        if (controllers.size() != arena.robots().size() || settings.size() != controllers.size()) {
-            throw new IllegalArgumentException("the arena " + arena.name() + " has " + arena.robots().size()
+        if (controllers.size() != arena.robotCount() || settings.size() != controllers.size()) {
+            throw new IllegalArgumentException("the arena " + arena.name() + " has " + arena.robotCount()
                     + " robots, but " + controllers.size() + " controllers were given");
         }
     }
 
-    /**
-     * @param trace where the trace goes
-     * @param capture what else the run tells
-     * @return the simulator's builder for this run
-     */
-    Simulation.Builder simulation(java.io.Writer trace, RunCapture capture) {
-        Simulation.Builder b = Simulation.builder().arena(arena).controller(controllers.get(0)).classpath(classpath)
-                .seed(seed).seconds(seconds).settings(settings.get(0)).sampleMillis(sampleMillis).trusted(trusted)
-                .hostOptions(HostOptions.defaults().withHangTimeout((long) (hangTimeoutSeconds * 1e9)))
-                .trace(trace).listener(capture, sampleMillis).console(capture);
-        for (int i = 1; i < controllers.size(); i++) {
-            boolean ownController = !controllers.get(i).equals(controllers.get(0));
-            boolean ownSettings = !settings.get(i).equals(settings.get(0));
-            if (ownController || ownSettings) {
-                b.robot(i, ownController ? controllers.get(i) : null, ownSettings ? settings.get(i) : null);
-            }
-        }
-        if (edits != null) {
-            b.edits(edits);
-        }
-        return b;
+    /** @return this run as the simulator's test kit takes it */
+    KitRunSpec kit() {
+        return new KitRunSpec(arena, controllers, settings, classpath, seed, seconds, sampleMillis, trusted,
+                hangTimeoutSeconds, edits);
     }
 
     /** @return the {@code khepera-sim run} command line that makes the same run (add {@code --trace FILE} for its trace) */

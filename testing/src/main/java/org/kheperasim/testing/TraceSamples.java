@@ -4,7 +4,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Map;
-import org.kheperasim.sim.trace.TraceReader;
+import org.kheperasim.sim.testkit.TestKit;
 
 /**
  * The samples of a trace that a test asks about: each robot's pose and contact side at every sample,
@@ -68,10 +68,10 @@ final class TraceSamples {
      * @param text a trace
      * @param source how errors name it (the file)
      * @return its samples
-     * @throws org.kheperasim.sim.trace.TraceFormatException naming {@code source:line}
+     * @throws RuntimeException (the simulator's trace format error) naming {@code source:line}
      */
     static TraceSamples parse(String text, String source) {
-        TraceSamples s = new TraceSamples(TraceReader.parse(text, source).header());
+        TraceSamples s = new TraceSamples(TestKit.traceHeader(text, source));
         int pos = 0;
         int end = text.length();
         while (pos < end) {

@@ -54,7 +54,19 @@ class RecordedRunTest {
             RobotRun b = recorded.robot(i);
             assertEquals(a.name(), b.name());
             assertEquals(a.path(), b.path());
-            assertEquals(a.contacts().stream().filter(c -> !c.betweenSamples()).toList(), b.contacts(), "robot " + i);
+            // Live contacts are the engine's events, at their ticks; a trace has only its samples: each contact a
+            // sample saw is recorded from the first sample at or after its tick, to the last sample before its end.
+            List<Contact> seen = a.contacts().stream().filter(c -> !c.betweenSamples()).toList();
+            assertEquals(seen.size(), b.contacts().size(), "robot " + i + ": " + seen + " / " + b.contacts());
+            for (int k = 0; k < seen.size(); k++) {
+                Contact exact = seen.get(k);
+                Contact sampled = b.contacts().get(k);
+                assertEquals(exact.what(), sampled.what(), exact + " / " + sampled);
+                assertFalse(sampled.from().isBefore(exact.from()), exact + " / " + sampled);
+                assertTrue(sampled.from().nanos() - exact.from().nanos() < 50_000_000L, exact + " / " + sampled);
+                assertFalse(sampled.to().isAfter(exact.to()), exact + " / " + sampled);
+                assertTrue(exact.to().nanos() - sampled.to().nanos() < 50_000_000L, exact + " / " + sampled);
+            }
             assertEquals(a.regionsEntered().keySet(), b.regionsEntered().keySet());
             a.regionsEntered().forEach((name, t) ->
                     assertEquals(t.seconds(), b.regionsEntered().get(name).seconds(), 0.05, "a sample within 50 ms"));

@@ -55,6 +55,8 @@ public final class Engine {
     private boolean wakesTold;
     /** Splits each stop's per-robot work over two threads (a large swarm), or null: the turn holder does it all. */
     private SplitWork split;
+    /** Told the time each stretch of moves ended at, ns, after every robot moved (see {@link #watchMoves}), or null. */
+    private java.util.function.LongConsumer stretchWatch;
 
     private record Subscription(SnapshotListener listener, long periodTicks) {
     }
@@ -163,6 +165,20 @@ public final class Engine {
         this.recorder = recorder;
         for (SimRobot r : robots) {
             r.record(recorder);
+        }
+    }
+
+    /**
+     * Watch every move, without changing any: the engine's events ({@code engine.event.EngineEvents}).
+     *
+     * @param moved told each robot's every move's end, ns, on the thread moving it (robots added so far)
+     * @param stretch told the end of each stretch, ns, by the turn holder, once every robot has moved
+     */
+    public void watchMoves(java.util.function.ObjLongConsumer<SimRobot> moved,
+            java.util.function.LongConsumer stretch) {
+        stretchWatch = stretch;
+        for (SimRobot r : robots) {
+            r.watchMoves(moved);
         }
     }
 
@@ -290,6 +306,9 @@ public final class Engine {
             }
             long n = quietTicks();
             motion.move(tick, n);
+            if (stretchWatch != null) {
+                stretchWatch.accept((tick + n) * TICK_NANOS);
+            }
             tick += n;
             inTick = false;
         }

@@ -76,6 +76,8 @@ public final class SimRobot {
     private org.kheperasim.api.Parameters parameters = org.kheperasim.api.Parameters.NONE;
     /** Hears the commands and emergency stops (a command log), or null. */
     private DriverRecorder recorder;
+    /** Told the end of every move, ns (the engine's events, {@code engine.event}), or null: none. */
+    private java.util.function.ObjLongConsumer<SimRobot> moveWatch;
 
     /**
      * @param id the robot's index in the engine
@@ -323,6 +325,19 @@ public final class SimRobot {
         movedTo = endNanos;
         gripper.moved(endNanos);
         coverage.regionsAt(body.x(), body.y(), endNanos);
+        if (moveWatch != null) {
+            moveWatch.accept(this, endNanos);
+        }
+    }
+
+    /** @param watch told the end of this robot's every move, ns, on the thread that moves it; null: none */
+    public void watchMoves(java.util.function.ObjLongConsumer<SimRobot> watch) {
+        this.moveWatch = watch;
+    }
+
+    /** @return the point the body touches, {x, y} mm (the last one; meaningful while {@link #contact} is not NONE) */
+    public double[] touchPoint() {
+        return body.touchPoint();
     }
 
     private static long ceilTick(long nanos) {

@@ -61,6 +61,7 @@ public final class Simulation {
         private ConsoleSink console = line -> { };
         private HostOptions hostOptions = HostOptions.defaults();
         private final List<Subscription> listeners = new ArrayList<>();
+        private final List<org.kheperasim.sim.engine.event.EngineEventListener> events = new ArrayList<>();
         private boolean trusted;
         private EditLog edits = new EditLog();
         private BooleanSupplier stop = () -> false;
@@ -225,6 +226,16 @@ public final class Simulation {
         }
 
         /**
+         * @param listener also hears the run's contacts and region entries, at their ticks, in their order
+         *     (see {@link org.kheperasim.sim.engine.event.EngineEvents}); it changes nothing of the run
+         * @return this
+         */
+        public Builder events(org.kheperasim.sim.engine.event.EngineEventListener listener) {
+            this.events.add(Objects.requireNonNull(listener));
+            return this;
+        }
+
+        /**
          * @param edits arena edits to apply at their simulated times, as recorded by a run in the
          *     window ({@link RunSession#edits()}); the run then replays that run exactly. Every edit must
          *     fall within the run ({@link EditLog#checkWithin}), else {@link #run()} refuses it.
@@ -332,6 +343,10 @@ public final class Simulation {
                 console, b.hostOptions, b.recorder);
         for (Subscription l : b.listeners) {
             session.addListener(l.listener(), l.periodNanos());
+        }
+        if (!b.events.isEmpty()) {
+            List<org.kheperasim.sim.engine.event.EngineEventListener> all = List.copyOf(b.events);
+            org.kheperasim.sim.engine.event.EngineEvents.watch(session.engine(), e -> all.forEach(l -> l.onEvent(e)));
         }
         try {
             if (b.tracePath != null || b.traceWriter != null) {

@@ -9,7 +9,7 @@ import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
 import javax.swing.SwingUtilities;
 import org.kheperasim.sim.cli.Main;
-import org.kheperasim.sim.engine.Snapshot;
+import org.kheperasim.sim.engine.view.Snapshot;
 
 /**
  * Runs in a child JVM under Xvfb (see {@link GuiRobotFileTest}): {@code gui --robot-file epuck} on an

@@ -397,6 +397,10 @@ public final class DriveBody {
         return blocked;
     }
 
+    public double[] touchPoint() {
+        return new double[] {touchX, touchY};
+    }
+
     public int collisions() {
         return collisions;
     }

@@ -3,39 +3,38 @@ package org.kheperasim.testing;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.function.LongFunction;
-import org.kheperasim.sim.arena.Arena;
-import org.kheperasim.sim.arena.Light;
-import org.kheperasim.sim.arena.Wall;
+import org.kheperasim.sim.testkit.KitArena;
+import org.kheperasim.sim.testkit.TestKit;
 
 /**
- * A robot's contacts over a run, from its samples: a stretch of samples that saw it touching becomes one
- * {@link Contact}, and a rise of the simulator's collision count between two samples that saw nothing
- * becomes one seen between them. What was touched is the thing nearest the robot's body at the sample
- * (the simulator reports only the side): walls (and the arena's edge), lamps, other robots and caps.
+ * A recorded run's contacts, worked out from its trace's samples, for recordings only: a trace has no
+ * events (its format stays as it is, so that golden traces stay byte for byte), so a live run's contacts
+ * come from the engine's events instead ({@link LiveRuns}). A stretch of samples that saw the robot
+ * touching becomes one {@link Contact}; what was touched is the thing nearest the robot's body at the
+ * sample (a trace records only the side): walls (and the arena's edge), lamps, other robots and caps. A
+ * bump that begins and ends between two samples is not seen.
  */
-final class ContactFinder {
+final class RecordedContacts {
     /** How near counts as touching: the simulator's own margin (0.5 mm), and the trace's rounding. */
     private static final double TOUCH_MM = 0.501;
 
     private final TraceSamples samples;
-    private final LongFunction<Arena> arenaAt;
+    private final LongFunction<KitArena> arenaAt;
 
     /**
      * @param samples the run's samples
      * @param arenaAt the arena as it was at a simulated time, ns (a window's run may have been edited)
      */
-    ContactFinder(TraceSamples samples, LongFunction<Arena> arenaAt) {
+    RecordedContacts(TraceSamples samples, LongFunction<KitArena> arenaAt) {
         this.samples = samples;
         this.arenaAt = arenaAt;
     }
 
     /**
      * @param robot the robot's index
-     * @param collisions the simulator's collision count at each of the robot's samples, or null when not
-     *     known (a recorded trace)
-     * @return its contacts, in time order
+     * @return its contacts that the samples saw, in time order
      */
-    List<Contact> contacts(int robot, int[] collisions) {
+    List<Contact> contacts(int robot) {
         TraceSamples.Series s = samples.robots.get(robot);
         List<Contact> out = new ArrayList<>();
         Contact open = null;
@@ -43,7 +42,7 @@ final class ContactFinder {
             String side = s.contact[k];
             Obstacle what = null;
             if (!side.equals("NONE")) {
-                what = nearest(robot, k, k);
+                what = nearest(robot, k);
             } else {
                 // The simulator flags a cap only when it blocks the robot; one being pushed touches it too.
                 side = capTouching(robot, k);
@@ -59,14 +58,7 @@ final class ContactFinder {
                 continue;
             }
             add(out, open);
-            boolean wasTouching = open != null;
             open = null;
-            // A move stopped since the last sample, with no contact seen at either: a bump between them.
-            if (k > 0 && !wasTouching && collisions != null && collisions[k] >= 0 && collisions[k - 1] >= 0
-                    && collisions[k] > collisions[k - 1]) {
-                out.add(new Contact(new SimTime(s.nanos[k - 1]), new SimTime(s.nanos[k]), nearest(robot, k - 1, k), "UNSEEN",
-                        s.x[k - 1], s.y[k - 1], true));
-            }
         }
         add(out, open);
         return out;
@@ -84,25 +76,22 @@ final class ContactFinder {
      */
     private String capTouching(int robot, int k) {
         TraceSamples.Series s = samples.robots.get(robot);
-        Arena a = arenaAt.apply(s.nanos[k]);
-        for (int c = 0; c < samples.caps.size() && c < a.caps().size(); c++) {
+        KitArena a = arenaAt.apply(s.nanos[k]);
+        for (int c = 0; c < samples.caps.size() && c < a.capCount(); c++) {
             TraceSamples.CapState cap = samples.capAt(c, s.nanos[k]);
-            double gap = StrictMath.hypot(s.x[k] - cap.x(), s.y[k] - cap.y()) - a.caps().get(c).radius() - radius(a, robot);
+            double gap = StrictMath.hypot(s.x[k] - cap.x(), s.y[k] - cap.y()) - a.capRadius(c) - a.robotRadius(robot);
             if (cap.heldBy() != robot && gap <= TOUCH_MM) {
                 double rel = StrictMath.atan2(cap.y() - s.y[k], cap.x() - s.x[k]) - StrictMath.toRadians(s.heading[k]);
-                return org.kheperasim.sim.engine.view.Contact.ofAngle(rel).name();
+                return TestKit.sideOf(rel);
             }
         }
         return null;
     }
 
-    /** What lies nearest the robot's body at either of two samples. */
-    private Obstacle nearest(int robot, int k1, int k2) {
+    /** What lies nearest the robot's body at sample {@code k}. */
+    private Obstacle nearest(int robot, int k) {
         Nearest n = new Nearest();
-        measure(robot, k1, n);
-        if (k2 != k1) {
-            measure(robot, k2, n);
-        }
+        measure(robot, k, n);
         return n.what;
     }
 
@@ -124,26 +113,26 @@ final class ContactFinder {
         double x = s.x[k];
         double y = s.y[k];
         long t = s.nanos[k];
-        Arena a = arenaAt.apply(t);
-        double R = radius(a, robot);
+        KitArena a = arenaAt.apply(t);
+        double R = a.robotRadius(robot);
         n.offer(StrictMath.min(StrictMath.min(x, a.width() - x), StrictMath.min(y, a.height() - y)) - R, Obstacle.WALL);
-        for (Wall w : a.walls()) {
+        for (KitArena.Wall w : a.walls()) {
             n.offer(segmentDistance(x, y, w.x1(), w.y1(), w.x2(), w.y2()) - w.thickness() / 2 - R, Obstacle.WALL);
         }
-        for (Light l : a.lights()) {
+        for (KitArena.Lamp l : a.lamps()) {
             n.offer(StrictMath.hypot(x - l.x(), y - l.y()) - l.radius() - R, Obstacle.LAMP);
         }
         for (int j = 0; j < samples.robots.size(); j++) {
             TraceSamples.Series o = samples.robots.get(j);
             int i = o.indexAt(t);
             if (j != robot && i >= 0) {
-                n.offer(StrictMath.hypot(x - o.x[i], y - o.y[i]) - (R + radius(a, j)), Obstacle.ROBOT);
+                n.offer(StrictMath.hypot(x - o.x[i], y - o.y[i]) - (R + a.robotRadius(j)), Obstacle.ROBOT);
             }
         }
-        for (int c = 0; c < samples.caps.size() && c < a.caps().size(); c++) {
+        for (int c = 0; c < samples.caps.size() && c < a.capCount(); c++) {
             TraceSamples.CapState cap = samples.capAt(c, t);
             if (cap.heldBy() != robot) {
-                n.offer(StrictMath.hypot(x - cap.x(), y - cap.y()) - a.caps().get(c).radius() - R, Obstacle.CAP);
+                n.offer(StrictMath.hypot(x - cap.x(), y - cap.y()) - a.capRadius(c) - R, Obstacle.CAP);
             }
         }
     }
@@ -156,10 +145,5 @@ final class ContactFinder {
         double u = len2 == 0 ? 0 : ((px - x1) * dx + (py - y1) * dy) / len2;
         u = StrictMath.max(0, StrictMath.min(1, u));
         return StrictMath.hypot(px - (x1 + u * dx), py - (y1 + u * dy));
-    }
-
-    /** @return robot {@code i}'s body radius in arena {@code a} (its type's), mm */
-    private static double radius(Arena a, int i) {
-        return a.robotType(i < a.robots().size() ? i : 0).body().radiusMm();
     }
 }
