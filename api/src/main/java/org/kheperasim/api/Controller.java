@@ -26,7 +26,8 @@ public abstract class Controller extends Thread {
 
     /** For subclasses with no constructor: the backend that creates the controller binds it. */
     protected Controller() {
-        this(ControllerBinding.current().state(), ControllerBinding.current().messages());
+        this((CurrentRobotState) ControllerBinding.current().state(),
+                (MessagePasser) ControllerBinding.current().messages());
     }
 
     /**
@@ -231,6 +232,6 @@ public abstract class Controller extends Thread {
      *     unless the run was given some ({@code khepera-sim evaluate}'s jobs, {@code Simulation.builder().parameters(...)})
      */
     protected final Parameters parameters() {
-        return org.kheperasim.api.spi.RobotPorts.of(robot).parameters();
+        return robot.parameters();
     }
 }

@@ -1,5 +1,6 @@
 package org.kheperasim.api;
 
+import org.kheperasim.api.spi.Mount;
 import org.kheperasim.api.spi.RobotPort;
 import org.kheperasim.api.spi.RobotPorts;
 
@@ -10,8 +11,8 @@ import org.kheperasim.api.spi.RobotPorts;
  */
 public final class CurrentRobotState {
     static {
-        // Backends' controller styles (api.spi) reach the port through RobotPorts; students do not see it.
-        RobotPorts.install(CurrentRobotState::port);
+        // Backends' controller styles (api.binding) reach the port through RobotPorts; students do not see it.
+        RobotPorts.install(CurrentRobotState.class, CurrentRobotState::port);
     }
 
     private final Sensor[] sensors;
@@ -25,7 +26,8 @@ public final class CurrentRobotState {
         this.port = port;
         sensors = new Sensor[port.sensorCount()];
         for (int i = 0; i < sensors.length; i++) {
-            sensors[i] = new Sensor(port, port.mount(i));
+            Mount m = port.mount(i);
+            sensors[i] = new Sensor(port, new SensorMount(i, m.name(), m.xMm(), m.yMm(), m.headingDeg()));
         }
         motor = new Motor(port);
         gripper = new Gripper(port);
@@ -85,6 +87,11 @@ public final class CurrentRobotState {
     }
 
     /** The backend behind this view, for {@link Controller}'s helpers. */
+    /** @return the numbers the run hands the controller (see {@link Controller#parameters()}) */
+    Parameters parameters() {
+        return Parameters.of(port.parameters());
+    }
+
     RobotPort port() {
         return port;
     }

@@ -18,22 +18,22 @@ public final class Gripper {
 
     /** Start raising the arm. */
     public void raiseArm() {
-        port.setArm(ArmPosition.UP);
+        port.setArmDown(false);
     }
 
     /** Start lowering the arm to the floor. */
     public void lowerArm() {
-        port.setArm(ArmPosition.DOWN);
+        port.setArmDown(true);
     }
 
     /** @param position where the arm should go */
     public void setArmPosition(ArmPosition position) {
-        port.setArm(position);
+        port.setArmDown(position == ArmPosition.DOWN);
     }
 
     /** @return where the arm last came to rest (while moving, the position it left) */
     public ArmPosition getArmPosition() {
-        return port.armPosition();
+        return port.armDown() ? ArmPosition.DOWN : ArmPosition.UP;
     }
 
     /** @return true while the arm is travelling */
@@ -43,17 +43,17 @@ public final class Gripper {
 
     /** Open the fingers (drops what they hold). */
     public void openGripper() {
-        port.setFingers(GripperState.OPEN);
+        port.setFingersClosed(false);
     }
 
     /** Close the fingers (grabs what is between them). */
     public void closeGripper() {
-        port.setFingers(GripperState.CLOSED);
+        port.setFingersClosed(true);
     }
 
     /** @return whether the fingers are open or closed */
     public GripperState getGripperState() {
-        return port.fingers();
+        return port.fingersClosed() ? GripperState.CLOSED : GripperState.OPEN;
     }
 
     /** @return true when something breaks the optical barrier between the fingers */

@@ -30,7 +30,8 @@ public abstract class StepController {
 
     /** For subclasses with no constructor: the backend that creates the controller binds it. */
     protected StepController() {
-        this(ControllerBinding.current().state(), ControllerBinding.current().messages());
+        this((CurrentRobotState) ControllerBinding.current().state(),
+                (MessagePasser) ControllerBinding.current().messages());
     }
 
     /**
@@ -153,6 +154,6 @@ public abstract class StepController {
      *     unless the run was given some ({@code khepera-sim evaluate}'s jobs, {@code Simulation.builder().parameters(...)})
      */
     protected final Parameters parameters() {
-        return org.kheperasim.api.spi.RobotPorts.of(robot).parameters();
+        return robot.parameters();
     }
 }

@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import org.junit.jupiter.api.Test;
+import org.kheperasim.api.spi.Mount;
 import org.kheperasim.api.spi.RobotPort;
 
 /** The student API follows the robot: its sensors (count, names, mounts) and its speed units. */
@@ -17,7 +18,7 @@ class RobotShapeTest {
 
         @Override public String robotName() { return "tri"; }
         @Override public int sensorCount() { return 3; }
-        @Override public SensorMount mount(int i) { return new SensorMount(i, "s" + i, 20, 10 - 10 * i, 45 - 45 * i); }
+        @Override public Mount mount(int i) { return new Mount("s" + i, 20, 10 - 10 * i, 45 - 45 * i); }
         @Override public int maxSpeed() { return 1000; }
         @Override public double mmPerSecondPerUnit() { return 0.1288; }
         @Override public int proximity(int index) { return 100 + index; }
@@ -28,11 +29,11 @@ class RobotShapeTest {
         @Override public int leftPosition() { return 0; }
         @Override public int rightPosition() { return 0; }
         @Override public void setPositions(int l, int r) { }
-        @Override public void setArm(ArmPosition position) { }
-        @Override public ArmPosition armPosition() { return ArmPosition.UP; }
+        @Override public void setArmDown(boolean down) { }
+        @Override public boolean armDown() { return false; }
         @Override public boolean armMoving() { return false; }
-        @Override public void setFingers(GripperState state) { }
-        @Override public GripperState fingers() { return GripperState.OPEN; }
+        @Override public void setFingersClosed(boolean closed) { }
+        @Override public boolean fingersClosed() { return false; }
         @Override public boolean objectPresent() { return false; }
         @Override public int resistivity() { return 0; }
         @Override public void sleep(long millis) { }
@@ -76,7 +77,10 @@ class RobotShapeTest {
         RobotPort khepera = new TriPort() {
             @Override public String robotName() { return "khepera1"; }
             @Override public int sensorCount() { return IrSensor.COUNT; }
-            @Override public SensorMount mount(int i) { return SensorMount.of(IrSensor.of(i)); }
+            @Override public Mount mount(int i) {
+                IrSensor s = IrSensor.of(i);
+                return new Mount(s.name(), s.xMm(), s.yMm(), s.headingDeg());
+            }
             @Override public int maxSpeed() { return Motor.MAX_SPEED; }
             @Override public double mmPerSecondPerUnit() { return 8; }
         };

@@ -1,7 +1,5 @@
 package edu.wsu.KheperaSimulator;
 
-import org.kheperasim.api.ArmPosition;
-import org.kheperasim.api.GripperState;
 import org.kheperasim.api.spi.RobotPort;
 
 /**
@@ -174,29 +172,29 @@ public class CurrentRobotState {
     /** @param state {@link KSGripperStates#ARM_UP} or {@link KSGripperStates#ARM_DOWN}; others ignored */
     void arm(int state) {
         if (state == KSGripperStates.ARM_UP) {
-            connected().setArm(ArmPosition.UP);
+            connected().setArmDown(false);
         } else if (state == KSGripperStates.ARM_DOWN) {
-            connected().setArm(ArmPosition.DOWN);
+            connected().setArmDown(true);
         }
     }
 
     /** @return where the arm last came to rest (while it travels, where it left) */
     int arm() {
-        return connected().armPosition() == ArmPosition.DOWN ? KSGripperStates.ARM_DOWN : KSGripperStates.ARM_UP;
+        return connected().armDown() ? KSGripperStates.ARM_DOWN : KSGripperStates.ARM_UP;
     }
 
     /** @param state {@link KSGripperStates#GRIP_OPEN} or {@link KSGripperStates#GRIP_CLOSED}; others ignored */
     void gripper(int state) {
         if (state == KSGripperStates.GRIP_OPEN) {
-            connected().setFingers(GripperState.OPEN);
+            connected().setFingersClosed(false);
         } else if (state == KSGripperStates.GRIP_CLOSED) {
-            connected().setFingers(GripperState.CLOSED);
+            connected().setFingersClosed(true);
         }
     }
 
     /** @return the fingers' state */
     int gripper() {
-        return connected().fingers() == GripperState.CLOSED ? KSGripperStates.GRIP_CLOSED : KSGripperStates.GRIP_OPEN;
+        return connected().fingersClosed() ? KSGripperStates.GRIP_CLOSED : KSGripperStates.GRIP_OPEN;
     }
 
     /** @return whether something breaks the light barrier between the fingers */
@@ -207,7 +205,7 @@ public class CurrentRobotState {
     /** @return whether the fingers are closed on something (closed, and the barrier broken) */
     boolean objectHeld() {
         RobotPort p = connected();
-        return p.fingers() == GripperState.CLOSED && p.objectPresent();
+        return p.fingersClosed() && p.objectPresent();
     }
 
     /** @return resistivity of what the fingers hold, 0..255 */

@@ -5,14 +5,14 @@ import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Modifier;
 import org.kheperasim.api.MessagePasser;
 import org.kheperasim.api.spi.ControllerException;
-import org.kheperasim.api.spi.ControllerStyle;
+import org.kheperasim.api.binding.ControllerStyle;
 import org.kheperasim.api.spi.RobotPort;
 
 /**
  * Lets every backend run a controller written for the WSU Khepera Simulator: a subclass of
  * {@link RobotController} with a constructor without parameters. Registered in
- * {@code META-INF/services/org.kheperasim.api.spi.ControllerStyle}, so
- * {@code org.kheperasim.api.spi.Controllers} finds it; nothing else calls it.
+ * {@code META-INF/services/org.kheperasim.api.binding.ControllerStyle}, so
+ * {@code org.kheperasim.api.binding.Controllers} finds it; nothing else calls it.
  *
  * <p>Creating a controller does what the original did: construct it, then
  * {@code initialize(simpleName, state, 20)}. The thread returned calls its {@code simStart()} and runs
@@ -62,9 +62,9 @@ public final class WsuControllerStyle implements ControllerStyle {
         try {
             controller = (RobotController) noArgConstructor(type).newInstance();
         } catch (InvocationTargetException e) {
-            throw org.kheperasim.api.spi.Controllers.constructorThrew(type, e.getCause());
+            throw org.kheperasim.api.binding.Controllers.constructorThrew(type, e.getCause());
         } catch (ExceptionInInitializerError e) {
-            throw org.kheperasim.api.spi.Controllers.initializerThrew(type, e);
+            throw org.kheperasim.api.binding.Controllers.initializerThrew(type, e);
         } catch (ReflectiveOperationException e) {
             throw new ControllerException("Controller " + type.getName() + " could not be created: " + e
                     + "; make the class and its constructor public", e);

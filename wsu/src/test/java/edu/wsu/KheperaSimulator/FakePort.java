@@ -5,6 +5,8 @@ import java.util.Collections;
 import java.util.List;
 import org.kheperasim.api.ArmPosition;
 import org.kheperasim.api.GripperState;
+import org.kheperasim.api.IrSensor;
+import org.kheperasim.api.spi.Mount;
 import org.kheperasim.api.spi.RobotPort;
 
 /** A robot that lives in the tests: it records what it is told and answers what it is set to. */
@@ -75,13 +77,13 @@ class FakePort implements RobotPort {
     }
 
     @Override
-    public void setArm(ArmPosition position) {
-        arm = position;
+    public void setArmDown(boolean down) {
+        arm = down ? ArmPosition.DOWN : ArmPosition.UP;
     }
 
     @Override
-    public ArmPosition armPosition() {
-        return arm;
+    public boolean armDown() {
+        return arm == ArmPosition.DOWN;
     }
 
     @Override
@@ -90,13 +92,13 @@ class FakePort implements RobotPort {
     }
 
     @Override
-    public void setFingers(GripperState state) {
-        fingers = state;
+    public void setFingersClosed(boolean closed) {
+        fingers = closed ? GripperState.CLOSED : GripperState.OPEN;
     }
 
     @Override
-    public GripperState fingers() {
-        return fingers;
+    public boolean fingersClosed() {
+        return fingers == GripperState.CLOSED;
     }
 
     @Override
@@ -162,5 +164,12 @@ class FakePort implements RobotPort {
         synchronized (speeds) {
             return speeds.isEmpty() ? "" : speeds.get(speeds.size() - 1);
         }
+    }
+
+    /** @return the Khepera's sensor poses (the student API's {@code IrSensor}) */
+    @Override
+    public Mount mount(int index) {
+        IrSensor s = IrSensor.of(index);
+        return new Mount(s.name(), s.xMm(), s.yMm(), s.headingDeg());
     }
 }

@@ -8,7 +8,7 @@ import org.junit.jupiter.api.Test;
 import org.kheperasim.api.CurrentRobotState;
 import org.kheperasim.api.MessagePasser;
 import org.kheperasim.api.spi.ControllerException;
-import org.kheperasim.api.spi.Controllers;
+import org.kheperasim.api.binding.Controllers;
 
 /** Which classes the backends accept as WSU controllers, and what they say about the others. */
 class WsuControllerCheckTest {

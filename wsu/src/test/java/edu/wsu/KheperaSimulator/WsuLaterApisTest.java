@@ -13,7 +13,7 @@ import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.kheperasim.api.MessagePasser;
-import org.kheperasim.api.spi.Controllers;
+import org.kheperasim.api.binding.Controllers;
 import org.kheperasim.api.spi.TruePose;
 
 /**

@@ -1,16 +1,17 @@
 package org.kheperasim.api.spi;
 
-import org.kheperasim.api.CurrentRobotState;
-import org.kheperasim.api.MessagePasser;
-
 /**
  * Hands the robot's state to a {@link org.kheperasim.api.Controller} subclass that declares no
  * constructor: the backend binds the state to the creating thread while the constructor runs.
  *
- * @param state the robot's live state
- * @param messages the controller's message channel
+ * <p>The port layer knows nothing of the student API's types (it lies below them), so the two are
+ * held as objects: the backend binds a {@code CurrentRobotState} and a {@code MessagePasser}, and
+ * the controller's constructor, which knows their types, reads them back.
+ *
+ * @param state the robot's live state (a {@code CurrentRobotState})
+ * @param messages the controller's message channel (a {@code MessagePasser})
  */
-public record ControllerBinding(CurrentRobotState state, MessagePasser messages) {
+public record ControllerBinding(Object state, Object messages) {
     private static final ThreadLocal<ControllerBinding> CURRENT = new ThreadLocal<>();
 
     /**
@@ -27,7 +28,12 @@ public record ControllerBinding(CurrentRobotState state, MessagePasser messages)
         return b;
     }
 
-    static void bind(ControllerBinding binding) {
+    /**
+     * Called by the backend around the constructor of a controller that declares none.
+     *
+     * @param binding the state and messages to hand it, or null to clear this thread's binding
+     */
+    public static void bind(ControllerBinding binding) {
         if (binding == null) {
             CURRENT.remove();
         } else {

@@ -1,8 +1,7 @@
 package org.kheperasim.api.spi;
 
+import java.util.Map;
 import java.util.Optional;
-import org.kheperasim.api.ArmPosition;
-import org.kheperasim.api.GripperState;
 
 /**
  * What a backend (the simulator, or the link to a real robot) provides behind the student API.
@@ -58,27 +57,27 @@ public interface RobotPort {
     void setPositions(int left, int right);
 
     /**
-     * Move the gripper arm towards {@code position}.
+     * Move the gripper arm down or up.
      *
-     * @param position where the arm goes
+     * @param down true for down (to pick up), false for up
      */
-    void setArm(ArmPosition position);
+    void setArmDown(boolean down);
 
-    /** @return where the arm last came to rest */
-    ArmPosition armPosition();
+    /** @return true when the arm last came to rest down, false when up */
+    boolean armDown();
 
     /** @return true while the arm is travelling between positions */
     boolean armMoving();
 
     /**
-     * Open or close the fingers.
+     * Close or open the fingers.
      *
-     * @param state open or closed
+     * @param closed true to close them, false to open them
      */
-    void setFingers(GripperState state);
+    void setFingersClosed(boolean closed);
 
-    /** @return the fingers' state */
-    GripperState fingers();
+    /** @return true when the fingers are closed (or closing), false when open */
+    boolean fingersClosed();
 
     /** @return true when something breaks the optical barrier between the fingers */
     boolean objectPresent();
@@ -153,10 +152,11 @@ public interface RobotPort {
     }
 
     /**
-     * @return the numbers the run hands the controller ({@link org.kheperasim.api.Parameters}); none by default
+     * @return the numbers the run hands the controller, by name (the student API shows them as
+     *     {@code Parameters}); none by default
      */
-    default org.kheperasim.api.Parameters parameters() {
-        return org.kheperasim.api.Parameters.NONE;
+    default Map<String, double[]> parameters() {
+        return Map.of();
     }
 
     /** @return the robot's name ({@code khepera1}, {@code epuck}); by default the Khepera I */
@@ -166,20 +166,19 @@ public interface RobotPort {
 
     /** @return how many infrared sensors the robot has; by default the Khepera's eight */
     default int sensorCount() {
-        return org.kheperasim.api.IrSensor.COUNT;
+        return 8;
     }
 
     /**
      * @param index a sensor, 0 to {@link #sensorCount()} - 1
-     * @return where it sits and which way it looks; by default the Khepera's ({@link org.kheperasim.api.IrSensor})
+     * @return where it sits and which way it looks (a Khepera-only backend gives the student API's
+     *     {@code IrSensor} poses)
      */
-    default org.kheperasim.api.SensorMount mount(int index) {
-        return org.kheperasim.api.SensorMount.of(org.kheperasim.api.IrSensor.of(index));
-    }
+    Mount mount(int index);
 
     /** @return the largest speed magnitude the robot accepts, its speed units; by default the Khepera's 127 */
     default int maxSpeed() {
-        return org.kheperasim.api.Motor.MAX_SPEED;
+        return 127;
     }
 
     /** @return the wheel speed of one speed unit, mm/s; by default the Khepera's 8 */

@@ -7,7 +7,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import org.kheperasim.api.spi.ControllerException;
-import org.kheperasim.api.spi.ControllerNames;
+import org.kheperasim.api.binding.ControllerNames;
 
 /**
  * Finds a controller class by the names the simulator uses ({@link ControllerNames}). On the robot

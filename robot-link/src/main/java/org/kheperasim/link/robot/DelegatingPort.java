@@ -1,7 +1,5 @@
 package org.kheperasim.link.robot;
 
-import org.kheperasim.api.ArmPosition;
-import org.kheperasim.api.GripperState;
 import org.kheperasim.api.spi.RobotPort;
 
 /** A {@link RobotPort} that passes every call on; subclasses change one or two. */
@@ -20,11 +18,11 @@ class DelegatingPort implements RobotPort {
     @Override public int leftPosition() { return target.leftPosition(); }
     @Override public int rightPosition() { return target.rightPosition(); }
     @Override public void setPositions(int left, int right) { target.setPositions(left, right); }
-    @Override public void setArm(ArmPosition position) { target.setArm(position); }
-    @Override public ArmPosition armPosition() { return target.armPosition(); }
+    @Override public void setArmDown(boolean down) { target.setArmDown(down); }
+    @Override public boolean armDown() { return target.armDown(); }
     @Override public boolean armMoving() { return target.armMoving(); }
-    @Override public void setFingers(GripperState state) { target.setFingers(state); }
-    @Override public GripperState fingers() { return target.fingers(); }
+    @Override public void setFingersClosed(boolean closed) { target.setFingersClosed(closed); }
+    @Override public boolean fingersClosed() { return target.fingersClosed(); }
     @Override public boolean objectPresent() { return target.objectPresent(); }
     @Override public int resistivity() { return target.resistivity(); }
     @Override public void sleep(long millis) throws InterruptedException { target.sleep(millis); }
@@ -36,7 +34,7 @@ class DelegatingPort implements RobotPort {
     @Override public String option(String key) { return target.option(key); }
     @Override public String robotName() { return target.robotName(); }
     @Override public int sensorCount() { return target.sensorCount(); }
-    @Override public org.kheperasim.api.SensorMount mount(int index) { return target.mount(index); }
+    @Override public org.kheperasim.api.spi.Mount mount(int index) { return target.mount(index); }
     @Override public int maxSpeed() { return target.maxSpeed(); }
     @Override public double mmPerSecondPerUnit() { return target.mmPerSecondPerUnit(); }
     @Override public int maxProximity() { return target.maxProximity(); }

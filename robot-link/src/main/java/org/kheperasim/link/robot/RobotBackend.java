@@ -10,6 +10,8 @@ import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 import org.kheperasim.api.ArmPosition;
 import org.kheperasim.api.GripperState;
+import org.kheperasim.api.IrSensor;
+import org.kheperasim.api.spi.Mount;
 import org.kheperasim.api.spi.RobotPort;
 import org.kheperasim.link.protocol.Command;
 import org.kheperasim.link.protocol.Reply;
@@ -426,7 +428,8 @@ public final class RobotBackend implements RobotPort {
     }
 
     @Override
-    public void setArm(ArmPosition position) {
+    public void setArmDown(boolean down) {
+        ArmPosition position = down ? ArmPosition.DOWN : ArmPosition.UP;
         if (stopped || !gripperUsable()) {
             return;
         }
@@ -446,9 +449,9 @@ public final class RobotBackend implements RobotPort {
     }
 
     @Override
-    public ArmPosition armPosition() {
+    public boolean armDown() {
         settleArm();
-        return armRest;
+        return armRest == ArmPosition.DOWN;
     }
 
     @Override
@@ -458,7 +461,8 @@ public final class RobotBackend implements RobotPort {
     }
 
     @Override
-    public void setFingers(GripperState state) {
+    public void setFingersClosed(boolean closed) {
+        GripperState state = closed ? GripperState.CLOSED : GripperState.OPEN;
         if (stopped || !gripperUsable()) {
             return;
         }
@@ -469,8 +473,8 @@ public final class RobotBackend implements RobotPort {
     }
 
     @Override
-    public GripperState fingers() {
-        return fingers;
+    public boolean fingersClosed() {
+        return fingers == GripperState.CLOSED;
     }
 
     @Override
@@ -542,5 +546,15 @@ public final class RobotBackend implements RobotPort {
     @Override
     public void message(String text) {
         console.accept(text);
+    }
+
+    /**
+     * @return the Khepera's sensor poses (the student API's {@code IrSensor}); this backend reports the
+     *     Khepera's shape whatever the dialect (the e-puck's sensor poses are not known to robot-link)
+     */
+    @Override
+    public Mount mount(int index) {
+        IrSensor s = IrSensor.of(index);
+        return new Mount(s.name(), s.xMm(), s.yMm(), s.headingDeg());
     }
 }

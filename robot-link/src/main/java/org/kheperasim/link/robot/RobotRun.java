@@ -4,7 +4,7 @@ import java.util.Locale;
 import java.util.function.Consumer;
 import org.kheperasim.api.CurrentRobotState;
 import org.kheperasim.api.MessagePasser;
-import org.kheperasim.api.spi.Controllers;
+import org.kheperasim.api.binding.Controllers;
 import org.kheperasim.link.session.Session;
 import org.kheperasim.link.session.SessionException;
 

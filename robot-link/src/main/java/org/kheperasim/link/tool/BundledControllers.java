@@ -1,7 +1,7 @@
 package org.kheperasim.link.tool;
 
 import java.util.Iterator;
-import org.kheperasim.api.spi.ControllerNames;
+import org.kheperasim.api.binding.ControllerNames;
 
 /** The bundled controllers' names, for {@code --help} ({@code ${COMPLETION-CANDIDATES}}) and shell completion. */
 public final class BundledControllers implements Iterable<String> {

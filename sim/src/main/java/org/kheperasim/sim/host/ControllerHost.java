@@ -3,7 +3,7 @@ package org.kheperasim.sim.host;
 import java.util.List;
 import org.kheperasim.api.CurrentRobotState;
 import org.kheperasim.api.MessagePasser;
-import org.kheperasim.api.spi.Controllers;
+import org.kheperasim.api.binding.Controllers;
 import org.kheperasim.sim.engine.RobotDriver;
 import org.kheperasim.sim.engine.SimRobot;
 

@@ -99,16 +99,16 @@ final class SimulatedRobotPort implements RobotPort {
     }
 
     @Override
-    public void setArm(ArmPosition position) {
+    public void setArmDown(boolean down) {
         clock.enter();
-        robot.controls().commandArm(clock.now(), position);
+        robot.controls().commandArm(clock.now(), down ? ArmPosition.DOWN : ArmPosition.UP);
         clock.leave();
     }
 
     @Override
-    public ArmPosition armPosition() {
+    public boolean armDown() {
         clock.enter();
-        ArmPosition v = robot.gripper().armRest();
+        boolean v = robot.gripper().armRest() == ArmPosition.DOWN;
         clock.leave();
         return v;
     }
@@ -122,16 +122,16 @@ final class SimulatedRobotPort implements RobotPort {
     }
 
     @Override
-    public void setFingers(GripperState fingers) {
+    public void setFingersClosed(boolean closed) {
         clock.enter();
-        robot.controls().commandFingers(clock.now(), fingers);
+        robot.controls().commandFingers(clock.now(), closed ? GripperState.CLOSED : GripperState.OPEN);
         clock.leave();
     }
 
     @Override
-    public GripperState fingers() {
+    public boolean fingersClosed() {
         clock.enter();
-        GripperState v = robot.gripper().fingers();
+        boolean v = robot.gripper().fingers() == GripperState.CLOSED;
         clock.leave();
         return v;
     }
@@ -214,9 +214,14 @@ final class SimulatedRobotPort implements RobotPort {
     }
 
     @Override
-    public org.kheperasim.api.Parameters parameters() {
+    public java.util.Map<String, double[]> parameters() {
         // Free: what the run hands the controller is not the robot's (no time passes, as in a constructor).
-        return robot.parameters();
+        org.kheperasim.api.Parameters given = robot.parameters();
+        java.util.Map<String, double[]> byName = new java.util.LinkedHashMap<>();
+        for (String name : given.names()) {
+            byName.put(name, given.vector(name, null));
+        }
+        return byName;
     }
 
     // The robot's description is free too: it is what the robot is, not a reading (no time passes).
@@ -232,9 +237,9 @@ final class SimulatedRobotPort implements RobotPort {
     }
 
     @Override
-    public org.kheperasim.api.SensorMount mount(int index) {
+    public org.kheperasim.api.spi.Mount mount(int index) {
         org.kheperasim.sim.engine.robot.RobotType.Sensor s = robot.type().sensor(index);
-        return new org.kheperasim.api.SensorMount(index, s.name(), s.xMm(), s.yMm(), s.headingDeg());
+        return new org.kheperasim.api.spi.Mount(s.name(), s.xMm(), s.yMm(), s.headingDeg());
     }
 
     @Override

@@ -4,7 +4,7 @@ import java.util.concurrent.TimeUnit;
 import org.kheperasim.api.CurrentRobotState;
 import org.kheperasim.api.MessagePasser;
 import org.kheperasim.api.StepController;
-import org.kheperasim.api.spi.Controllers;
+import org.kheperasim.api.binding.Controllers;
 import org.kheperasim.sim.engine.SimRobot;
 
 /**

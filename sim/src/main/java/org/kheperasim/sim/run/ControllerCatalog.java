@@ -3,7 +3,7 @@ package org.kheperasim.sim.run;
 import java.nio.file.Path;
 import java.util.List;
 import org.kheperasim.api.spi.ControllerException;
-import org.kheperasim.api.spi.ControllerNames;
+import org.kheperasim.api.binding.ControllerNames;
 import org.kheperasim.sim.host.loading.ControllerClassLoader;
 import org.kheperasim.sim.host.loading.ControllerPolicyError;
 import org.kheperasim.sim.host.loading.SharedControllers;

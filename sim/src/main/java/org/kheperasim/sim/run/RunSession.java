@@ -7,7 +7,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
-import org.kheperasim.api.spi.Controllers;
+import org.kheperasim.api.binding.Controllers;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Pose;

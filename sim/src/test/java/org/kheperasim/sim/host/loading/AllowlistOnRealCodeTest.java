@@ -19,7 +19,7 @@ import javax.tools.JavaCompiler;
 import javax.tools.ToolProvider;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.kheperasim.api.spi.ControllerNames;
+import org.kheperasim.api.binding.ControllerNames;
 
 /**
  * The allowlist is judged on real code: every bundled controller, the paper's Appendix controller,

@@ -1,4 +1,4 @@
-package org.kheperasim.api.spi;
+package org.kheperasim.api.binding;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -9,6 +9,10 @@ import java.lang.reflect.Proxy;
 import org.junit.jupiter.api.Test;
 import org.kheperasim.api.CurrentRobotState;
 import org.kheperasim.api.MessagePasser;
+import org.kheperasim.api.spi.ControllerException;
+import org.kheperasim.api.spi.Mount;
+import org.kheperasim.api.spi.RobotPort;
+import org.kheperasim.api.spi.RobotPorts;
 
 /** Controllers of another style reach the backends through a ControllerStyle found by ServiceLoader. */
 class ControllerStyleTest {
@@ -56,6 +60,7 @@ class ControllerStyleTest {
     private static RobotPort port() {
         return (RobotPort) Proxy.newProxyInstance(RobotPort.class.getClassLoader(), new Class<?>[] {RobotPort.class},
                 (proxy, method, args) -> method.getName().equals("toString") ? "fake port"
+                        : method.getName().equals("mount") ? new Mount("s" + args[0], 0, 0, 0)
                         : method.isDefault() ? java.lang.reflect.InvocationHandler.invokeDefault(proxy, method, args) : null);
     }
 
@@ -85,6 +90,6 @@ class ControllerStyleTest {
     @Test
     void onlyCurrentRobotStateInstallsThePortAccessor() {
         new CurrentRobotState(port());
-        assertThrows(IllegalStateException.class, () -> RobotPorts.install(s -> null));
+        assertThrows(IllegalStateException.class, () -> RobotPorts.install(CurrentRobotState.class, s -> null));
     }
 }

@@ -1,4 +1,4 @@
-package org.kheperasim.api.spi;
+package org.kheperasim.api.binding;
 
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -10,6 +10,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import org.kheperasim.api.spi.ControllerException;
 
 /**
  * How every backend names controllers, so that {@code --controller WallFollower} means the same

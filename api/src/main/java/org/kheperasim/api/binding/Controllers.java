@@ -1,4 +1,4 @@
-package org.kheperasim.api.spi;
+package org.kheperasim.api.binding;
 
 import java.lang.reflect.Constructor;
 import java.lang.reflect.InvocationTargetException;
@@ -13,6 +13,9 @@ import org.kheperasim.api.Controller;
 import org.kheperasim.api.CurrentRobotState;
 import org.kheperasim.api.MessagePasser;
 import org.kheperasim.api.StepController;
+import org.kheperasim.api.spi.ControllerBinding;
+import org.kheperasim.api.spi.ControllerException;
+import org.kheperasim.api.spi.RobotPorts;
 
 /**
  * The controller contract, applied the same way by every backend: how a controller class is

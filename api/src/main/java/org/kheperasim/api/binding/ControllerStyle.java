@@ -1,6 +1,8 @@
-package org.kheperasim.api.spi;
+package org.kheperasim.api.binding;
 
 import org.kheperasim.api.MessagePasser;
+import org.kheperasim.api.spi.ControllerException;
+import org.kheperasim.api.spi.RobotPort;
 
 /**
  * Another style of controller class than the contract's {@code Thread} subclass, for example the
@@ -12,7 +14,7 @@ import org.kheperasim.api.MessagePasser;
  *
  * <p>Styles are found with {@link java.util.ServiceLoader} in the class loader of the controller
  * class being checked (a module lists its implementation in
- * {@code META-INF/services/org.kheperasim.api.spi.ControllerStyle}), so the style sees the same
+ * {@code META-INF/services/org.kheperasim.api.binding.ControllerStyle}), so the style sees the same
  * base classes as the controller, whichever loader defined it. An implementation needs a public
  * constructor without parameters, and must not initialise the classes it is asked about.
  */

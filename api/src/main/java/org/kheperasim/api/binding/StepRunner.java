@@ -1,6 +1,7 @@
-package org.kheperasim.api.spi;
+package org.kheperasim.api.binding;
 
 import org.kheperasim.api.StepController;
+import org.kheperasim.api.spi.RobotPort;
 
 /**
  * Runs a {@link StepController} in a thread of its own, for a backend that does not step
