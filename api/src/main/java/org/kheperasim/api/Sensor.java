@@ -17,7 +17,8 @@ public final class Sensor {
     }
 
     /**
-     * @return the latest proximity reading, 0..{@link #getMaxDistValue()}: higher is nearer (on a Khepera,
+     * @return the latest proximity reading, 0 to about {@link #getMaxDistValue()} (noise may take a sensor
+     *     that does not saturate a little above it): higher is nearer (on a Khepera,
      *     0..1023: about 1000 touching a wall, about 600 at 15–20 mm, a few tens beyond 50 mm)
      */
     public int getDistValue() {
@@ -25,8 +26,10 @@ public final class Sensor {
     }
 
     /**
-     * @return the top of this robot's proximity scale, counts: 1023 on a Khepera, 4095 on an e-puck. A
-     *     controller that takes {@link #getDistValue()} as a fraction of it runs on every robot
+     * @return the largest reading this robot's proximity sensors give, counts (an obstacle at the distance
+     *     that reads highest, noise aside): 1023 on a Khepera, whose sensors saturate at the top of their
+     *     scale; 2976 on the bundled e-puck, whose 12-bit scale (4095) its sensors do not fill. A controller
+     *     that takes {@link #getDistValue()} as a fraction of it runs on every robot
      */
     public int getMaxDistValue() {
         return port.maxProximity();

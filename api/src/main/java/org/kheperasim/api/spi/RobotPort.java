@@ -187,8 +187,9 @@ public interface RobotPort {
     }
 
     /**
-     * @return the largest proximity reading, counts: the top of the robot's scale ({@code max_reading} of its
-     *     robot file); by default the Khepera's 1023 (an e-puck's 12-bit sensors: 4095)
+     * @return the largest proximity reading the robot's sensors give, counts, noise aside: its response's
+     *     peak plus offset within its scale ({@code max_reading}); by default the Khepera's 1023 (the
+     *     bundled e-puck's: 2976 of its 12-bit 4095)
      */
     default int maxProximity() {
         return 1023;

@@ -254,7 +254,7 @@ final class SimulatedRobotPort implements RobotPort {
 
     @Override
     public int maxProximity() {
-        return robot.type().proximity().maxReading();
+        return robot.type().proximity().contactReading();
     }
 
     @Override

@@ -26,6 +26,20 @@ public sealed interface Response permits Response.Curve, Response.Table {
     double rangeMm();
 
     /**
+     * @return the largest response of any beam at any distance, counts before the offset: what an
+     *     obstacle at the best distance along the best beam gives (a reading is the beams' largest)
+     */
+    default double peak() {
+        double best = 0;
+        for (int j = 0; j < anglesDeg().length; j++) {
+            for (double v : along(j).values()) {
+                best = StrictMath.max(best, weight(j) * v);
+            }
+        }
+        return best;
+    }
+
+    /**
      * @param distanceMm distance to a white wall, mm
      * @param angleDeg angle off the sensor's axis, degrees (its sign does not matter)
      * @return the reading before gain, offset and noise, interpolated; 0 beyond the largest angle

@@ -141,6 +141,14 @@ public record RobotType(String name, String source, Body body, Drive drive, List
      * @param maxReading the largest reading, counts
      */
     public record Proximity(Response response, double offset, double noiseAbs, double noiseRel, int maxReading) {
+        /**
+         * @return the largest reading the sensors give, counts, noise aside: the response's peak plus the
+         *     offset, within {@link #maxReading()} (a Khepera's saturate at its 1023; the bundled e-puck's
+         *     reach 2976 of their 4095)
+         */
+        public int contactReading() {
+            return (int) StrictMath.min(maxReading, StrictMath.round(offset + response.peak()));
+        }
     }
 
     /**
