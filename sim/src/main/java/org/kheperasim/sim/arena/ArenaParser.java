@@ -141,9 +141,11 @@ final class ArenaParser {
     }
 
     private org.kheperasim.sim.engine.robot.RobotType robotType(String spec) {
-        if (!org.kheperasim.sim.engine.robot.RobotTypes.BUNDLED.contains(spec) && !spec.contains("/") && !spec.endsWith(".yaml")) {
+        if (!org.kheperasim.sim.engine.robot.RobotTypes.BUNDLED.contains(spec) && !spec.contains("/") && !spec.endsWith(".yaml")
+                && !spec.endsWith(".calibration")) {
             throw error(lineNo, "robot type '" + shorten(spec) + "' is not a bundled robot; use one of "
-                    + String.join(", ", org.kheperasim.sim.engine.robot.RobotTypes.BUNDLED) + ", or a robot file's path ending in .yaml");
+                    + String.join(", ", org.kheperasim.sim.engine.robot.RobotTypes.BUNDLED)
+                    + ", or the path of a robot file (.yaml) or of a calibration (.calibration)");
         }
         try {
             return org.kheperasim.sim.engine.robot.RobotTypes.resolve(spec, folder);

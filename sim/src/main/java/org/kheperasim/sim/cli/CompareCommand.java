@@ -6,7 +6,6 @@ import java.util.concurrent.Callable;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.Pose;
-import org.kheperasim.sim.calibration.CalibrationFile;
 import org.kheperasim.sim.compare.Divergence;
 import org.kheperasim.sim.compare.PathPlot;
 import org.kheperasim.sim.compare.SimulatedRun;
@@ -67,9 +66,7 @@ final class CompareCommand implements Callable<Integer> {
         Settings s = settingsOptions.settings();
         RobotType type = null;
         if (calibration != null) {
-            CalibrationFile c = CalibrationFile.load(calibration, s);
-            type = c.type();
-            s = c.settings();
+            type = org.kheperasim.sim.engine.robot.RobotTypes.load(calibration);
         }
         RobotType used = type != null ? type : a.robotType(0);
         Track sim = SimulatedRun.run(a, start == null ? null : new Pose(start[0], start[1], start[2]), type, controller, s, seed,

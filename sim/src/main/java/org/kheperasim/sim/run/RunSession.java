@@ -267,7 +267,12 @@ public final class RunSession implements AutoCloseable {
         }
         StringBuilder sb = new StringBuilder();
         for (int i = 0; i < arena.robots().size(); i++) {
-            sb.append(i == 0 ? "" : " ").append(i).append('=').append(arena.robotType(i).name());
+            org.kheperasim.sim.engine.robot.RobotType t = arena.robotType(i);
+            // A calibration is its base robot, measured: the robot and the day say which one.
+            sb.append(i == 0 ? "" : " ").append(i).append('=').append(t.name());
+            if (t.measured() != null) {
+                sb.append('/').append(t.measured().robot()).append('@').append(t.measured().date());
+            }
         }
         header.put("robot-types", sb.toString());
     }

@@ -33,6 +33,8 @@ import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.engine.Engine;
 import org.kheperasim.sim.engine.SimRobot;
 import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.robot.RobotType;
+import org.kheperasim.sim.engine.robot.RobotTypes;
 import org.kheperasim.sim.engine.space.World;
 
 /**
@@ -44,6 +46,7 @@ import org.kheperasim.sim.engine.space.World;
  */
 class CalibrateAgainstFakeTest {
     private static final long SEED = 37;
+    private static final Settings QUIET = Settings.defaults().withNoise(0).with("prox.spikeRate", "0");
 
     @Test
     void theSimulatorLoadedWithTheCalibrationMatchesTheFake(@TempDir Path dir) throws Exception {
@@ -53,12 +56,15 @@ class CalibrateAgainstFakeTest {
         List<String> raw = Files.readAllLines(dir.resolve("lab3-2026-12-02-samples.csv"));
         assertEquals(1 + 14 * 24 * 20 + 4 * 20, raw.size(), "one line per raw reading, with its header");
 
-        CalibrationFile c = CalibrationFile.load(cal, Settings.defaults().withNoise(0).with("prox.spikeRate", "0"));
+        // The calibration is a robot file: the robot it measured.
+        RobotType c = RobotTypes.load(cal);
+        assertEquals("lab3", c.measured().robot());
+        assertEquals("2026-12-02", c.measured().date());
         // The ruler measures the axle's middle: the two wheels' mean travel per pulse.
-        assertEquals(scene.mmPerPulse() * (1 + scene.rightOverLeft()) / 2, c.type().drive().mmPerPulse(), 0.0002, "mm per pulse");
-        assertEquals(scene.rightOverLeft(), 2 * c.settings().number("motor.right.calibration")
-                / (2 * c.settings().number("motor.left.calibration")), 0.002, "right over left");
-        assertEquals(scene.wheelBaseMm(), c.type().drive().wheelBaseMm(), 0.6, "wheel base");
+        assertEquals(scene.mmPerPulse() * (1 + scene.rightOverLeft()) / 2, c.drive().mmPerPulse(), 0.0002, "mm per pulse");
+        assertEquals(scene.rightOverLeft(), c.measured().rightCalibration() / c.measured().leftCalibration(), 0.002,
+                "right over left");
+        assertEquals(scene.wheelBaseMm(), c.drive().wheelBaseMm(), 0.6, "wheel base");
         // Unsampled gaps: halfway between the calibration's 5, 8, 11, ... mm, at headings between its 15 degrees too.
         List<Double> errors = new ArrayList<>();
         List<Double> lit = new ArrayList<>();
@@ -111,7 +117,7 @@ class CalibrateAgainstFakeTest {
         return code;
     }
 
-    private static Path calibrate(FakeWallScene scene, Path dir) throws Exception {
+    static Path calibrate(FakeWallScene scene, Path dir) throws Exception {
         StringWriter out = new StringWriter();
         // What a person would measure by ruler and protractor on this robot.
         double runMm = 2500 * scene.mmPerPulse() * (1 + scene.rightOverLeft()) / 2;
@@ -149,13 +155,13 @@ class CalibrateAgainstFakeTest {
         });
     }
 
-    private static int[] simulate(CalibrationFile c, double gap, double right) {
+    private static int[] simulate(RobotType c, double gap, double right) {
         double face = 300 * OccupancyGrid.CELL_MM;
         double x = face - 27.5 - gap;
         World world = new World(ArenaFormat.parse(String.format(Locale.ROOT, "khepera-arena 1\nname wall\nsize 1219.2 1219.2\n"
                 + "robot %s 600 0\nwall %s 300 %s 900 8\n", x, face + 4, face + 4), "wall.arena"));
         Engine engine = new Engine(world, 7);
-        SimRobot robot = engine.addRobot("r", new Pose(x, 600, right), c.settings(), c.type());
+        SimRobot robot = engine.addRobot("r", new Pose(x, 600, right), QUIET, c);
         for (int t = 0; t < 100; t++) {
             engine.step();
         }

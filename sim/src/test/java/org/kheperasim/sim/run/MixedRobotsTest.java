@@ -52,7 +52,7 @@ class MixedRobotsTest {
         ArenaFormatException e = assertThrows(ArenaFormatException.class,
                 () -> ArenaFormat.parse(ARENA.replace(" epuck", " epuk"), "m.arena"));
         assertEquals("m.arena:5: robot type 'epuk' is not a bundled robot; use one of khepera1, khepera2, epuck, wsu,"
-                + " or a robot file's path ending in .yaml", e.getMessage());
+                + " or the path of a robot file (.yaml) or of a calibration (.calibration)", e.getMessage());
         ArenaFormatException f = assertThrows(ArenaFormatException.class,
                 () -> ArenaFormat.parse(ARENA.replace(" epuck", " robots/none.yaml"), "m.arena"));
         assertTrue(f.getMessage().startsWith("m.arena:5: robot file 'robots/none.yaml': no such robot file;"), f.getMessage());

@@ -133,10 +133,13 @@ public record RobotModel(RobotType type, Stepping stepping, Link link, Noise noi
         boolean[] proxDead = new boolean[n];
         double[] lightGain = new double[n];
         boolean[] lightDead = new boolean[n];
+        // A measured robot (a calibration) brings its own gains and wheel calibrations, multiplied into the
+        // settings' (1 unless set), and draws no per-robot spread: it is that robot.
+        RobotType.Measured m = type.measured();
         for (int i = 0; i < n; i++) {
             // The per-sensor settings name sensors 0..7; a ninth sensor and beyond keep the neutral values.
             boolean named = i < Settings.PER_SENSOR;
-            proxGain[i] = named ? s.number("prox." + i + ".gain") : 1;
+            proxGain[i] = (named ? s.number("prox." + i + ".gain") : 1) * (m == null ? 1 : m.gain(i));
             proxNoise[i] = named ? s.number("prox." + i + ".noise") : 1;
             proxDead[i] = named && s.flag("prox." + i + ".dead");
             lightGain[i] = named ? s.number("light." + i + ".gain") : 1;
@@ -151,8 +154,8 @@ public record RobotModel(RobotType type, Stepping stepping, Link link, Noise noi
                 Stepping.named(s.raw("engine.stepping")),
                 new Link(timing, StrictMath.max(1, (long) (s.number("api.callCostUs") * 1000))),
                 new Noise(s.number("noise.reading"), s.number("noise.robot")),
-                new Proximity(response, or(s, "prox.offset", tp.offset()), s.number("prox.offsetSpread"),
-                        s.number("prox.gainSpread"), or(s, "prox.noiseAbs", tp.noiseAbs()), or(s, "prox.noiseRel", tp.noiseRel()),
+                new Proximity(response, or(s, "prox.offset", tp.offset()), spread(s, "prox.offsetSpread", m),
+                        spread(s, "prox.gainSpread", m), or(s, "prox.noiseAbs", tp.noiseAbs()), or(s, "prox.noiseRel", tp.noiseRel()),
                         s.number("prox.spikeRate"),
                         new double[] {0, s.number("prox.reflect.wall"), s.number("prox.reflect.light"),
                             s.number("prox.reflect.cap"), s.number("prox.reflect.robot")},
@@ -160,12 +163,18 @@ public record RobotModel(RobotType type, Stepping stepping, Link link, Noise noi
                 new Light(or(s, "light.dark", tl.dark()), or(s, "light.bright", tl.bright()), s.number("light.darkSpread"),
                         s.number("light.flickerRate"), s.number("light.flickerDepth"), or(s, "light.noiseRel", tl.noiseRel()),
                         lightGain, lightDead),
-                new Motors(s.number("motor.left.calibration"), s.number("motor.right.calibration"),
-                        s.number("motor.left.noise"), s.number("motor.right.noise"), s.number("motor.spread"),
+                new Motors(s.number("motor.left.calibration") * (m == null ? 1 : m.leftCalibration()),
+                        s.number("motor.right.calibration") * (m == null ? 1 : m.rightCalibration()),
+                        s.number("motor.left.noise"), s.number("motor.right.noise"), spread(s, "motor.spread", m),
                         or(s, "encoder.mmPerPulse", type.drive().mmPerPulse())),
                 new Gripper((long) StrictMath.rint(s.number("gripper.armTravelMs") * 1e6),
                         (long) StrictMath.rint(s.number("gripper.fingerMs") * 1e6),
                         (int) s.number("gripper.capResistivity")));
+    }
+
+    /** @return a per-robot spread: 0 for a measured robot unless the settings set it, else the setting */
+    private static double spread(Settings s, String key, RobotType.Measured m) {
+        return m != null && !s.overrides().containsKey(key) ? 0 : s.number(key);
     }
 
     /** @return the setting's value if the settings change it, else the robot type's */

@@ -15,7 +15,7 @@ public final class RobotFileReader {
     /** The most sensors a robot may have. */
     public static final int MAX_SENSORS = 32;
     private static final Set<String> TOP = Set.of("name", "source", "dialect", "turrets", "footprint", "drive", "sensors",
-            "proximity", "light");
+            "proximity", "light", "measured");
     private static final Set<String> FOOTPRINT = Set.of("type", "radius");
     private static final Set<String> DRIVE = Set.of("wheel_base", "speed_unit", "max_speed", "encoder_resolution",
             "motor_period", "noise_period", "move_speed", "acceleration");
@@ -23,6 +23,7 @@ public final class RobotFileReader {
     private static final Set<String> PROXIMITY = Set.of("response", "angles", "weights", "distances", "values", "offset",
             "noise_std_dev", "noise_relative", "max_reading");
     private static final Set<String> LIGHT = Set.of("dark", "bright", "noise_relative");
+    private static final Set<String> MEASURED = Set.of("robot", "date", "gains", "wheel_calibration");
 
     private final String source;
 
@@ -92,7 +93,38 @@ public final class RobotFileReader {
         RobotFileLines.Entry l = section(root, "light", LIGHT);
         RobotType.Light light = new RobotType.Light(number(need(l, "dark"), 0, 100_000, "counts"),
                 number(need(l, "bright"), 0, 100_000, "counts"), number(need(l, "noise_relative"), 0, 10, "(relative)"));
-        return new RobotType(name, src, body, drive, sensors, proximity, light, turrets, dialect);
+        RobotType.Measured measured = root.keys.containsKey("measured") ? measured(section(root, "measured", MEASURED),
+                sensors.size()) : null;
+        return new RobotType(name, src, body, drive, sensors, proximity, light, turrets, dialect, measured);
+    }
+
+    /** The section a calibration adds: the one robot measured, its day, its sensors' gains and wheels' calibrations. */
+    private RobotType.Measured measured(RobotFileLines.Entry m, int sensorCount) {
+        String robot = text(need(m, "robot"));
+        if (!robot.matches("[A-Za-z0-9_.-]{1,40}")) {
+            throw error(need(m, "robot"), "robot '" + robot + "' is not a label; use 1 to 40 letters, digits, '_' or '-'");
+        }
+        String date = text(need(m, "date"));
+        if (!date.matches("\\d{4}-\\d{2}-\\d{2}")) {
+            throw error(need(m, "date"), "date '" + date + "' is not a day; write it YYYY-MM-DD");
+        }
+        RobotFileLines.Entry g = need(m, "gains");
+        double[] gains = numbers(g, sensorCount, sensorCount);
+        List<Double> list = new ArrayList<>();
+        for (double v : gains) {
+            if (!(v > 0 && v <= 10)) {
+                throw error(g, "gain " + fmt(v) + " is out of range; give each sensor's gain in 0..10 (1: the type's response)");
+            }
+            list.add(v);
+        }
+        double[] wheels = numbers(need(m, "wheel_calibration"), 2, 2);
+        for (double v : wheels) {
+            if (!(v >= 0.5 && v <= 2)) {
+                throw error(need(m, "wheel_calibration"), "wheel calibration " + fmt(v) + " is out of range; give the"
+                        + " left and right wheels' actual over commanded speed, each in 0.5..2");
+            }
+        }
+        return new RobotType.Measured(robot, date, list, wheels[0], wheels[1]);
     }
 
     private List<RobotType.Sensor> sensors(RobotFileLines.Entry s, RobotType.Body body) {

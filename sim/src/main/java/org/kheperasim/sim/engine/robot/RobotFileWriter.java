@@ -74,6 +74,19 @@ public final class RobotFileWriter {
         key(sb, "dark", t.light().dark());
         key(sb, "bright", t.light().bright());
         key(sb, "noise_relative", t.light().noiseRel());
+        RobotType.Measured m = t.measured();
+        if (m != null) {
+            sb.append("measured:\n");
+            sb.append("  robot: ").append(m.robot()).append('\n');
+            sb.append("  date: ").append(m.date()).append('\n');
+            double[] gains = new double[m.proxGains().size()];
+            for (int i = 0; i < gains.length; i++) {
+                gains[i] = m.gain(i);
+            }
+            sb.append("  gains: ").append(list(gains)).append('\n');
+            sb.append("  wheel_calibration: ").append(list(new double[] {m.leftCalibration(), m.rightCalibration()}))
+                    .append('\n');
+        }
         return sb.toString();
     }
 

@@ -23,9 +23,11 @@ import java.util.Set;
  * @param light how the sensors answer to ambient light
  * @param turrets the turrets it carries
  * @param dialect the name of the serial protocol it speaks ({@code khepera1}, {@code khepera2}, {@code epuck})
+ * @param measured what a calibration measured on one robot of the kind (its sensors' gains, its wheels'
+ *     spread), or null for a kind of robot: then each run draws a robot of the kind ({@code prox.gainSpread} ...)
  */
 public record RobotType(String name, String source, Body body, Drive drive, List<Sensor> sensors, Proximity proximity,
-        Light light, Set<Turret> turrets, String dialect) {
+        Light light, Set<Turret> turrets, String dialect, Measured measured) {
 
     /** The slack {@link #sensorReachMm} leaves beyond the farthest sensor, mm. */
     private static final double REACH_SLACK_MM = 0.5;
@@ -43,6 +45,16 @@ public record RobotType(String name, String source, Body body, Drive drive, List
         if (sensors.isEmpty()) {
             throw new IllegalArgumentException("robot " + name + " has no sensors: give one at least");
         }
+        if (measured != null && measured.proxGains().size() != sensors.size()) {
+            throw new IllegalArgumentException("robot " + name + " has " + sensors.size() + " sensors but its calibration "
+                    + measured.proxGains().size() + " gains: give one gain a sensor");
+        }
+    }
+
+    /** A kind of robot, not one measured robot ({@link #measured()} null). */
+    public RobotType(String name, String source, Body body, Drive drive, List<Sensor> sensors, Proximity proximity,
+            Light light, Set<Turret> turrets, String dialect) {
+        this(name, source, body, drive, sensors, proximity, light, turrets, dialect, null);
     }
 
     /** @return how many infrared sensors it has */
@@ -75,14 +87,41 @@ public record RobotType(String name, String source, Body body, Drive drive, List
      * @param offset the fitted reading with nothing in range
      * @param noiseAbs the fitted per-reading noise, counts
      * @param noiseRel the fitted relative noise
+     * @param measured the robot's own numbers: its name, the day, each sensor's gain, each wheel's calibration
      * @return the calibrated type
      */
     public RobotType calibrated(String source, double wheelBaseMm, double mmPerSecondPerUnit, double mmPerPulse,
-            Response response, double offset, double noiseAbs, double noiseRel) {
+            Response response, double offset, double noiseAbs, double noiseRel, Measured measured) {
         Drive d = drive;
         return new RobotType(name, source, body, new Drive(wheelBaseMm, mmPerSecondPerUnit, d.maxSpeed(), mmPerPulse,
                 d.motorPeriodNanos(), d.noisePeriodNanos(), d.moveSpeed(), d.acceleration()), sensors,
-                new Proximity(response, offset, noiseAbs, noiseRel, proximity.maxReading()), light, turrets, dialect);
+                new Proximity(response, offset, noiseAbs, noiseRel, proximity.maxReading()), light, turrets, dialect,
+                Objects.requireNonNull(measured, "measured"));
+    }
+
+    /**
+     * What a calibration measured on one robot ({@code khepera-link calibrate}; docs/calibration.md)
+     * that a kind of robot does not fix: a run of it draws no per-robot spread (it is this robot), and
+     * multiplies each sensor's gain and each wheel's calibration into the settings' own.
+     *
+     * @param robot the robot's name (its label in the lab)
+     * @param date the day it was measured, {@code YYYY-MM-DD}
+     * @param proxGains each sensor's proximity gain on the type's response, in sensor order
+     * @param leftCalibration the left wheel's actual over commanded speed
+     * @param rightCalibration the right wheel's actual over commanded speed
+     */
+    public record Measured(String robot, String date, List<Double> proxGains, double leftCalibration,
+            double rightCalibration) {
+        public Measured {
+            Objects.requireNonNull(robot, "robot");
+            Objects.requireNonNull(date, "date");
+            proxGains = List.copyOf(proxGains);
+        }
+
+        /** @param i a sensor @return its gain */
+        public double gain(int i) {
+            return proxGains.get(i);
+        }
     }
 
     /** @return whether it carries the gripper turret */

@@ -70,7 +70,7 @@ public final class RobotTypes {
     }
 
     /**
-     * @param file a robot file
+     * @param file a robot file, or a calibration file ({@link Calibration})
      * @return the robot it describes
      * @throws InputFileException naming the file (and line) when it cannot be read or is wrong
      */
@@ -81,7 +81,8 @@ public final class RobotTypes {
                     + ") or the path of a robot file");
         }
         String text = TextFiles.readUtf8(file, MAX_BYTES, "robot file", (line, what) -> new RobotFileException(source, line, what));
-        return RobotFileReader.parse(source, text);
+        // A calibration (khepera-link calibrate) is the robot it measured.
+        return Calibration.is(text) ? Calibration.parse(source, file, text).type() : RobotFileReader.parse(source, text);
     }
 
     /**

@@ -100,7 +100,7 @@ final class RobotDraft {
 
     String setName(String name) {
         return apply(new RobotType(name, type.source(), type.body(), type.drive(), type.sensors(), named(type.proximity(), name),
-                type.light(), type.turrets(), type.dialect()));
+                type.light(), type.turrets(), type.dialect(), type.measured()));
     }
 
     /**
@@ -120,7 +120,7 @@ final class RobotDraft {
 
     String setBodyRadius(double mm) {
         return apply(new RobotType(type.name(), type.source(), new RobotType.Body(mm), type.drive(), type.sensors(),
-                type.proximity(), type.light(), type.turrets(), type.dialect()));
+                type.proximity(), type.light(), type.turrets(), type.dialect(), type.measured()));
     }
 
     String setWheelBase(double mm) {
@@ -143,7 +143,7 @@ final class RobotDraft {
 
     private String drive(RobotType.Drive d) {
         return apply(new RobotType(type.name(), type.source(), type.body(), d, type.sensors(), type.proximity(),
-                type.light(), type.turrets(), type.dialect()));
+                type.light(), type.turrets(), type.dialect(), type.measured()));
     }
 
     /** @param i a sensor @param x mm forward @param y mm left @return null, or why not */
@@ -210,7 +210,7 @@ final class RobotDraft {
 
     private String sensors(List<RobotType.Sensor> list) {
         return apply(new RobotType(type.name(), type.source(), type.body(), type.drive(), list, type.proximity(),
-                type.light(), type.turrets(), type.dialect()));
+                type.light(), type.turrets(), type.dialect(), keptMeasurement(list)));
     }
 
     private static boolean nameTaken(List<RobotType.Sensor> list, String name) {
@@ -232,5 +232,11 @@ final class RobotDraft {
         for (Runnable l : listeners) {
             l.run();
         }
+    }
+
+    /** @return the calibration's numbers while each sensor still has its gain; none once sensors come or go */
+    private RobotType.Measured keptMeasurement(java.util.List<RobotType.Sensor> sensors) {
+        RobotType.Measured m = type.measured();
+        return m != null && m.proxGains().size() == sensors.size() ? m : null;
     }
 }

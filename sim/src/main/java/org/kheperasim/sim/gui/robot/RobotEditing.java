@@ -70,7 +70,9 @@ public final class RobotEditing {
     /** Robot > Open robot file: asks for a file, then edits it. */
     public void openFile() {
         JFileChooser c = new JFileChooser(new File("."));
-        c.setFileFilter(new FileNameExtensionFilter("Robot files (." + RobotEditor.EXTENSION + ")", RobotEditor.EXTENSION));
+        // A calibration (khepera-link calibrate) opens as the robot it measured; saving it writes a robot file.
+        c.setFileFilter(new FileNameExtensionFilter("Robot files and calibrations (." + RobotEditor.EXTENSION
+                + ", .calibration)", RobotEditor.EXTENSION, "calibration"));
         if (c.showOpenDialog(owner) == JFileChooser.APPROVE_OPTION) {
             openFile(c.getSelectedFile().toPath());
         }
