@@ -33,7 +33,8 @@ final class RunCommand implements Callable<Integer> {
     @Mixin
     ControllerOptions controllerOptions = new ControllerOptions();
 
-    @Option(names = "--record", paramLabel = "FILE", description = "Write every poll cycle to FILE (text).")
+    @Option(names = "--record", paramLabel = "FILE", description = "Write the run to FILE (text): every poll cycle's"
+            + " readings, and every line sent and received, with its time.")
     Path record;
 
     @Option(names = "--max-speed", defaultValue = "" + RobotSettings.DEFAULT_MAX_SPEED, paramLabel = "UNITS",
@@ -66,8 +67,9 @@ final class RunCommand implements Callable<Integer> {
             Recorder recorder = null;
             if (record != null) {
                 recorder = new Recorder(record, "controller " + type.getName() + ", port " + connection.port
-                        + ", " + connection.baud() + " baud, dialect " + session.dialect().name());
+                        + ", " + connection.baud() + " baud, dialect " + session.dialect().name(), backend::startNanos);
                 backend.onSample(recorder);
+                session.transcript(recorder);
             }
             RobotRun run = new RobotRun(backend, type, line -> {
                 out.println(line);
@@ -92,6 +94,7 @@ final class RunCommand implements Callable<Integer> {
                     r = run.run((long) (seconds * 1000));
                 } finally {
                     if (recorder != null) {
+                        session.transcript(null);
                         recorder.close();
                     }
                 }

@@ -82,6 +82,11 @@ public final class RobotBackend implements RobotPort {
     private volatile SessionException failure;
     private volatile long cycles;
     private volatile long startNanos;
+
+    /** @return when the run started, {@link System#nanoTime()}; 0 before: the zero of its samples' times */
+    public long startNanos() {
+        return startNanos;
+    }
     private volatile long endNanos;
     private volatile Consumer<Sample> sampleListener = s -> { };
     private final Object stopLock = new Object();

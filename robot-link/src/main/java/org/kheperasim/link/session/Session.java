@@ -72,6 +72,7 @@ public final class Session implements AutoCloseable {
             long meanRoundTripNanos, long maxRoundTripNanos) {
     }
 
+    private volatile Transcript transcript;
     private final Link link;
     private final Options options;
     private final LinkTiming timing;
@@ -168,6 +169,28 @@ public final class Session implements AutoCloseable {
         return new Versions(r.values().get(0), r.values().size() > 1 ? r.values().get(1) : "");
     }
 
+    /** Told of every line the session sends and receives (a run's recording keeps them all). */
+    public interface Transcript {
+        /**
+         * @param nanos when, {@link System#nanoTime()}
+         * @param sent true for a line sent to the robot, false for one received
+         * @param text the line, without its end
+         */
+        void line(long nanos, boolean sent, String text);
+    }
+
+    /** @param t told of every line from now on, or null for none */
+    public void transcript(Transcript t) {
+        transcript = t;
+    }
+
+    private void told(boolean sent, String text) {
+        Transcript t = transcript;
+        if (t != null) {
+            t.line(System.nanoTime(), sent, text);
+        }
+    }
+
     /**
      * Send a command and wait for its reply, with retries.
      *
@@ -193,6 +216,7 @@ public final class Session implements AutoCloseable {
                 lastSent = line;
                 link.writeLine(line);
                 sent = System.nanoTime();
+                told(true, line);
                 long deadline = sent + waitNanos;
                 while (true) {
                     long left = deadline - System.nanoTime();
@@ -200,6 +224,7 @@ public final class Session implements AutoCloseable {
                     if (got == null) {
                         break;
                     }
+                    told(false, got);
                     try {
                         Reply reply = dialect.parseReply(command, got);
                         record(System.nanoTime() - sent);
@@ -244,6 +269,7 @@ public final class Session implements AutoCloseable {
         try {
             lastSent = command.encode();
             link.writeLine(lastSent);
+            told(true, lastSent);
             return true;
         } catch (IOException e) {
             return false;

@@ -103,7 +103,13 @@ class CliPtyTest {
             assertEquals("D,0,0", fake.robot().lastReceived());
             List<String> lines = Files.readAllLines(rec);
             assertTrue(lines.size() > 5 && lines.get(2).startsWith("# t_s"), lines.toString());
-            assertEquals(21, lines.get(lines.size() - 1).split(" ").length, lines.get(lines.size() - 1));
+            List<String> samples = lines.stream().filter(l -> !l.startsWith("#") && !l.startsWith(">")
+                    && !l.startsWith("<")).toList();
+            assertTrue(samples.size() > 3, lines.toString());
+            assertEquals(21, samples.get(samples.size() - 1).split(" ").length, samples.get(samples.size() - 1));
+            // Every line sent and received is kept too, with its time.
+            assertTrue(lines.stream().anyMatch(l -> l.matches("> [0-9.]+ D,3,3")), lines.toString());
+            assertTrue(lines.stream().anyMatch(l -> l.matches("< [0-9.]+ n(,[0-9]+){8}")), lines.toString());
         }
     }
 

@@ -10,7 +10,7 @@ import java.util.Locale;
 
 /**
  * A run as a series of samples: time, the proximity readings, the wheel counters. Reads and writes
- * robot-link's recording format ({@code # khepera-link recording v1}: a line a poll cycle,
+ * robot-link's recording format ({@code # khepera-link recording v2}: a line a poll cycle,
  * {@code t_s prox0..prox7 light0..light7 posL posR speedL speedR}).
  *
  * @param samples in time order
@@ -39,14 +39,16 @@ public record Track(List<Point> samples) {
      */
     public static Track read(Path file) throws IOException {
         List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
-        if (lines.isEmpty() || !lines.get(0).startsWith("# khepera-link recording v1")) {
-            throw new IllegalArgumentException("recording " + file + " line 1 is not '# khepera-link recording v1':"
+        if (lines.isEmpty() || !(lines.get(0).startsWith("# khepera-link recording v1")
+                || lines.get(0).startsWith("# khepera-link recording v2"))) {
+            throw new IllegalArgumentException("recording " + file + " line 1 is not '# khepera-link recording v2':"
                     + " give a file written by 'khepera-link run --record'");
         }
         List<Point> out = new ArrayList<>();
         for (int n = 0; n < lines.size(); n++) {
             String l = lines.get(n).trim();
-            if (l.isEmpty() || l.startsWith("#")) {
+            // v2 keeps every line sent (>) and received (<) too; the track is the samples.
+            if (l.isEmpty() || l.startsWith("#") || l.startsWith(">") || l.startsWith("<")) {
                 continue;
             }
             String[] f = l.split("\\s+");

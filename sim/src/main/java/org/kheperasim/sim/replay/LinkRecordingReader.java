@@ -46,7 +46,8 @@ final class LinkRecordingReader {
         boolean first = true;
         for (int i = 0; i < end; i++) {
             String line = lines[i].strip();
-            if (line.isEmpty() || line.startsWith("#")) {
+            if (line.isEmpty() || line.startsWith("#") || line.startsWith(">") || line.startsWith("<")) {
+                // v2 recordings keep every line sent (>) and received (<) too: the replay plays the samples
                 continue;
             }
             String[] f = line.split(" +");

@@ -24,7 +24,8 @@ import org.kheperasim.testfixtures.Cli;
  * protocol, with other settings standing in for a robot that is not the model: its right wheel runs
  * at 0.9 of the commanded speed and its sensor 2 is dead. {@code khepera-link run --record} drives it
  * with the bundled Braitenberg in the open lab (it drives straight: nothing in range), and
- * {@code compare} replays the same controller from the same start with the default robot. The known
+ * {@code compare} replays the same controller from the same start with the default robot (the
+ * recording keeps every line sent and received, with its time). The known
  * answers: sensor 2 differs by the offset the live sensor reads (15 counts) and no other sensor
  * differs; the paths part at the time the arcs say, about 3.6 s at 30 mm (48 mm/s straight against
  * 45.6 mm/s turning 5.2 degrees a second).
@@ -52,6 +53,14 @@ class CompareServedRobotTest {
                 server.close();
             }
         }
+        // The recording keeps every line sent and received, with its time, beside the samples.
+        java.util.List<String> lines = Files.readAllLines(rec);
+        assertTrue(lines.get(0).startsWith("# khepera-link recording v2"), lines.get(0));
+        assertTrue(lines.stream().anyMatch(l -> l.matches("> [0-9.]+ D,6,6")), "Braitenberg's cruise command is kept");
+        assertTrue(lines.stream().anyMatch(l -> l.matches("< [0-9.]+ d")), "and the robot's reply");
+        long polls = lines.stream().filter(l -> l.matches("> [0-9.]+ N")).count();
+        long samples = lines.stream().filter(l -> !l.startsWith("#") && !l.startsWith(">") && !l.startsWith("<")).count();
+        assertTrue(polls >= samples && samples > 20, polls + " proximity polls for " + samples + " samples");
         Cli.Printed p = Cli.main("compare", rec.toString(), "--arena", "lab", "--controller", "Braitenberg", "--noise", "0",
                 "--threshold-mm", "30", "--out", dir.toString());
         assertEquals(0, p.code(), p.out() + p.err());
