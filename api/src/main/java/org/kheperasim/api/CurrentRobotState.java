@@ -59,9 +59,11 @@ public final class CurrentRobotState {
      */
     public Sensor getSensor(int index) {
         if (index < 0 || index >= sensors.length) {
-            throw new IllegalArgumentException("sensor " + index + (index >= 0 && index < IrSensor.COUNT ? " (" + IrSensor.of(index) + ")" : "")
+            throw new IllegalArgumentException("sensor " + index
+                    + (index >= 0 && index < IrSensor.COUNT ? " (" + IrSensor.of(index) + ")" : "")
                     + " does not exist: this robot (" + port.robotName() + ") has " + sensors.length + " sensors, 0.."
-                    + (sensors.length - 1) + "; the controller was written for another robot (see docs/robot-files.md)");
+                    + (sensors.length - 1)
+                    + "; the controller was written for another robot (see docs/robot-files.md)");
         }
         return sensors[index];
     }

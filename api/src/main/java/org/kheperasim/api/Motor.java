@@ -7,8 +7,8 @@ import org.kheperasim.api.spi.RobotPort;
  *
  * <p>Speeds are in the robot's speed units ({@link #getMmPerSecondPerUnit()}, up to
  * {@link #getMaxSpeed()}); on the Khepera one unit is one encoder pulse per 10 ms, about 8 mm/s,
- * and the robot accepts −127..127 (an e-puck: steps/s, −1000..1000). Positions are in pulses, about 0.08 mm of wheel travel each; they stop
- * counting while the robot is blocked, which is how a controller can tell it is stuck.
+ * and the robot accepts −127..127 (an e-puck: steps/s, −1000..1000). Positions are in pulses, about 0.08 mm of wheel
+ * travel each; they stop counting while the robot is blocked, which is how a controller can tell it is stuck.
  */
 public final class Motor {
     /** The largest speed magnitude the Khepera accepts, speed units (another robot's: {@link #getMaxSpeed()}). */

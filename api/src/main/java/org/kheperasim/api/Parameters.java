@@ -44,7 +44,8 @@ public final class Parameters {
             }
             for (double v : e.getValue()) {
                 if (!Double.isFinite(v)) {
-                    throw new IllegalArgumentException("parameter " + e.getKey() + " holds " + v + ": numbers must be finite");
+                    throw new IllegalArgumentException("parameter " + e.getKey() + " holds " + v
+                            + ": numbers must be finite");
                 }
             }
             copy.put(e.getKey(), e.getValue().clone());

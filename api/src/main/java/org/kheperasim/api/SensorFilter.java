@@ -50,7 +50,8 @@ public final class SensorFilter {
             throw new IllegalArgumentException("a filter needs at least one sensor, not " + sensors);
         }
         if (window < 1 || window > 15 || window % 2 == 0) {
-            throw new IllegalArgumentException("the window must be odd and 1 to 15 readings (3 or 5 is usual), not " + window);
+            throw new IllegalArgumentException(
+                    "the window must be odd and 1 to 15 readings (3 or 5 is usual), not " + window);
         }
         if (spikeThreshold < 0) {
             throw new IllegalArgumentException("the spike threshold must be 0 or more, not " + spikeThreshold);

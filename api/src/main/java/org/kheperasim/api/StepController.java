@@ -151,7 +151,8 @@ public abstract class StepController {
 
     /**
      * @return the numbers the run hands this controller (a weight vector, a genome: see {@link Parameters}); none
-     *     unless the run was given some ({@code khepera-sim evaluate}'s jobs, {@code Simulation.builder().parameters(...)})
+     *     unless the run was given some ({@code khepera-sim evaluate}'s jobs,
+     *     {@code Simulation.builder().parameters(...)})
      */
     protected final Parameters parameters() {
         return robot.parameters();

@@ -15,8 +15,8 @@
  * }</pre>
  * The backend constructs it, calls {@code start()}, and to stop it calls {@code killControl()} if
  * the class declares one (the simulator on the controller's own thread, when it next calls the API
- * or loops; robot-link on a thread of its own). A friendlier base class, {@link org.kheperasim.api.Controller}, offers a
- * {@code doWork()} loop, enums and helpers; it needs no constructor at all.
+ * or loops; robot-link on a thread of its own). A friendlier base class, {@link org.kheperasim.api.Controller}, offers
+ * a {@code doWork()} loop, enums and helpers; it needs no constructor at all.
  *
  * <h2>Units and conventions (stated once, here)</h2>
  * <ul>

@@ -127,14 +127,18 @@ public class LightFollower extends Controller {
         }
     }
 
-    /** @param bearingDeg a light's direction, degrees left of ahead @return true if a beacon already passed lies that way, near */
+    /**
+     * @param bearingDeg a light's direction, degrees left of ahead @return true if a beacon already passed lies that
+     *     way, near
+     */
     private boolean passedLies(double bearingDeg) {
         double toward = odometry.heading() + StrictMath.toRadians(bearingDeg);
         for (double[] b : passed) {
             double dx = b[0] - odometry.x();
             double dy = b[1] - odometry.y();
             if (StrictMath.hypot(dx, dy) < 350) {
-                double off = StrictMath.abs(StrictMath.IEEEremainder(StrictMath.atan2(dy, dx) - toward, 2 * StrictMath.PI));
+                double off = StrictMath.abs(
+                        StrictMath.IEEEremainder(StrictMath.atan2(dy, dx) - toward, 2 * StrictMath.PI));
                 if (off < StrictMath.toRadians(60)) {
                     return true;
                 }

@@ -35,7 +35,8 @@ final class ControllerClasses {
         }
         CodeSource source = type.getProtectionDomain().getCodeSource();
         if (source == null || source.getLocation() == null) {
-            throw new IllegalArgumentException("cannot tell where the class " + type.getName() + " was loaded from (no code"
+            throw new IllegalArgumentException("cannot tell where the class " + type.getName()
+                    + " was loaded from (no code"
                     + " source); give a class compiled into a folder or jar on the test's classpath");
         }
         return new Found(type.getName(), Optional.of(path(source.getLocation(), type.getName())));
@@ -48,7 +49,8 @@ final class ControllerClasses {
      */
     static Found named(String name) {
         if (name == null || name.isBlank()) {
-            throw new IllegalArgumentException("no controller named: give a controller class name, e.g. Run.of(\"MyController\"),"
+            throw new IllegalArgumentException(
+                    "no controller named: give a controller class name, e.g. Run.of(\"MyController\"),"
                     + " or its class, Run.of(MyController.class)");
         }
         if (!name.contains(".") && TestKit.bundledControllers().contains(name)
@@ -59,7 +61,8 @@ final class ControllerClasses {
         ClassLoader loader = Thread.currentThread().getContextClassLoader();
         URL url = (loader != null ? loader : ControllerClasses.class.getClassLoader()).getResource(resource);
         if (url == null) {
-            throw new IllegalArgumentException("no controller class '" + name + "' on the test's classpath, and no bundled"
+            throw new IllegalArgumentException("no controller class '" + name
+                    + "' on the test's classpath, and no bundled"
                     + " controller of that name (bundled: " + String.join(", ", TestKit.bundledControllers())
                     + "); give the"
                     + " class's full name with its package, e.g. Run.of(\"mypackage." + name + "\"), or its class:"
@@ -75,7 +78,8 @@ final class ControllerClasses {
             try {
                 return Path.of(new java.net.URI(spec.substring(0, spec.indexOf("!/"))));
             } catch (URISyntaxException | RuntimeException e) {
-                throw new IllegalArgumentException("cannot tell which jar the class " + name + " comes from (" + url + ")", e);
+                throw new IllegalArgumentException("cannot tell which jar the class " + name + " comes from ("
+                        + url + ")", e);
             }
         }
         Path file = path(url, name);
@@ -84,7 +88,8 @@ final class ControllerClasses {
             root = root.getParent();
         }
         if (root == null) {
-            throw new IllegalArgumentException("cannot tell which folder the class " + name + " comes from (" + url + ")");
+            throw new IllegalArgumentException("cannot tell which folder the class " + name
+                    + " comes from (" + url + ")");
         }
         return root;
     }
@@ -93,7 +98,8 @@ final class ControllerClasses {
         try {
             return Path.of(location.toURI());
         } catch (URISyntaxException | RuntimeException e) {
-            throw new IllegalArgumentException("the class " + name + " comes from " + location + ", which is not a folder or"
+            throw new IllegalArgumentException("the class " + name + " comes from " + location
+                    + ", which is not a folder or"
                     + " jar file the simulator can load it from", e);
         }
     }

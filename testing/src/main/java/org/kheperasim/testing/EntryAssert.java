@@ -32,7 +32,8 @@ public final class EntryAssert extends RunAssert {
             Pose then = first.poseAt(deadline);
             throw Failure.of(first.name() + " entered region '" + region + "' too late, at " + at + ".")
                     .expected("to enter region '" + region + "' " + bounds(g) + " before " + deadline)
-                    .happened(String.format(Locale.ROOT, "first entered at %s; at %s the robot was at %s, %.1f mm from the"
+                    .happened(String.format(Locale.ROOT,
+                            "first entered at %s; at %s the robot was at %s, %.1f mm from the"
                             + " region", at, deadline, then, RunShapes.distanceTo(then.x(), then.y(), g)))
                     .raise(run);
         }

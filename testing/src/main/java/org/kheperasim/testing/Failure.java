@@ -76,7 +76,8 @@ final class Failure {
     /** Where the trace is: the recording itself, or the file saved for this test now. */
     private static String trace(Run run) {
         if (run.recordedFrom().isPresent()) {
-            return RunSpec.shown(run.recordedFrom().get()) + "\n            (watch it: khepera-sim's window, File > Open recording)";
+            return RunSpec.shown(run.recordedFrom().get())
+                    + "\n            (watch it: khepera-sim's window, File > Open recording)";
         }
         try {
             Path saved = run.saveTo(TestRuns.folderNow());

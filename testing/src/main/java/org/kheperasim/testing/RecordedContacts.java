@@ -50,10 +50,12 @@ final class RecordedContacts {
             }
             if (what != null) {
                 if (open != null && open.what() == what) {
-                    open = new Contact(open.from(), new SimTime(s.nanos[k]), what, open.side(), open.x(), open.y(), false);
+                    open = new Contact(open.from(), new SimTime(s.nanos[k]), what, open.side(), open.x(),
+                            open.y(), false);
                 } else {
                     add(out, open);
-                    open = new Contact(new SimTime(s.nanos[k]), new SimTime(s.nanos[k]), what, side, s.x[k], s.y[k], false);
+                    open = new Contact(new SimTime(s.nanos[k]), new SimTime(s.nanos[k]), what, side,
+                            s.x[k], s.y[k], false);
                 }
                 continue;
             }

@@ -64,7 +64,8 @@ final class RecordedRuns {
         }
         TraceSamples.Series first = samples.robots.get(0);
         double seconds = first.nanos[first.size - 1] / 1e9;
-        String arenaArg = arenaFile != null ? arenaFile.toString() : folder ? path.resolve("start.arena").toString() : arena.name();
+        String arenaArg = arenaFile != null ? arenaFile.toString() : folder
+                ? path.resolve("start.arena").toString() : arena.name();
         RunSpec spec = new RunSpec(arenaArg, arena, controllers, settings, List.of(), Long.parseLong(h.get("seed")),
                 seconds, Long.parseLong(h.get("sample-ms")), false, RunSpec.DEFAULT_HANG_TIMEOUT, edits);
         return shape(spec, samples, text, traceFile, edits);
@@ -91,14 +92,17 @@ final class RecordedRuns {
         List<Cap> caps = RunShapes.caps(samples, arena);
         Map<String, Integer> capsIn = new LinkedHashMap<>();
         for (KitRegion r : arena.regions()) {
-            capsIn.put(r.name(), (int) caps.stream().filter(c -> c.heldAtEnd() < 0 && r.contains(c.endX(), c.endY())).count());
+            capsIn.put(r.name(),
+                    (int) caps.stream().filter(c -> c.heldAtEnd() < 0 && r.contains(c.endX(), c.endY())).count());
         }
         Score score = withoutCoverage(RunShapes.score(TestKit.score(arena, spec.seconds(), enteredByAny, capsIn)),
                 arena);
         return new Run(spec, traceFile, SimTime.ofSeconds(spec.seconds()), robots, caps, score, text, List.of());
     }
 
-    /** A trace does not record the floor a robot covered: its {@code cover} tasks say so rather than score 0 silently. */
+    /**
+     * A trace does not record the floor a robot covered: its {@code cover} tasks say so rather than score 0 silently.
+     */
     private static Score withoutCoverage(Score s, KitArena arena) {
         List<TaskScore> tasks = new ArrayList<>();
         for (int i = 0; i < s.tasks().size(); i++) {
@@ -109,7 +113,10 @@ final class RecordedRuns {
         return new Score(tasks, tasks.stream().mapToDouble(TaskScore::points).sum(), s.max());
     }
 
-    /** The recorded arena: given, the recording's start.arena, an arena file beside the trace, or the bundled one it names. */
+    /**
+     * The recorded arena: given, the recording's start.arena, an arena file beside the trace, or the bundled one it
+     * names.
+     */
     private static KitArena arena(Path path, Path traceFile, boolean folder, Path arenaFile, String recorded) {
         String[] nameAndSha = recorded.split(" sha256=", 2);
         String sha = nameAndSha.length == 2 ? nameAndSha[1] : null;
@@ -125,13 +132,15 @@ final class RecordedRuns {
             } else if (TestKit.bundledArenas().contains(nameAndSha[0])) {
                 a = TestKit.bundledArena(nameAndSha[0]);
             } else {
-                throw new IllegalArgumentException("the arena '" + nameAndSha[0] + "' of " + traceFile + " is not bundled"
+                throw new IllegalArgumentException("the arena '" + nameAndSha[0] + "' of " + traceFile
+                        + " is not bundled"
                         + " and no " + nameAndSha[0] + ".arena or start.arena with its SHA-256 lies beside the trace;"
                         + " give it: Run.load(trace, Path.of(\"" + nameAndSha[0] + ".arena\"))");
             }
         }
         if (sha != null && !a.sha256().equals(sha)) {
-            throw new IllegalArgumentException("the arena " + a.name() + " is not the one " + traceFile + " was recorded in"
+            throw new IllegalArgumentException("the arena " + a.name() + " is not the one " + traceFile
+                    + " was recorded in"
                     + " (its SHA-256 is " + a.sha256() + ", the trace names " + sha + "); give the recorded"
                     + " one: Run.load(trace, arenaFile)");
         }

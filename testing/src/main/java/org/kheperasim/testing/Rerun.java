@@ -37,7 +37,10 @@ public final class Rerun {
         return firstDifference;
     }
 
-    /** @return one line per header field that differs (seed, arena, controller, settings), e.g. {@code settings: recorded 'defaults', now '...'} */
+    /**
+     * @return one line per header field that differs (seed, arena, controller, settings), e.g.
+     *     {@code settings: recorded 'defaults', now '...'}
+     */
     public List<String> headerDifferences() {
         return header;
     }
@@ -72,13 +75,15 @@ public final class Rerun {
             try {
                 found = ControllerClasses.named(c);
             } catch (IllegalArgumentException e) {
-                throw new IllegalArgumentException("the recorded run's controller " + c + " is not on the test's classpath,"
+                throw new IllegalArgumentException("the recorded run's controller " + c
+                        + " is not on the test's classpath,"
                         + " so it cannot be run again; put the class (the same version) in the test project", e);
             }
             names.add(found.name());
             found.root().ifPresent(classpath::add);
         }
-        return new RunSpec(recorded.arenaArg(), recorded.arena(), names, recorded.settings(), new ArrayList<>(classpath),
+        return new RunSpec(recorded.arenaArg(), recorded.arena(), names, recorded.settings(),
+                new ArrayList<>(classpath),
                 recorded.seed(), recorded.seconds(), recorded.sampleMillis(), recorded.trusted(),
                 recorded.hangTimeoutSeconds(), recorded.edits());
     }

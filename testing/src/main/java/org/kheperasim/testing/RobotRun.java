@@ -26,7 +26,8 @@ public final class RobotRun {
     private Run run;
 
     RobotRun(int index, String name, String controller, List<PathPoint> path, List<Contact> contacts,
-            Map<String, SimTime> regionsEntered, Ending ending, double distanceMm, int collisions, double visitedPercent) {
+            Map<String, SimTime> regionsEntered, Ending ending, double distanceMm, int collisions,
+            double visitedPercent) {
         this.index = index;
         this.name = name;
         this.controller = controller;
@@ -57,7 +58,10 @@ public final class RobotRun {
         return index;
     }
 
-    /** @return the robot's name in messages: its controller's simple class name, with {@code #index} when the run has several robots */
+    /**
+     * @return the robot's name in messages: its controller's simple class name, with {@code #index} when the run has
+     *     several robots
+     */
     public String name() {
         return name;
     }

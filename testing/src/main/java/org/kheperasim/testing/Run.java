@@ -109,7 +109,9 @@ public final class Run {
         return spec.seed();
     }
 
-    /** @return the settings every robot had, as a trace's header states them: {@code defaults} or {@code key=value ...} */
+    /**
+     * @return the settings every robot had, as a trace's header states them: {@code defaults} or {@code key=value ...}
+     */
     public String settings() {
         return spec.settings().get(0).describe();
     }
@@ -156,12 +158,16 @@ public final class Run {
         return (int) caps.stream().filter(c -> c.heldAtEnd() < 0 && r.contains(c.endX(), c.endY())).count();
     }
 
-    /** @return the score of the arena's tasks, as {@code khepera-sim run} prints it (0/0 when the arena sets no task) */
+    /**
+     * @return the score of the arena's tasks, as {@code khepera-sim run} prints it (0/0 when the arena sets no task)
+     */
     public Score score() {
         return score;
     }
 
-    /** @return the run's trace, as {@code khepera-sim run --trace FILE} writes it (for a recorded run, the file's text) */
+    /**
+     * @return the run's trace, as {@code khepera-sim run --trace FILE} writes it (for a recorded run, the file's text)
+     */
     public String trace() {
         return trace;
     }
@@ -235,12 +241,16 @@ public final class Run {
                 return r;
             }
         }
-        throw new IllegalArgumentException("the arena " + arena() + " has no region named '" + name + "'; its regions are "
+        throw new IllegalArgumentException("the arena " + arena() + " has no region named '" + name
+                + "'; its regions are "
                 + (spec.arena().regions().isEmpty() ? "none" : String.join(", ",
                 spec.arena().regions().stream().map(KitRegion::name).toList())));
     }
 
-    /** @return e.g. {@code MyController in lab, seed 1, 60.000 s: ended at (380.0, 610.2) mm heading 90.0 deg; score 0/100} */
+    /**
+     * @return e.g. {@code MyController in lab, seed 1, 60.000 s: ended at (380.0, 610.2) mm heading 90.0 deg; score
+     *     0/100}
+     */
     @Override
     public String toString() {
         StringBuilder s = new StringBuilder(robots.size() == 1 ? robot().name() : robots.size() + " robots")

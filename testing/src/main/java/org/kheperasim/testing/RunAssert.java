@@ -76,7 +76,8 @@ public sealed class RunAssert permits EntryAssert {
         }
         if (first != null) {
             Contact c = bad.get(0);
-            String more = bad.size() == 1 ? "" : "; " + bad.size() + " such contacts in all, the last " + bad.get(bad.size() - 1);
+            String more = bad.size() == 1 ? ""
+                    : "; " + bad.size() + " such contacts in all, the last " + bad.get(bad.size() - 1);
             throw Failure.of(first.name() + " touched " + c.what().described() + " at " + c.from() + ".")
                     .expected("never to touch " + things(kinds))
                     .happened("touched " + c + more)
@@ -141,7 +142,8 @@ public sealed class RunAssert permits EntryAssert {
             Pose p = r.finalPose();
             if (!g.contains(p.x(), p.y())) {
                 throw Failure.of(r.name() + " did not end in region '" + region + "'.")
-                        .expected("to be inside region '" + region + "' " + bounds(g) + " at the end, " + run.duration())
+                        .expected("to be inside region '" + region + "' " + bounds(g) + " at the end, "
+                                + run.duration())
                         .happened(String.format(Locale.ROOT, "it ended at %s, %.1f mm from the region", p,
                                 RunShapes.distanceTo(p.x(), p.y(), g)))
                         .raise(run);
@@ -163,8 +165,10 @@ public sealed class RunAssert permits EntryAssert {
             Pose p = r.finalPose();
             double d = p.distanceTo(x, y);
             if (!(d <= mm)) {
-                throw Failure.of(String.format(Locale.ROOT, "%s ended %.1f mm from (%.1f, %.1f) mm.", r.name(), d, x, y))
-                        .expected(String.format(Locale.ROOT, "to end within %.1f mm of (%.1f, %.1f) mm, at %s", mm, x, y,
+                throw Failure.of(String.format(Locale.ROOT, "%s ended %.1f mm from (%.1f, %.1f) mm.",
+                        r.name(), d, x, y))
+                        .expected(String.format(Locale.ROOT,
+                                "to end within %.1f mm of (%.1f, %.1f) mm, at %s", mm, x, y,
                                 run.duration()))
                         .happened("it ended at " + p)
                         .raise(run);
@@ -209,7 +213,8 @@ public sealed class RunAssert permits EntryAssert {
         if (!(s.points() >= points)) {
             throw Failure.of("The run scored " + Score.number(s.points()) + " of " + Score.number(s.max())
                     + " points, less than " + Score.number(points) + ".")
-                    .expected("a score of at least " + Score.number(points) + " of " + Score.number(s.max()) + " points by "
+                    .expected("a score of at least " + Score.number(points) + " of "
+                            + Score.number(s.max()) + " points by "
                             + run.duration())
                     .happened("score " + s)
                     .raise(run);
@@ -230,9 +235,11 @@ public sealed class RunAssert permits EntryAssert {
             List<String> moved = new ArrayList<>();
             run.caps().stream().filter(Cap::moved).forEach(c -> moved.add("cap " + c.id() + " first moved at "
                     + c.firstMoved().orElseThrow() + (c.heldAtEnd() >= 0 ? ", held at the end" : "")));
-            throw Failure.of(in + " cap" + (in == 1 ? "" : "s") + " lie in region '" + region + "' at the end, fewer than "
+            throw Failure.of(in + " cap" + (in == 1 ? "" : "s") + " lie in region '" + region
+                    + "' at the end, fewer than "
                     + caps + ".")
-                    .expected("at least " + caps + " cap" + (caps == 1 ? "" : "s") + " on the floor in region '" + region
+                    .expected("at least " + caps + " cap" + (caps == 1 ? "" : "s")
+                            + " on the floor in region '" + region
                             + "' at " + run.duration())
                     .happened(in + " there; " + (moved.isEmpty() ? "no cap moved" : String.join("; ", moved)))
                     .raise(run);

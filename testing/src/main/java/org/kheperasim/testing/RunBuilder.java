@@ -70,7 +70,8 @@ public final class RunBuilder {
      */
     public RunBuilder in(Path arenaFile) {
         if (!Files.isRegularFile(arenaFile)) {
-            throw new IllegalArgumentException("no arena file " + arenaFile.toAbsolutePath() + "; give the path of an .arena"
+            throw new IllegalArgumentException("no arena file " + arenaFile.toAbsolutePath()
+                    + "; give the path of an .arena"
                     + " file (relative to the project's folder), or a bundled arena's name with in(\"maze\")");
         }
         return in(arenaFile.toString());
@@ -83,7 +84,8 @@ public final class RunBuilder {
      */
     public RunBuilder seconds(double simulatedSeconds) {
         if (!(simulatedSeconds > 0) || Double.isInfinite(simulatedSeconds)) {
-            throw new IllegalArgumentException("seconds(" + simulatedSeconds + "): give a positive number of simulated seconds");
+            throw new IllegalArgumentException("seconds(" + simulatedSeconds
+                    + "): give a positive number of simulated seconds");
         }
         this.seconds = simulatedSeconds;
         return this;
@@ -186,7 +188,8 @@ public final class RunBuilder {
      */
     public RunBuilder robotSetting(int index, String key, String value) {
         if (KitSettings.wholeRun(key)) {
-            throw new IllegalArgumentException("robotSetting(" + index + ", \"" + key + "\", ...): " + key + " is one setting"
+            throw new IllegalArgumentException("robotSetting(" + index + ", \"" + key + "\", ...): " + key
+                    + " is one setting"
                     + " for the whole run, not per robot; give it with set(\"" + key + "\", \"" + value + "\")");
         }
         KitSettings.defaults().with(key, value);
@@ -203,7 +206,8 @@ public final class RunBuilder {
     public RunBuilder sampleEvery(SimTime period) {
         long ms = period.millis();
         if (period.nanos() % 1_000_000L != 0 || ms < 1 || ms > 3_600_000) {
-            throw new IllegalArgumentException("sampleEvery(" + period + "): give whole milliseconds from 1 ms to 1 hour,"
+            throw new IllegalArgumentException("sampleEvery(" + period
+                    + "): give whole milliseconds from 1 ms to 1 hour,"
                     + " e.g. sampleEvery(millis(10))");
         }
         this.sampleMillis = ms;
@@ -228,7 +232,8 @@ public final class RunBuilder {
      */
     public RunBuilder hangTimeout(double realSeconds) {
         if (!(realSeconds > 0) || Double.isInfinite(realSeconds)) {
-            throw new IllegalArgumentException("hangTimeout(" + realSeconds + "): give a positive number of real seconds");
+            throw new IllegalArgumentException("hangTimeout(" + realSeconds
+                    + "): give a positive number of real seconds");
         }
         this.hangTimeoutSeconds = realSeconds;
         return this;
@@ -251,7 +256,8 @@ public final class RunBuilder {
 
     RunSpec spec() {
         if (arena == null) {
-            throw new IllegalStateException("no arena: say where to run, e.g. .in(\"lab\") or .in(Path.of(\"src/test/resources/my.arena\"))");
+            throw new IllegalStateException(
+                    "no arena: say where to run, e.g. .in(\"lab\") or .in(Path.of(\"src/test/resources/my.arena\"))");
         }
         int n = arena.robotCount();
         Set<Integer> given = new LinkedHashSet<>(robotControllers.keySet());

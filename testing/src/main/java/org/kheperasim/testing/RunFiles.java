@@ -49,7 +49,8 @@ final class RunFiles {
             TestKit.writeRunPage(trace, run.spec().arena(), run.toString(), failures(run), page(trace));
             TestKit.writeAtomically(folder.resolve(name + ".txt"), about(run, trace));
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot write the run's files in " + folder.toAbsolutePath() + ": " + e.getMessage(), e);
+            throw new UncheckedIOException("cannot write the run's files in " + folder.toAbsolutePath() + ": "
+                    + e.getMessage(), e);
         }
         return trace;
     }
@@ -80,7 +81,8 @@ final class RunFiles {
         s.append("Watch it in a browser: open ").append(RunSpec.shown(page(trace))).append('\n');
         s.append("Or in the simulator's window: start it (java -jar khepera-sim.jar), choose File > Open recording\n")
                 .append("and open ").append(shown).append('\n');
-        s.append("Make the same run again (the simulator is deterministic: add --trace FILE for the same trace, byte for byte):\n  ")
+        s.append("Make the same run again (the simulator is deterministic: add --trace FILE for the same trace, byte"
+                + " for byte):\n  ")
                 .append(run.commandLine()).append('\n');
         s.append("Check that it still comes out the same:\n  java -jar khepera-sim.jar verify ").append(shown);
         if (!run.spec().classpath().isEmpty()) {

@@ -46,7 +46,8 @@ public final class RunReports implements BeforeEachCallback, AfterTestExecutionC
         if (m.find()) {
             test += "-" + m.group(1);
         }
-        context.getStore(NAMESPACE).put(TestRuns.class, TestRuns.enter(context.getRequiredTestClass().getSimpleName(), test));
+        context.getStore(NAMESPACE)
+                .put(TestRuns.class, TestRuns.enter(context.getRequiredTestClass().getSimpleName(), test));
     }
 
     /**
@@ -69,8 +70,10 @@ public final class RunReports implements BeforeEachCallback, AfterTestExecutionC
         // A failed assertion of this library already names its run's trace; any other failure gets the line here.
         String failure = String.valueOf(context.getExecutionException().get().getMessage());
         if (!failure.contains(Failure.TRACE_LINE)) {
-            System.err.println("kheperasim: " + context.getDisplayName() + " failed; its run" + (saved.size() == 1 ? " is"
-                    : "s are") + " saved to watch in the simulator's window (File > Open recording): " + String.join(", ", saved));
+            System.err.println("kheperasim: " + context.getDisplayName() + " failed; its run"
+                    + (saved.size() == 1 ? " is"
+                    : "s are") + " saved to watch in the simulator's window (File > Open recording): "
+                            + String.join(", ", saved));
         }
     }
 

@@ -52,14 +52,18 @@ record RunSpec(String arenaArg, KitArena arena, List<String> controllers, List<K
                 hangTimeoutSeconds, edits);
     }
 
-    /** @return the {@code khepera-sim run} command line that makes the same run (add {@code --trace FILE} for its trace) */
+    /**
+     * @return the {@code khepera-sim run} command line that makes the same run (add {@code --trace FILE} for its trace)
+     */
     String commandLine() {
-        List<String> args = new ArrayList<>(List.of("java", "-jar", "khepera-sim.jar", "run", "--arena", quote(arenaArg)));
+        List<String> args = new ArrayList<>(
+                List.of("java", "-jar", "khepera-sim.jar", "run", "--arena", quote(arenaArg)));
         if (!classpath.isEmpty()) {
             args.add("--classpath");
             args.add(quote(String.join(File.pathSeparator, classpath.stream().map(RunSpec::shown).toList())));
         }
-        args.addAll(List.of("--controller", controllers.get(0), "--seed", Long.toString(seed), "--seconds", number(seconds)));
+        args.addAll(List.of("--controller", controllers.get(0), "--seed", Long.toString(seed), "--seconds",
+                number(seconds)));
         settings.get(0).overrides().forEach((k, v) -> args.addAll(List.of("--set", k + "=" + v)));
         SortedMap<String, String> base = settings.get(0).overrides();
         for (int i = 1; i < controllers.size(); i++) {

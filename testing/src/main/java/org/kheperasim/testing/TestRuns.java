@@ -77,7 +77,8 @@ final class TestRuns {
         if (t != null) {
             return t.folder;
         }
-        return callingTest().map(f -> base().resolve(safe(f.getDeclaringClass().getSimpleName())).resolve(safe(f.getMethodName())))
+        return callingTest()
+                .map(f -> base().resolve(safe(f.getDeclaringClass().getSimpleName())).resolve(safe(f.getMethodName())))
                 .orElse(base());
     }
 

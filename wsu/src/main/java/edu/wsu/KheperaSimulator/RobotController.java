@@ -309,7 +309,9 @@ public abstract class RobotController implements Controller {
         return robot().getLeftPosition();
     }
 
-    /** @return the right wheel's position counter since the run started, in the units of {@link #getLeftWheelPosition()} */
+    /**
+     * @return the right wheel's position counter since the run started, in the units of {@link #getLeftWheelPosition()}
+     */
     public long getRightWheelPosition() {
         return robot().getRightPosition();
     }

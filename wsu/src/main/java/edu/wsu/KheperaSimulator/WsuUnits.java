@@ -60,7 +60,10 @@ final class WsuUnits {
     static final double WHEEL_BASE_MM = 53;
     /** Wheel travel per encoder pulse, mm (Khepera User Manual). */
     static final double MM_PER_PULSE = 0.08;
-    /** Legacy counts per encoder pulse: {@value #LEGACY_COUNTS_PER_DEGREE} over the pulses a wheel turns per degree on the spot. */
+    /**
+     * Legacy counts per encoder pulse: {@value #LEGACY_COUNTS_PER_DEGREE} over the pulses a wheel turns per degree on
+     * the spot.
+     */
     static final double LEGACY_COUNTS_PER_PULSE = legacyCountsPerPulse();
     /** The original's panel, pixels a side. */
     static final int PANEL_PX = 500;
@@ -123,7 +126,8 @@ final class WsuUnits {
     /**
      * @param wsu a valid wheel speed, −9..9 WSU units
      * @param legacy whether {@value #SPEED_UNITS} is {@value #LEGACY}
-     * @return the speed in Khepera speed units: {@code wsu}, or {@code wsu} × {@link #LEGACY_SPEED_PER_WSU_SPEED} rounded
+     * @return the speed in Khepera speed units: {@code wsu}, or {@code wsu} × {@link #LEGACY_SPEED_PER_WSU_SPEED}
+     *     rounded
      */
     static int toKheperaSpeed(int wsu, boolean legacy) {
         return legacy ? (int) StrictMath.round(wsu * LEGACY_SPEED_PER_WSU_SPEED) : toKheperaSpeed(wsu);

@@ -55,7 +55,8 @@ public final class Controllers {
         if (Modifier.isAbstract(type.getModifiers())) {
             throw new ControllerException("Controller " + name + " is abstract: name a concrete subclass");
         }
-        if (classicConstructor(type) == null && !(Controller.class.isAssignableFrom(type) && noArgConstructor(type) != null)) {
+        if (classicConstructor(type) == null
+                && !(Controller.class.isAssignableFrom(type) && noArgConstructor(type) != null)) {
             throw new ControllerException("Controller " + name + " has no constructor " + type.getSimpleName()
                     + "(CurrentRobotState, MessagePasser): add one as in the Appendix"
                     + (Controller.class.isAssignableFrom(type) ? ", or a constructor with no parameters" : ""));
@@ -264,7 +265,8 @@ public final class Controllers {
     private static final ClassValue<Constructor<?>[]> CONSTRUCTORS = new ClassValue<>() {
         @Override
         protected Constructor<?>[] computeValue(Class<?> type) {
-            return new Constructor<?>[] {accessible(type, CurrentRobotState.class, MessagePasser.class), accessible(type)};
+            return new Constructor<?>[] {accessible(type, CurrentRobotState.class, MessagePasser.class),
+                    accessible(type)};
         }
     };
 

@@ -23,7 +23,8 @@ import java.util.Locale;
  * @param lamp the lamp series' mean ambient readings, {@code [distance][sensor]}
  * @param raw every raw reading, as CSV lines
  */
-public record Calibration(String robot, String date, String base, Drive drive, Wall wall, double[] lampMm, double[][] lamp,
+public record Calibration(String robot, String date, String base, Drive drive, Wall wall, double[] lampMm,
+        double[][] lamp,
         List<String> raw) {
     /** The first line of a calibration file. */
     public static final String MAGIC = "khepera-calibration 1";
@@ -69,7 +70,8 @@ public record Calibration(String robot, String date, String base, Drive drive, W
         sb.append("base ").append(base).append('\n');
         sb.append("wall ").append(sample.getFileName()).append('\n');
         sb.append("samples ").append(csv.getFileName()).append('\n');
-        sb.append(String.format(Locale.ROOT, "drive.mmPerPulse %.5f%ndrive.wheelBaseMm %.3f%ndrive.mmPerSecondPerUnit %.4f%n"
+        sb.append(String.format(Locale.ROOT,
+                "drive.mmPerPulse %.5f%ndrive.wheelBaseMm %.3f%ndrive.mmPerSecondPerUnit %.4f%n"
                 + "motor.rightOverLeft %.5f%n", drive.mmPerPulse(), drive.wheelBaseMm(), drive.mmPerSecondPerUnit(),
                 drive.rightOverLeft()));
         for (int d = 0; d < lampMm.length; d++) {
@@ -86,7 +88,8 @@ public record Calibration(String robot, String date, String base, Drive drive, W
     private String sampleText() {
         int blocks = wall.means().length;
         int sensors = wall.means()[0][0].length;
-        StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "%d %d %d %s %s%n", sensors, wall.headings(), blocks,
+        StringBuilder sb = new StringBuilder(
+                String.format(Locale.ROOT, "%d %d %d %s %s%n", sensors, wall.headings(), blocks,
                 Answers.fmt(wall.startMm()), Answers.fmt(wall.stepMm())));
         for (int t = 0; t < blocks; t++) {
             sb.append("TURN ").append(t).append('\n');
@@ -123,7 +126,8 @@ public record Calibration(String robot, String date, String base, Drive drive, W
             }
         }
         if (wallName == null) {
-            throw new IllegalArgumentException("calibration " + calibration + " names no wall file: add a line 'wall FILE.sample'");
+            throw new IllegalArgumentException("calibration " + calibration
+                    + " names no wall file: add a line 'wall FILE.sample'");
         }
         Path p = calibration.toAbsolutePath().getParent().resolve(wallName);
         List<String> s = Files.readAllLines(p, StandardCharsets.UTF_8);

@@ -66,7 +66,8 @@ public final class CalibrationRun {
         double[] lampMm = lampDistances();
         double[][] lamp = new double[lampMm.length][];
         for (int d = 0; d < lampMm.length; d++) {
-            answers.pause("lamp." + d, String.format(Locale.ROOT, "Lamp: put the lamp straight ahead of the robot, its bulb"
+            answers.pause("lamp." + d,
+                    String.format(Locale.ROOT, "Lamp: put the lamp straight ahead of the robot, its bulb"
                     + " %.0f mm from the robot's front (by ruler), nothing else lit;", lampMm[d]));
             int[][] r = moves.readings(true, plan.readings());
             record("lamp", d, lampMm[d], 0, r);
@@ -89,7 +90,8 @@ public final class CalibrationRun {
         answers.pause("spin.start", "Mark the robot's heading on the floor;");
         moves.moveBy(-plan.spinPulses(), plan.spinPulses());
         double spinDeg = answers.number("spin.deg", "Measure the angle the robot turned to the left, degrees (a full"
-                + " turn is 360)", StrictMath.toDegrees(2 * plan.spinPulses() * NOMINAL_MM_PER_PULSE / NOMINAL_WHEEL_BASE_MM));
+                + " turn is 360)", StrictMath.toDegrees(
+                        2 * plan.spinPulses() * NOMINAL_MM_PER_PULSE / NOMINAL_WHEEL_BASE_MM));
         double wheelBase = 2 * plan.spinPulses() * mmPerPulse / StrictMath.toRadians(spinDeg);
         // Curving by sideMm over runMm turns the heading by 2 side / run; the wheels differ by that times the base.
         double turn = 2 * sideMm / runMm;
@@ -98,7 +100,8 @@ public final class CalibrationRun {
         long millis = 2000;
         int[] d = moves.run(speed, millis);
         double unit = (d[0] + d[1]) / 2.0 * mmPerPulse / (millis / 1000.0) / speed;
-        say(String.format(Locale.ROOT, "wheels: %.5f mm per pulse, wheel base %.2f mm, %.3f mm/s per speed unit, right/left %.4f",
+        say(String.format(Locale.ROOT,
+                "wheels: %.5f mm per pulse, wheel base %.2f mm, %.3f mm/s per speed unit, right/left %.4f",
                 mmPerPulse, wheelBase, unit, rightOverLeft));
         return new Calibration.Drive(mmPerPulse, wheelBase, unit, rightOverLeft);
     }
@@ -115,7 +118,8 @@ public final class CalibrationRun {
             int[] base = moves.counters();
             for (int k = 0; k < h; k++) {
                 // Turn to the left on the spot: the wall then lies k * 360 / h degrees to the robot's right.
-                int p = (int) StrictMath.rint(StrictMath.toRadians(k * 360.0 / h) * drive.wheelBaseMm() / 2 / drive.mmPerPulse());
+                int p = (int) StrictMath.rint(
+                        StrictMath.toRadians(k * 360.0 / h) * drive.wheelBaseMm() / 2 / drive.mmPerPulse());
                 moves.moveTo(base[0] - p, base[1] + p);
                 int[][] r = moves.readings(false, plan.readings());
                 record("wall", t, start + t * step, k * 360.0 / h, r);
@@ -133,7 +137,8 @@ public final class CalibrationRun {
     }
 
     private double[] lampDistances() {
-        String s = answers.ask("lamp.distances", "Step 3 of 3, the lamp. The lamp distances, mm, comma-separated (none: skip)",
+        String s = answers.ask("lamp.distances",
+                "Step 3 of 3, the lamp. The lamp distances, mm, comma-separated (none: skip)",
                 "50,100,200,400");
         if (s.isBlank() || s.equals("none")) {
             return new double[0];
@@ -152,7 +157,8 @@ public final class CalibrationRun {
 
     private void record(String series, int block, double gapMm, double rightDeg, int[][] r) {
         for (int i = 0; i < r.length; i++) {
-            StringBuilder sb = new StringBuilder(String.format(Locale.ROOT, "%s,%d,%.2f,%.2f,%d", series, block, gapMm, rightDeg, i));
+            StringBuilder sb = new StringBuilder(
+                    String.format(Locale.ROOT, "%s,%d,%.2f,%.2f,%d", series, block, gapMm, rightDeg, i));
             for (int v : r[i]) {
                 sb.append(',').append(v);
             }

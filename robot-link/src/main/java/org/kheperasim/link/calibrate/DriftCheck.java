@@ -35,7 +35,8 @@ public final class DriftCheck {
         Calibration.Ahead ahead = Calibration.ahead(calibration);
         double[] gaps = ahead.gapsMm();
         double step = gaps.length > 1 ? gaps[1] - gaps[0] : 0;
-        answers.pause("check.placed", String.format(Locale.ROOT, "Put the robot facing the white wall straight on, its front"
+        answers.pause("check.placed",
+                String.format(Locale.ROOT, "Put the robot facing the white wall straight on, its front"
                 + " %.1f mm from it (by ruler), as in the calibration;", gaps[0]));
         RobotMoves moves = new RobotMoves(session, scanMillis);
         int stepPulses = (int) StrictMath.rint(step / ahead.mmPerPulse());
@@ -64,8 +65,10 @@ public final class DriftCheck {
         double[] c = changes.stream().mapToDouble(Double::doubleValue).sorted().toArray();
         double median = c.length % 2 == 1 ? c[c.length / 2] : (c[c.length / 2 - 1] + c[c.length / 2]) / 2;
         boolean drifted = StrictMath.abs(median) > threshold;
-        out.println(String.format(Locale.ROOT, "median change of %d lit readings: %+.1f %% (threshold %.1f %%): %s", c.length,
-                100 * median, 100 * threshold, drifted ? "DRIFTED, calibrate the robot again" : "within the calibration"));
+        out.println(String.format(Locale.ROOT,
+                "median change of %d lit readings: %+.1f %% (threshold %.1f %%): %s", c.length,
+                100 * median, 100 * threshold,
+                drifted ? "DRIFTED, calibrate the robot again" : "within the calibration"));
         out.flush();
         session.exchange(session.dialect().setSpeeds(0, 0));
         return drifted;

@@ -12,7 +12,8 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /** {@code bench}: the poll rate this link reaches. */
-@Command(name = "bench", mixinStandardHelpOptions = true, description = "Poll the robot (N, O, H) as fast as the link allows for a while and print"
+@Command(name = "bench", mixinStandardHelpOptions = true,
+        description = "Poll the robot (N, O, H) as fast as the link allows for a while and print"
         + " the rate reached next to the timing model's prediction. The wheels stay still.")
 final class BenchCommand implements Callable<Integer> {
     @Spec

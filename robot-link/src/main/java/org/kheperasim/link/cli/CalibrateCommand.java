@@ -21,7 +21,8 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /** {@code calibrate}: measure one real robot, guided on the console (docs/calibration.md). */
-@picocli.CommandLine.Command(name = "calibrate", mixinStandardHelpOptions = true, description = "Measure the robot's wheels,"
+@picocli.CommandLine.Command(name = "calibrate", mixinStandardHelpOptions = true,
+        description = "Measure the robot's wheels,"
         + " its sensors against a white wall at distances and headings, and a lamp, guided step by step; write the raw"
         + " samples and a dated calibration file. --check re-measures a few points against a calibration.")
 final class CalibrateCommand implements Callable<Integer> {
@@ -31,10 +32,12 @@ final class CalibrateCommand implements Callable<Integer> {
     @Mixin
     Connection connection;
 
-    @Option(names = "--robot", defaultValue = "khepera", paramLabel = "NAME", description = "The robot's name (its label). Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--robot", defaultValue = "khepera", paramLabel = "NAME",
+            description = "The robot's name (its label). Default: ${DEFAULT-VALUE}.")
     String robot;
 
-    @Option(names = "--out", defaultValue = ".", paramLabel = "DIR", description = "Where the files go. Default: the current folder.")
+    @Option(names = "--out", defaultValue = ".", paramLabel = "DIR",
+            description = "Where the files go. Default: the current folder.")
     Path out;
 
     @Option(names = "--date", paramLabel = "YYYY-MM-DD", description = "The calibration's date. Default: today (UTC).")
@@ -43,19 +46,24 @@ final class CalibrateCommand implements Callable<Integer> {
     @Option(names = "--non-interactive", description = "Ask nobody: every question takes its --answer, or its default.")
     boolean nonInteractive;
 
-    @Option(names = "--answer", paramLabel = "KEY=VALUE", description = "The answer to a question (its key is shown with it).")
+    @Option(names = "--answer", paramLabel = "KEY=VALUE",
+            description = "The answer to a question (its key is shown with it).")
     Map<String, String> given = new LinkedHashMap<>();
 
-    @Option(names = "--readings", defaultValue = "20", paramLabel = "N", description = "Readings per sensor per point. Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--readings", defaultValue = "20", paramLabel = "N",
+            description = "Readings per sensor per point. Default: ${DEFAULT-VALUE}.")
     int readings;
 
-    @Option(names = "--scan-ms", defaultValue = "20", paramLabel = "MS", description = "Time between readings, ms. Default: ${DEFAULT-VALUE} (the robot's scan).")
+    @Option(names = "--scan-ms", defaultValue = "20", paramLabel = "MS",
+            description = "Time between readings, ms. Default: ${DEFAULT-VALUE} (the robot's scan).")
     long scanMillis;
 
-    @Option(names = "--check", paramLabel = "FILE", description = "Re-measure a few wall points and compare them with this calibration.")
+    @Option(names = "--check", paramLabel = "FILE",
+            description = "Re-measure a few wall points and compare them with this calibration.")
     Path check;
 
-    @Option(names = "--threshold", defaultValue = "10", paramLabel = "PERCENT", description = "--check: the drift that fails, %%. Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--threshold", defaultValue = "10", paramLabel = "PERCENT",
+            description = "--check: the drift that fails, %%. Default: ${DEFAULT-VALUE}.")
     double thresholdPercent;
 
     @Override
@@ -72,7 +80,8 @@ final class CalibrateCommand implements Callable<Integer> {
         if (!day.matches("\\d{4}-\\d{2}-\\d{2}")) {
             throw new IllegalArgumentException("--date " + day + ": write it as YYYY-MM-DD");
         }
-        BufferedReader in = nonInteractive ? null : new BufferedReader(new InputStreamReader(Main.in, StandardCharsets.UTF_8));
+        BufferedReader in = nonInteractive ? null
+                : new BufferedReader(new InputStreamReader(Main.in, StandardCharsets.UTF_8));
         Answers answers = new Answers(o, in, given, k -> { });
         try (Session session = connection.open(o)) {
             session.open();
@@ -81,11 +90,13 @@ final class CalibrateCommand implements Callable<Integer> {
                         + " calibrate a Khepera (khepera1 or khepera2)");
             }
             if (check != null) {
-                return DriftCheck.drifted(session, answers, o, check, readings, scanMillis, thresholdPercent / 100) ? 1 : 0;
+                return DriftCheck.drifted(session, answers, o, check, readings, scanMillis,
+                        thresholdPercent / 100) ? 1 : 0;
             }
             CalibrationRun.Plan p = CalibrationRun.Plan.standard();
             CalibrationRun run = new CalibrationRun(session, answers, o,
-                    new CalibrationRun.Plan(readings, scanMillis, p.blocks(), p.headings(), p.runPulses(), p.spinPulses()));
+                    new CalibrationRun.Plan(readings, scanMillis, p.blocks(), p.headings(), p.runPulses(),
+                            p.spinPulses()));
             Path file = run.run(robot, day).write(out);
             o.println("wrote " + file + " (and its -wall.sample and -samples.csv beside it)");
             o.flush();

@@ -19,7 +19,8 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /** {@code check}: every command once, a table of results and round-trip times. */
-@picocli.CommandLine.Command(name = "check", mixinStandardHelpOptions = true, description = "Send every protocol command once (the robot does not"
+@picocli.CommandLine.Command(name = "check", mixinStandardHelpOptions = true,
+        description = "Send every protocol command once (the robot does not"
         + " move: C targets the current position, G keeps the counters, D and P are zero) and print a table.")
 final class CheckCommand implements Callable<Integer> {
     @Spec
@@ -123,7 +124,8 @@ final class CheckCommand implements Callable<Integer> {
                 session.sendBlind(stop);
             }
             Session.Stats s = session.stats();
-            out.println(String.format(Locale.ROOT, "%d of %d commands answered; %d retries; the robot was left with D,0,0",
+            out.println(String.format(Locale.ROOT,
+                    "%d of %d commands answered; %d retries; the robot was left with D,0,0",
                     plan.size() - failed, plan.size(), s.retries()));
             out.flush();
             return failed == 0 ? 0 : 1;

@@ -24,8 +24,8 @@ public final class Connection {
     Integer baud;
 
     @Option(names = "--dialect", paramLabel = "NAME", defaultValue = Dialect.DEFAULT,
-            description = "The robot's protocol: khepera1, khepera2 or epuck (a Bluetooth serial port is a serial port)."
-                    + " Default: ${DEFAULT-VALUE}.")
+            description = "The robot's protocol: khepera1, khepera2 or epuck (a Bluetooth serial port is"
+                    + " a serial port). Default: ${DEFAULT-VALUE}.")
     String dialect;
 
     /** @return the robot's protocol ({@code --dialect}) */
@@ -44,16 +44,20 @@ public final class Connection {
     @Option(names = "--stop-bits", defaultValue = "2", description = "Stop bits, 1 or 2. Default: ${DEFAULT-VALUE}.")
     int stopBits;
 
-    @Option(names = "--parity", defaultValue = "NONE", description = "Parity: ${COMPLETION-CANDIDATES}. Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--parity", defaultValue = "NONE",
+            description = "Parity: ${COMPLETION-CANDIDATES}. Default: ${DEFAULT-VALUE}.")
     SerialSettings.Parity parity;
 
-    @Option(names = "--eol", defaultValue = "LF", description = "What ends each command: CR or LF (send exactly one). Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--eol", defaultValue = "LF",
+            description = "What ends each command: CR or LF (send exactly one). Default: ${DEFAULT-VALUE}.")
     LineEnd eol;
 
-    @Option(names = "--timeout", defaultValue = "300", paramLabel = "MS", converter = CliNumbers.PositiveLong.class, description = "Reply timeout beyond the reply's wire time, ms. Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--timeout", defaultValue = "300", paramLabel = "MS", converter = CliNumbers.PositiveLong.class,
+            description = "Reply timeout beyond the reply's wire time, ms. Default: ${DEFAULT-VALUE}.")
     long timeoutMillis;
 
-    @Option(names = "--retries", defaultValue = "3", converter = CliNumbers.NonNegativeInt.class, description = "Times a command with no reply is sent again. Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--retries", defaultValue = "3", converter = CliNumbers.NonNegativeInt.class,
+            description = "Times a command with no reply is sent again. Default: ${DEFAULT-VALUE}.")
     int retries;
 
     /** @return the serial settings these options give */

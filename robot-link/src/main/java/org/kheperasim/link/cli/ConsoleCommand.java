@@ -15,7 +15,8 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;
 
 /** {@code console}: type raw protocol lines, see the replies. */
-@Command(name = "console", mixinStandardHelpOptions = true, description = "Type protocol lines (e.g. N, D,3,3, T,1,G) and see the robot's replies."
+@Command(name = "console", mixinStandardHelpOptions = true,
+        description = "Type protocol lines (e.g. N, D,3,3, T,1,G) and see the robot's replies."
         + " An empty line or end of input quits; the robot is sent D,0,0 on the way out.")
 final class ConsoleCommand implements Callable<Integer> {
     @Spec
@@ -36,7 +37,8 @@ final class ConsoleCommand implements Callable<Integer> {
             }
             out.println("type a command and Enter; an empty line quits");
             out.flush();
-            Thread hook = new Thread(() -> session.sendBlind(session.dialect().setSpeeds(0, 0)), "khepera-stop-on-exit");
+            Thread hook = new Thread(() -> session.sendBlind(session.dialect().setSpeeds(0, 0)),
+                    "khepera-stop-on-exit");
             session.link().addExitHook(hook);
             try {
                 BufferedReader in = new BufferedReader(new InputStreamReader(Main.in, StandardCharsets.UTF_8));

@@ -21,7 +21,8 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /** {@code run}: a controller drives the robot. */
-@Command(name = "run", mixinStandardHelpOptions = true, description = "Run a controller on the robot until it ends, --seconds pass, or Ctrl-C."
+@Command(name = "run", mixinStandardHelpOptions = true,
+        description = "Run a controller on the robot until it ends, --seconds pass, or Ctrl-C."
         + " The robot is sent D,0,0 on every way out.")
 final class RunCommand implements Callable<Integer> {
     @Spec
@@ -57,7 +58,8 @@ final class RunCommand implements Callable<Integer> {
         try (Session session = connection.open(out)) {
             Session.Versions v = session.open();
             out.println(CheckCommand.answers(session, v));
-            out.println("running " + type.getName() + (seconds > 0 ? " for " + seconds + " s" : " until it ends or Ctrl-C")
+            out.println("running " + type.getName()
+                    + (seconds > 0 ? " for " + seconds + " s" : " until it ends or Ctrl-C")
                     + "; speed clamp ±" + maxSpeed);
             out.flush();
             RobotBackend backend = new RobotBackend(session, settings, line -> {

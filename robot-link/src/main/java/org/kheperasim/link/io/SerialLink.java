@@ -37,7 +37,8 @@ public final class SerialLink extends ByteLink {
     public static List<PortInfo> listPorts() {
         List<PortInfo> ports = new ArrayList<>();
         for (SerialPort p : SerialPort.getCommPorts()) {
-            ports.add(new PortInfo(p.getSystemPortPath(), p.getDescriptivePortName() + " (" + p.getPortDescription() + ")"));
+            ports.add(new PortInfo(p.getSystemPortPath(),
+                    p.getDescriptivePortName() + " (" + p.getPortDescription() + ")"));
         }
         return ports;
     }
@@ -91,9 +92,10 @@ public final class SerialLink extends ByteLink {
         // 2 is "no such file" on Linux and macOS (ENOENT) and on Windows (ERROR_FILE_NOT_FOUND); 5 on Windows and
         // 13 on Linux and macOS are "access denied".
         if (errorCode == 2) {
-            return "cannot open serial port " + path + " (OS error 2): there is no such port. Check that the cable or USB"
-                    + " adapter is plugged in and the port's name (Device Manager, under Ports, on Windows); 'ports' lists"
-                    + " the ports this machine has";
+            return "cannot open serial port " + path
+                    + " (OS error 2): there is no such port. Check that the cable or USB"
+                    + " adapter is plugged in and the port's name (Device Manager, under Ports, on"
+                    + " Windows); 'ports' lists the ports this machine has";
         }
         String permission = windows ? "" : " (on Linux: sudo usermod -aG dialout $USER, then log in again)";
         return "cannot open serial port " + path + " (OS error " + errorCode + "): another program may hold it (close"

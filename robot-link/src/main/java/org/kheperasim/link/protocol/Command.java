@@ -232,8 +232,8 @@ public sealed interface Command permits Command.SetSpeedPid, Command.ReadVersion
     }
 
     /**
-     * {@code T,id,<cmd>}: pass a command to turret {@code id} (1 = the gripper, 2 = the K213 vision turret); the reply is
-     * {@code t,id,<reply>}.
+     * {@code T,id,<cmd>}: pass a command to turret {@code id} (1 = the gripper, 2 = the K213 vision turret); the reply
+     * is {@code t,id,<reply>}.
      */
     record Turret(int id, TurretCommand body) implements Command {
         /** The gripper turret's id. */

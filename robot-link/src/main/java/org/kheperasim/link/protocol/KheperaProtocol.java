@@ -54,7 +54,10 @@ public final class KheperaProtocol {
                 case 'G' -> { int[] a = ints(text, parts, 2); yield new Command.SetPositionCounters(a[0], a[1]); }
                 case 'H' -> { ints(text, parts, 0); yield new Command.ReadPositionCounters(); }
                 case 'I' -> { int[] a = ints(text, parts, 1); yield new Command.ReadAnalog(a[0]); }
-                case 'J' -> { int[] a = ints(text, parts, 4); yield new Command.SetPositionProfile(a[0], a[1], a[2], a[3]); }
+                case 'J' -> {
+                    int[] a = ints(text, parts, 4);
+                    yield new Command.SetPositionProfile(a[0], a[1], a[2], a[3]);
+                }
                 case 'K' -> { ints(text, parts, 0); yield new Command.ReadMotionStatus(); }
                 case 'L' -> { int[] a = ints(text, parts, 2); yield new Command.SetLed(a[0], a[1]); }
                 case 'N' -> { ints(text, parts, 0); yield new Command.ReadProximity(); }
@@ -129,7 +132,8 @@ public final class KheperaProtocol {
         String sent = command.encode();
         if (text.strip().equals(COMMAND_NOT_FOUND)) {
             throw new ProtocolException(Kind.COMMAND_NOT_FOUND, text, "the robot does not know command '" + sent
-                    + "' (it answered '" + COMMAND_NOT_FOUND + "'); is a turret fitted, and is the robot in protocol mode?");
+                    + "' (it answered '" + COMMAND_NOT_FOUND
+                    + "'); is a turret fitted, and is the robot in protocol mode?");
         }
         if (text.equals("z") || text.startsWith("z,")) {
             throw new ProtocolException(Kind.ROBOT_ERROR, text, "the robot refused command '" + sent
@@ -150,7 +154,8 @@ public final class KheperaProtocol {
         for (String v : values) {
             if (command.integerReply() ? !isInteger(v) : v.isEmpty() || !printable(v)) {
                 throw new ProtocolException(Kind.MALFORMED, text, "reply '" + text + "' to command '" + sent
-                        + "' has '" + v + "' where " + (command.integerReply() ? "an integer" : "a value") + " belongs");
+                        + "' has '" + v + "' where "
+                        + (command.integerReply() ? "an integer" : "a value") + " belongs");
             }
         }
         return new Reply(command, values);

@@ -129,7 +129,8 @@ public sealed interface TurretCommand {
                 if (c < 0x20 || c > 0x7E) {
                     throw new IllegalArgumentException(String.format(java.util.Locale.ROOT,
                             "T: turret command '%s' has the character U+%04X at position %d; a command is one line"
-                                    + " of printable ASCII (no line breaks or control characters)", printable(text), (int) c, i + 1));
+                                    + " of printable ASCII (no line breaks or control characters)", printable(text),
+                                    (int) c, i + 1));
                 }
             }
         }
@@ -146,7 +147,8 @@ public sealed interface TurretCommand {
             StringBuilder b = new StringBuilder();
             for (int i = 0; i < text.length() && b.length() < 60; i++) {
                 char c = text.charAt(i);
-                b.append(c >= 0x20 && c <= 0x7E ? String.valueOf(c) : String.format(java.util.Locale.ROOT, "U+%04X", (int) c));
+                b.append(c >= 0x20 && c <= 0x7E ? String.valueOf(c)
+                        : String.format(java.util.Locale.ROOT, "U+%04X", (int) c));
             }
             return b.toString();
         }

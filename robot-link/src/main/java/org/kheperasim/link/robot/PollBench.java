@@ -17,7 +17,8 @@ public final class PollBench {
      * @param cycles cycles run
      * @param stats the session's counts and round-trip times
      */
-    public record Result(int baud, double rateHz, double modelHz, double replyCharsPerCycle, long cycles, Session.Stats stats) {
+    public record Result(int baud, double rateHz, double modelHz, double replyCharsPerCycle, long cycles,
+            Session.Stats stats) {
         /** @return one line for people */
         public String describe() {
             return String.format(Locale.ROOT, "%6d baud: %6.1f poll cycles/s (N, O, H), %5.2f ms per cycle;"
@@ -37,7 +38,8 @@ public final class PollBench {
         long[][] r = new long[STEPS.length][];
         for (int k = 0; k < STEPS.length; k++) {
             // The encoders' letter is the dialect's (H on a Khepera, Q on an e-puck).
-            char letter = STEPS[k] == PollStep.ENCODERS ? session.dialect().readCounters().letter() : STEPS[k].command();
+            char letter = STEPS[k] == PollStep.ENCODERS
+                    ? session.dialect().readCounters().letter() : STEPS[k].command();
             r[k] = session.replies(letter);
         }
         return r;

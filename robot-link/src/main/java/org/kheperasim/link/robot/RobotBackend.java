@@ -125,7 +125,8 @@ public final class RobotBackend implements RobotPort {
         poller.start();
         if (!firstCycle.await(timeoutMillis, TimeUnit.MILLISECONDS) && failure == null) {
             throw new SessionException(SessionException.Kind.NO_REPLY, dialect.readProximity(),
-                    "the first poll cycle did not finish in " + timeoutMillis + " ms on " + session.link().describe(), null);
+                    "the first poll cycle did not finish in " + timeoutMillis + " ms on "
+                            + session.link().describe(), null);
         }
         if (failure != null) {
             throw failure;
@@ -355,7 +356,9 @@ public final class RobotBackend implements RobotPort {
 
     // ------------------------------------------------------------------ RobotPort
 
-    /** After the stop, a controller still reading sensors or sleeping is unwound (see {@link ControllerStoppedError}). */
+    /**
+     * After the stop, a controller still reading sensors or sleeping is unwound (see {@link ControllerStoppedError}).
+     */
     private void unwindIfStopped() {
         if (stopped && Thread.currentThread() != poller) {
             throw new ControllerStoppedError();

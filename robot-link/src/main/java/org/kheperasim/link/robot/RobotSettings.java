@@ -19,7 +19,10 @@ import org.kheperasim.link.protocol.dialect.Dialect;
 public record RobotSettings(int maxSpeed, boolean gripper, boolean parkGripperOnStop, int armUp, int armDown,
         long armTravelMillis, java.util.Map<String, String> options) {
 
-    /** The WSU API's wheel-position unit ({@code pulses} or {@code legacy}), as the simulator's setting of the same name. */
+    /**
+     * The WSU API's wheel-position unit ({@code pulses} or {@code legacy}), as the simulator's setting of the same
+     * name.
+     */
     public static final String WSU_POSITION_UNITS = "wsu.positionUnits";
     /**
      * The system property that sets {@value #WSU_POSITION_UNITS} for a run

@@ -154,7 +154,8 @@ public final class Session implements AutoCloseable {
             r = exchange(b);
         } catch (SessionException e) {
             if (e.kind() == SessionException.Kind.NO_REPLY && !(dialect instanceof KheperaDialect)) {
-                throw new SessionException(e.kind(), b, "the " + dialect.robot() + " on " + link.describe() + " does not"
+                throw new SessionException(e.kind(), b,
+                        "the " + dialect.robot() + " on " + link.describe() + " does not"
                         + " answer the version command '" + b.encode() + "'. Check that it is switched on, that its"
                         + " selector is on the ASCII protocol (SerCom), that a Bluetooth port is paired, that --baud"
                         + " matches and that --dialect " + dialect.name() + " is its protocol", e);
@@ -203,7 +204,8 @@ public final class Session implements AutoCloseable {
         // A reply's wire time: 64 characters cover every reply but the long ones (the K213's image of
         // 64 numbers), which take up to 4 characters a value.
         int replyChars = StrictMath.max(64, 8 + 4 * command.replyValueCount());
-        long waitNanos = options.replyTimeoutMillis() * 1_000_000L + timing.exchangeNanos(line.length() + 1, replyChars);
+        long waitNanos = options.replyTimeoutMillis() * 1_000_000L
+                + timing.exchangeNanos(line.length() + 1, replyChars);
         ProtocolException refusal = null;
         int tries = options.retries() + 1;
         for (int attempt = 0; attempt < tries; attempt++) {

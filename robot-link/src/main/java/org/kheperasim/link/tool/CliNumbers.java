@@ -30,7 +30,8 @@ public final class CliNumbers {
     public static double decimal(String text) {
         String t = text.strip();
         if (t.length() > 40 || !DECIMAL.matcher(t).matches()) {
-            throw new TypeConversionException("'" + shorten(text) + "' is not a decimal number; write it like 12, 0.5 or 1.5e3");
+            throw new TypeConversionException("'" + shorten(text)
+                    + "' is not a decimal number; write it like 12, 0.5 or 1.5e3");
         }
         double d = Double.parseDouble(t);
         if (!Double.isFinite(d)) {
@@ -94,7 +95,8 @@ public final class CliNumbers {
         public Integer convert(String value) {
             int n = integer(value);
             if (n < 0) {
-                throw new TypeConversionException("'" + shorten(value) + "' is negative: give a whole number of 0 or more");
+                throw new TypeConversionException("'" + shorten(value)
+                        + "' is negative: give a whole number of 0 or more");
             }
             return n;
         }
@@ -146,7 +148,8 @@ public final class CliNumbers {
     private static long longInteger(String value) {
         String t = value.strip();
         if (!t.matches("[+-]?+\\d{1,19}+")) {
-            throw new TypeConversionException("'" + shorten(value) + "' is not a whole decimal number; write it like 42");
+            throw new TypeConversionException("'" + shorten(value)
+                    + "' is not a whole decimal number; write it like 42");
         }
         try {
             return Long.parseLong(t);

@@ -11,7 +11,8 @@ import picocli.CommandLine.Option;
  */
 public final class ControllerOptions {
 
-    @Option(names = "--controller", required = true, paramLabel = "NAME", completionCandidates = BundledControllers.class,
+    @Option(names = "--controller", required = true, paramLabel = "NAME",
+            completionCandidates = BundledControllers.class,
             description = "a bundled controller (${COMPLETION-CANDIDATES}) or a class name on --classpath")
     String controller;
 

@@ -48,7 +48,8 @@ public final class ToolErrors {
             int code = exitCode(e);
             String what = e.getMessage() == null ? e.toString() : e.getMessage();
             if (code == ExitCodes.FAILED) {
-                what = "unexpected " + e + "; this is a bug, please report it (set KHEPERA_DEBUG=1 for the stack trace)";
+                what = "unexpected " + e
+                        + "; this is a bug, please report it (set KHEPERA_DEBUG=1 for the stack trace)";
             }
             err.println(prefix(tool) + what);
             if (System.getenv("KHEPERA_DEBUG") != null) {

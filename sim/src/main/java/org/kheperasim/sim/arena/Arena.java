@@ -119,7 +119,8 @@ public record Arena(String name, double width, double height, List<Pose> robots,
      * @return the robot kinds for them: these, cut or filled with the default where the count changed
      */
     public List<RobotKind> kindsFor(List<Pose> newRobots) {
-        List<RobotKind> out = new java.util.ArrayList<>(robotKinds.subList(0, StrictMath.min(robotKinds.size(), newRobots.size())));
+        List<RobotKind> out =
+                new java.util.ArrayList<>(robotKinds.subList(0, StrictMath.min(robotKinds.size(), newRobots.size())));
         while (out.size() < newRobots.size()) {
             out.add(RobotKind.DEFAULT);
         }

@@ -21,7 +21,8 @@ final class ArenaBounds {
             String w = Numbers.brief(width);
             String h = Numbers.brief(height);
             throw new ArenaFormatException(source, line, what + " at (" + Numbers.brief(x) + ", " + Numbers.brief(y)
-                    + ") lies outside the " + w + " x " + h + " mm arena; keep x within 0.." + w + " and y within 0.." + h);
+                    + ") lies outside the " + w + " x " + h + " mm arena; keep x within 0.." + w
+                    + " and y within 0.." + h);
         }
     }
 

@@ -38,7 +38,8 @@ public final class ArenaFormat {
     public static final String EXTENSION = ".arena";
 
     /** The arenas in {@code arenas/} at the top of the repository, which travel inside the jar. */
-    private static final List<String> BUNDLED = List.of("lab", "maze-easy", "maze", "maze-hard", "beacon-maze", "two-rooms");
+    private static final List<String> BUNDLED =
+            List.of("lab", "maze-easy", "maze", "maze-hard", "beacon-maze", "two-rooms");
 
     private ArenaFormat() {
     }
@@ -132,8 +133,8 @@ public final class ArenaFormat {
     /**
      * Writes an arena as canonical text: header, name, size, robots, walls, lights, caps, regions,
      * then the assignment ({@code time-limit}, then the {@code task} lines in order), one item per
-     * line, no comments; every number in its shortest exact decimal form; optional keywords only where they differ from the defaults. {@code parse(write(a), s).equals(a)} for
-     * every arena that {@link #parse} accepts.
+     * line, no comments; every number in its shortest exact decimal form; optional keywords only where they differ from
+     * the defaults. {@code parse(write(a), s).equals(a)} for every arena that {@link #parse} accepts.
      *
      * @param arena the arena
      * @return the text, lines ending in {@code \n}

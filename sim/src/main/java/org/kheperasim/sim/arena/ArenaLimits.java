@@ -11,7 +11,10 @@ public final class ArenaLimits {
 
     /** Longest side of an arena, mm (10 m). */
     public static final double MAX_SIDE_MM = 10_000;
-    /** Largest floor, mm² (50 m², e.g. 7.07 x 7.07 m: about 8.4 million grid cells; a swarm of 1,000 robots in 200 mm cells needs 40 m²). */
+    /**
+     * Largest floor, mm² (50 m², e.g. 7.07 x 7.07 m: about 8.4 million grid cells; a swarm of 1,000 robots in 200 mm
+     * cells needs 40 m²).
+     */
     public static final double MAX_AREA_MM2 = 50_000_000;
     /** Most robots in one arena (each runs its own controller). */
     public static final int MAX_ROBOTS = 1024;
@@ -60,7 +63,8 @@ public final class ArenaLimits {
         }
         if (width * height > MAX_AREA_MM2) {
             throw new IllegalArgumentException("arena size " + Numbers.brief(width) + " x " + Numbers.brief(height)
-                    + " mm is too large: the floor may be at most " + Numbers.brief(MAX_AREA_MM2 / 1e6) + " m² (" + Numbers.brief(MAX_AREA_MM2)
+                    + " mm is too large: the floor may be at most " + Numbers.brief(MAX_AREA_MM2 / 1e6) + " m² ("
+                    + Numbers.brief(MAX_AREA_MM2)
                     + " mm², e.g. 7000 x 7000 or 10000 x 5000); make the arena smaller");
         }
     }

@@ -141,7 +141,8 @@ final class ArenaParser {
     }
 
     private org.kheperasim.sim.engine.robot.RobotType robotType(String spec) {
-        if (!org.kheperasim.sim.engine.robot.RobotTypes.BUNDLED.contains(spec) && !spec.contains("/") && !spec.endsWith(".yaml")
+        if (!org.kheperasim.sim.engine.robot.RobotTypes.BUNDLED.contains(spec) && !spec.contains("/")
+                && !spec.endsWith(".yaml")
                 && !spec.endsWith(".calibration")) {
             throw error(lineNo, "robot type '" + shorten(spec) + "' is not a bundled robot; use one of "
                     + String.join(", ", org.kheperasim.sim.engine.robot.RobotTypes.BUNDLED)
@@ -180,12 +181,14 @@ final class ArenaParser {
                 double[] n = numbers(t, 1, "wall needs x1 y1 x2 y2 thickness (5 numbers, mm)",
                         "x1", "y1", "x2", "y2", "thickness");
                 atMost("wall thickness", n[4], ArenaLimits.MAX_WALL_THICKNESS_MM, "mm");
-                add(walls, wallLines, build(lineNo, () -> new Wall(n[0], n[1], n[2], n[3], n[4])), ArenaLimits.MAX_WALLS, "walls");
+                add(walls, wallLines, build(lineNo, () -> new Wall(n[0], n[1], n[2], n[3], n[4])),
+                        ArenaLimits.MAX_WALLS, "walls");
             }
             case "light" -> light(t);
             case "cap" -> cap(t);
             case "region" -> region(t);
-            case "task" -> add(tasks, taskLines, build(lineNo, () -> TaskLines.parse(t, this::number)), Assignment.MAX_TASKS,
+            case "task" -> add(tasks, taskLines, build(lineNo, () -> TaskLines.parse(t, this::number)),
+                    Assignment.MAX_TASKS,
                     "task lines");
             case "time-limit" -> timeLimit(t);
             default -> throw error(lineNo, "unknown keyword '" + shorten(t[0]) + "'; valid keywords are " + KEYWORDS);
@@ -305,17 +308,21 @@ final class ArenaParser {
         if (timeLimitLine != 0) {
             throw error(lineNo, "a second 'time-limit' line (the first is on line " + timeLimitLine + "); keep one");
         }
-        double[] n = numbers(t, 1, "time-limit needs the simulated seconds a run gets (1 number, s), e.g. 'time-limit 600'",
+        double[] n = numbers(t, 1,
+                "time-limit needs the simulated seconds a run gets (1 number, s), e.g. 'time-limit 600'",
                 "seconds");
         if (!(n[0] > 0)) {
-            throw error(lineNo, "time-limit is " + Numbers.brief(n[0]) + " s; give a positive number of simulated seconds");
+            throw error(lineNo, "time-limit is " + Numbers.brief(n[0])
+                    + " s; give a positive number of simulated seconds");
         }
         build(lineNo, () -> new Assignment(List.of(), n[0]));
         timeLimit = n[0];
         timeLimitLine = lineNo;
     }
 
-    /** {@code wsu-world PATH}: the world's size, walls, lamps and caps, and its start pose unless robot lines follow. */
+    /**
+     * {@code wsu-world PATH}: the world's size, walls, lamps and caps, and its start pose unless robot lines follow.
+     */
     private void world(String[] t) {
         if (worldLine != 0 || sizeLine != 0) {
             throw error(lineNo, worldLine != 0 ? "a second 'wsu-world' line (the first is on line " + worldLine

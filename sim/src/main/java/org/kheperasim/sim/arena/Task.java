@@ -89,7 +89,8 @@ public sealed interface Task permits Task.Visit, Task.Cover, Task.Deliver, Task.
         /** Checks the count. */
         public Deliver {
             if (count < 0) {
-                throw new IllegalArgumentException("task deliver count is " + count + "; give a whole number ≥ 1, or leave it out for every cap");
+                throw new IllegalArgumentException("task deliver count is " + count
+                        + "; give a whole number ≥ 1, or leave it out for every cap");
             }
             points = checkPoints(points);
         }

@@ -58,7 +58,8 @@ final class TaskLines {
                 }
                 yield new Task.Reach(words.get(0), points);
             }
-            default -> throw new IllegalArgumentException("unknown task '" + shorten(t[1]) + "'; the tasks are " + KINDS);
+            default -> throw new IllegalArgumentException("unknown task '" + shorten(t[1])
+                    + "'; the tasks are " + KINDS);
         };
     }
 
@@ -69,7 +70,8 @@ final class TaskLines {
         for (String w : words) {
             String name = w.endsWith("*") ? w.substring(0, w.length() - 1) : w;
             if (!(name.isEmpty() && w.equals("*")) && !Region.NAME.matcher(name).matches()) {
-                throw new IllegalArgumentException("task visit: '" + shorten(w) + "' is not a region name or prefix*; " + VISIT);
+                throw new IllegalArgumentException("task visit: '" + shorten(w)
+                        + "' is not a region name or prefix*; " + VISIT);
             }
         }
         return new Task.Visit(words, points);
@@ -106,7 +108,8 @@ final class TaskLines {
         if (task instanceof Task.Visit v) {
             for (String p : v.patterns()) {
                 if (names.stream().noneMatch(n -> Task.Visit.matches(p, n))) {
-                    return "task visit: no region " + (p.endsWith("*") ? "starts with '" + p.substring(0, p.length() - 1) + "'"
+                    return "task visit: no region "
+                            + (p.endsWith("*") ? "starts with '" + p.substring(0, p.length() - 1) + "'"
                             : "is named '" + p + "'") + "; " + known;
                 }
             }
@@ -118,7 +121,8 @@ final class TaskLines {
                 return "task deliver: the arena has no caps; add 'cap <x> <y>' lines or remove the task";
             }
             if (d.count() > caps) {
-                return "task deliver asks for " + d.count() + " caps but the arena has " + caps + "; ask for at most " + caps;
+                return "task deliver asks for " + d.count() + " caps but the arena has " + caps
+                        + "; ask for at most " + caps;
             }
         } else if (task instanceof Task.Reach r && !names.contains(r.region())) {
             return "task reach: no region is named '" + r.region() + "'; " + known;

@@ -18,7 +18,8 @@ final class TokenNumbers {
     double[] numbers(String[] t, int from, String usage, int line, String... fields) {
         int count = t.length - from;
         if (count != fields.length) {
-            throw new ArenaFormatException(source, line, usage + ", got " + count + (count == 1 ? " value" : " values"));
+            throw new ArenaFormatException(source, line,
+                    usage + ", got " + count + (count == 1 ? " value" : " values"));
         }
         double[] n = new double[count];
         for (int i = 0; i < count; i++) {
@@ -42,7 +43,8 @@ final class TokenNumbers {
                     + "', too large to be a number of mm; give a finite number");
         }
         if (NOT_FINITE.matcher(token).matches()) {
-            throw new ArenaFormatException(source, line, what + " is '" + token + "'; give a finite number such as 12.5");
+            throw new ArenaFormatException(source, line,
+                    what + " is '" + token + "'; give a finite number such as 12.5");
         }
         throw new ArenaFormatException(source, line, what + " is '" + shorten(token)
                 + "', not a number; write a decimal number such as 12.5");

@@ -37,11 +37,13 @@ final class WsuWorldBase {
         }
         if (!Files.isRegularFile(file)) {
             throw new ArenaFormatException(source, line, "wsu-world: there is no file '" + TokenNumbers.shorten(path)
-                    + "' (looked for " + file + "); give the WSU world file's path, relative to this arena file's folder");
+                    + "' (looked for " + file
+                    + "); give the WSU world file's path, relative to this arena file's folder");
         }
         if (!ArenaFiles.isWsuWorld(file)) {
             throw new ArenaFormatException(source, line, "wsu-world: " + file + " is not a WSU world file (it does not"
-                    + " start with the serialization stream's bytes AC ED); name a world file saved by the WSU simulator");
+                    + " start with the serialization stream's bytes AC ED); name a world file saved by the"
+                    + " WSU simulator");
         }
         try {
             return ArenaFiles.readWsuWorld(file, warning -> System.err.println(file + ": warning: " + warning));

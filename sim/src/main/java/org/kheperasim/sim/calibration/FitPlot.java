@@ -58,7 +58,8 @@ public final class FitPlot {
         g.drawRect(left, bottom - h, w, h);
         g.setColor(Color.DARK_GRAY);
         FitReport.Errors e = r.sensors().get(sensor);
-        g.drawString(String.format(Locale.ROOT, "%d %s  held-out median %.0f rms %.0f", sensor, type.sensor(sensor).name(),
+        g.drawString(String.format(Locale.ROOT, "%d %s  held-out median %.0f rms %.0f", sensor,
+                type.sensor(sensor).name(),
                 e.median(), e.rms()), left, y0 + 16);
         g.drawString("0", left - 10, bottom);
         g.drawString("1023", left - 30, bottom - h + 10);
@@ -95,7 +96,8 @@ public final class FitPlot {
                 }
             }
             g.setColor(ANGLE_COLOURS[a]);
-            g.drawString(String.format(Locale.ROOT, "wall %.0f deg off axis", OFF_AXIS_DEG[a]), left + w - 120, bottom - h + 14 + 13 * a);
+            g.drawString(String.format(Locale.ROOT, "wall %.0f deg off axis", OFF_AXIS_DEG[a]), left + w - 120,
+                    bottom - h + 14 + 13 * a);
         }
     }
 }

@@ -19,7 +19,8 @@ import org.kheperasim.sim.engine.robot.SampleTable;
  * @param fullFit the fit on every block (what the simulator loads)
  * @param sensors per sensor: median and RMS held-out error, RMS fitted error, counts
  */
-public record FitReport(SampleTable table, RobotType type, SampleFit.Result heldOutFit, SampleFit.Result fullFit, List<Errors> sensors) {
+public record FitReport(SampleTable table, RobotType type, SampleFit.Result heldOutFit, SampleFit.Result fullFit,
+        List<Errors> sensors) {
 
     /**
      * @param median median absolute error at the held-out blocks, counts
@@ -76,16 +77,22 @@ public record FitReport(SampleTable table, RobotType type, SampleFit.Result held
     /** @return the report as text, a line per sensor */
     public String text() {
         StringBuilder sb = new StringBuilder();
-        sb.append(String.format(Locale.ROOT, "fit of %s: %d sensors, %d headings, %d blocks (%.1f..%.1f mm); held out: blocks 1, 4, 7, ...%n",
-                table.source(), table.sensors(), table.angles(), table.blocks(), table.gapMm(0), table.gapMm(table.blocks() - 1)));
-        sb.append(String.format(Locale.ROOT, "loaded fit: offset %.1f counts, noise %.1f counts + %.1f %% of the signal%n",
+        sb.append(String.format(Locale.ROOT,
+                "fit of %s: %d sensors, %d headings, %d blocks (%.1f..%.1f mm); held out: blocks 1, 4, 7, ...%n",
+                table.source(), table.sensors(), table.angles(), table.blocks(), table.gapMm(0),
+                table.gapMm(table.blocks() - 1)));
+        sb.append(String.format(Locale.ROOT,
+                "loaded fit: offset %.1f counts, noise %.1f counts + %.1f %% of the signal%n",
                 fullFit.offset(), fullFit.noiseAbs(), 100 * fullFit.noiseRel()));
-        sb.append(String.format(Locale.ROOT, "%-12s %6s %10s %10s %14s %10s%n", "sensor", "gain", "held med", "held rms",
+        sb.append(String.format(Locale.ROOT, "%-12s %6s %10s %10s %14s %10s%n", "sensor", "gain",
+                "held med", "held rms",
                 "held med lit", "fit rms"));
         for (int i = 0; i < sensors.size(); i++) {
             Errors e = sensors.get(i);
-            sb.append(String.format(Locale.ROOT, "%-12s %6.2f %10.1f %10.1f %14s %10.1f%n", type.sensor(i).name(), fullFit.gains()[i],
-                    e.median(), e.rms(), Double.isNaN(e.litMedian()) ? "-" : String.format(Locale.ROOT, "%.1f", e.litMedian()),
+            sb.append(String.format(Locale.ROOT, "%-12s %6.2f %10.1f %10.1f %14s %10.1f%n", type.sensor(i).name(),
+                    fullFit.gains()[i],
+                    e.median(), e.rms(),
+                    Double.isNaN(e.litMedian()) ? "-" : String.format(Locale.ROOT, "%.1f", e.litMedian()),
                     e.fittedRms()));
         }
         sb.append("counts of 1023; 'lit': where the robot read more than 50; settings for the gains: ");

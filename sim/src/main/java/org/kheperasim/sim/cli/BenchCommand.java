@@ -40,22 +40,27 @@ final class BenchCommand implements Callable<Integer> {
             description = "folders and jars with compiled controllers (for your own --controller)")
     List<java.nio.file.Path> classpath = new ArrayList<>();
 
-    @Option(names = "--seconds", defaultValue = "600", converter = CliNumbers.PositiveSeconds.class, description = "simulated seconds per run (default: ${DEFAULT-VALUE})")
+    @Option(names = "--seconds", defaultValue = "600", converter = CliNumbers.PositiveSeconds.class,
+            description = "simulated seconds per run (default: ${DEFAULT-VALUE})")
     double seconds;
 
-    @Option(names = "--runs", defaultValue = "5", converter = CliNumbers.PositiveInt.class, description = "measured runs (default: ${DEFAULT-VALUE})")
+    @Option(names = "--runs", defaultValue = "5", converter = CliNumbers.PositiveInt.class,
+            description = "measured runs (default: ${DEFAULT-VALUE})")
     int runs;
 
-    @Option(names = "--warm-up", defaultValue = "2", paramLabel = "SECONDS", converter = CliNumbers.NonNegativeDecimal.class,
+    @Option(names = "--warm-up", defaultValue = "2", paramLabel = "SECONDS",
+            converter = CliNumbers.NonNegativeDecimal.class,
             description = "before measuring, run for at least this much wall time (one run at least), so that the JIT"
                     + " has compiled what the runs use (default: ${DEFAULT-VALUE})")
     double warmUp;
 
-    @Option(names = "--seed", defaultValue = "1", converter = CliNumbers.AnyLong.class, description = "seed of the first run; each run adds one (default: ${DEFAULT-VALUE})")
+    @Option(names = "--seed", defaultValue = "1", converter = CliNumbers.AnyLong.class,
+            description = "seed of the first run; each run adds one (default: ${DEFAULT-VALUE})")
     long seed;
 
     @Option(names = "--add-caps", defaultValue = "0", paramLabel = "N", converter = CliNumbers.NonNegativeInt.class,
-            description = "scatter N more caps over the arena's free floor, on an even lattice (default: ${DEFAULT-VALUE})")
+            description = "scatter N more caps over the arena's free floor, on an even lattice (default:"
+                    + " ${DEFAULT-VALUE})")
     int addCaps;
 
     @Option(names = "--robots", defaultValue = "0", paramLabel = "N", converter = CliNumbers.NonNegativeInt.class,
@@ -91,7 +96,8 @@ final class BenchCommand implements Callable<Integer> {
         if (robots > 0) {
             arena = scenario.name();
         }
-        System.out.printf(Locale.ROOT, "benchmark: %s in %s with %d caps, %.0f simulated s per run, %d runs after a warm-up,"
+        System.out.printf(Locale.ROOT,
+                "benchmark: %s in %s with %d caps, %.0f simulated s per run, %d runs after a warm-up,"
                 + " %d cores, %s%n", controller, arena, scenario.caps().size(), seconds, runs,
                 Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"));
@@ -122,7 +128,8 @@ final class BenchCommand implements Callable<Integer> {
                 sorted.get(sorted.size() / 2), sorted.get(0), sorted.get(sorted.size() - 1));
         System.out.println(load());
         Swarm.printSetUpAndMemory(() -> run(seed + runs, 0.001),
-                whileRunning -> Simulation.builder().arena(scenario).controller(controller).classpath(classpath).seconds(0.001)
+                whileRunning -> Simulation.builder().arena(scenario).controller(controller)
+                        .classpath(classpath).seconds(0.001)
                         .settings(settings)
                         .seed(seed + runs)
                         .listener(s -> whileRunning.run(), 1).run());
@@ -162,7 +169,9 @@ final class BenchCommand implements Callable<Integer> {
     private final List<String> errors = new java.util.concurrent.CopyOnWriteArrayList<>();
     private volatile boolean collecting = true;
 
-    /** @return true (and says so) when a robot's controller failed in the first run: its figures would measure nothing */
+    /**
+     * @return true (and says so) when a robot's controller failed in the first run: its figures would measure nothing
+     */
     private boolean failed(RunResult r) {
         for (int i = 0; i < r.robots().size(); i++) {
             RunResult.RobotResult robot = r.robots().get(i);

@@ -30,12 +30,14 @@ final class CalibrationReportCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         if (!Files.isRegularFile(file)) {
-            throw new IllegalArgumentException("calibration " + file + " does not exist: give a .calibration or .sample file");
+            throw new IllegalArgumentException("calibration " + file
+                    + " does not exist: give a .calibration or .sample file");
         }
         Path sample = file;
         if (file.getFileName().toString().endsWith(".calibration")) {
             String wall = Files.readAllLines(file).stream().filter(l -> l.startsWith("wall ")).findFirst()
-                    .orElseThrow(() -> new IllegalArgumentException("calibration " + file + " names no wall file: add 'wall FILE.sample'"))
+                    .orElseThrow(() -> new IllegalArgumentException("calibration " + file
+                            + " names no wall file: add 'wall FILE.sample'"))
                     .substring(5).trim();
             sample = file.toAbsolutePath().getParent().resolve(wall);
         }

@@ -19,9 +19,10 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /** {@code compare}: a real run recorded by robot-link against the same controller run in the simulator. */
-@Command(name = "compare", mixinStandardHelpOptions = true, description = "Replay a real run's controller from the same start"
-        + " in the simulator (with the robot's calibration) and report where they diverge: RMS per sensor, both odometry"
-        + " paths, the first moment they part; text, JSON and a PNG.")
+@Command(name = "compare", mixinStandardHelpOptions = true,
+        description = "Replay a real run's controller from the same start"
+        + " in the simulator (with the robot's calibration) and report where they diverge: RMS per"
+        + " sensor, both odometry paths, the first moment they part; text, JSON and a PNG.")
 final class CompareCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
@@ -29,22 +30,27 @@ final class CompareCommand implements Callable<Integer> {
     @Parameters(paramLabel = "REAL-RECORDING", description = "The real run: a 'khepera-link run --record' file.")
     Path recording;
 
-    @Option(names = "--arena", required = true, paramLabel = "ARENA", description = "The arena the real run took place in (a name or a file).")
+    @Option(names = "--arena", required = true, paramLabel = "ARENA",
+            description = "The arena the real run took place in (a name or a file).")
     String arena;
 
-    @Option(names = "--controller", required = true, paramLabel = "NAME", description = "The controller the real run ran.")
+    @Option(names = "--controller", required = true, paramLabel = "NAME",
+            description = "The controller the real run ran.")
     String controller;
 
-    @Option(names = "--start", paramLabel = "X,Y,HEADING", split = ",", description = "The robot's start, mm and degrees. Default: the arena's.")
+    @Option(names = "--start", paramLabel = "X,Y,HEADING", split = ",",
+            description = "The robot's start, mm and degrees. Default: the arena's.")
     double[] start;
 
-    @Option(names = "--calibration", paramLabel = "FILE", description = "The robot's calibration (khepera-link calibrate).")
+    @Option(names = "--calibration", paramLabel = "FILE",
+            description = "The robot's calibration (khepera-link calibrate).")
     Path calibration;
 
     @Option(names = "--seed", defaultValue = "1", description = "The simulation's seed. Default: ${DEFAULT-VALUE}.")
     long seed;
 
-    @Option(names = "--threshold-mm", defaultValue = "30", paramLabel = "MM", description = "How far apart the paths part. Default: ${DEFAULT-VALUE}.")
+    @Option(names = "--threshold-mm", defaultValue = "30", paramLabel = "MM",
+            description = "How far apart the paths part. Default: ${DEFAULT-VALUE}.")
     double thresholdMm;
 
     @Option(names = "--out", paramLabel = "DIR", description = "Where the report goes. Default: beside the recording.")
@@ -56,7 +62,8 @@ final class CompareCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         if (!Files.isRegularFile(recording)) {
-            throw new IllegalArgumentException("recording " + recording + " does not exist: give a 'khepera-link run --record' file");
+            throw new IllegalArgumentException("recording " + recording
+                    + " does not exist: give a 'khepera-link run --record' file");
         }
         if (start != null && start.length != 3) {
             throw new IllegalArgumentException("--start needs X,Y,HEADING (mm, mm, degrees), e.g. --start 200,300,90");
@@ -69,9 +76,11 @@ final class CompareCommand implements Callable<Integer> {
             type = org.kheperasim.sim.engine.robot.RobotTypes.load(calibration);
         }
         RobotType used = type != null ? type : a.robotType(0);
-        Track sim = SimulatedRun.run(a, start == null ? null : new Pose(start[0], start[1], start[2]), type, controller, s, seed,
+        Track sim = SimulatedRun.run(a, start == null ? null : new Pose(start[0], start[1], start[2]), type,
+                controller, s, seed,
                 real.seconds() + 0.05, 10);
-        double mmPerPulse = s.overrides().containsKey("encoder.mmPerPulse") ? s.number("encoder.mmPerPulse") : used.drive().mmPerPulse();
+        double mmPerPulse = s.overrides().containsKey("encoder.mmPerPulse")
+                ? s.number("encoder.mmPerPulse") : used.drive().mmPerPulse();
         Divergence d = Divergence.of(real, sim, mmPerPulse, used.drive().wheelBaseMm(), thresholdMm);
         Path dir = out != null ? out : recording.toAbsolutePath().getParent();
         Files.createDirectories(dir);

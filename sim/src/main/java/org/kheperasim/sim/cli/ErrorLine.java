@@ -10,8 +10,8 @@ import picocli.CommandLine;
  * The simulator's error line, {@code khepera-sim: error: what is wrong and the fix}, as robot-link's
  * {@link ToolErrors} writes it and with the same exit codes, but always one line: a message holds
  * what a controller wrote (its exception's message, its class's name), so its control characters
- * and line ends are shown escaped ({@link Shown#visible}: a backslash stays one, as in a Windows path). An {@link OutOfMemoryError}, which picocli
- * does not catch, gets the line too.
+ * and line ends are shown escaped ({@link Shown#visible}: a backslash stays one, as in a Windows path). An
+ * {@link OutOfMemoryError}, which picocli does not catch, gets the line too.
  */
 final class ErrorLine {
     static final String TOOL = "khepera-sim";
@@ -29,7 +29,8 @@ final class ErrorLine {
             int code = ToolErrors.exitCode(e);
             String what = e.getMessage() == null ? e.toString() : e.getMessage();
             if (code == ExitCodes.FAILED) {
-                what = "unexpected " + e + "; this is a bug, please report it (set KHEPERA_DEBUG=1 for the stack trace)";
+                what = "unexpected " + e
+                        + "; this is a bug, please report it (set KHEPERA_DEBUG=1 for the stack trace)";
             }
             err.println(ToolErrors.prefix(TOOL) + Shown.visible(what));
             if (System.getenv("KHEPERA_DEBUG") != null) {
@@ -46,7 +47,8 @@ final class ErrorLine {
      * @return the exit status, after the line on standard error
      */
     static int outOfMemory(OutOfMemoryError e) {
-        System.err.println(ToolErrors.prefix(TOOL) + "out of memory (" + Shown.visible(e.getMessage()) + "); give Java more"
+        System.err.println(ToolErrors.prefix(TOOL) + "out of memory (" + Shown.visible(e.getMessage())
+                + "); give Java more"
                 + " with java -Xmx4g -jar khepera-sim.jar ..., or a smaller input");
         if (System.getenv("KHEPERA_DEBUG") != null) {
             e.printStackTrace();

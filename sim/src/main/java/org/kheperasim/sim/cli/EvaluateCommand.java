@@ -31,12 +31,14 @@ import picocli.CommandLine.Option;
 /** {@code evaluate}: many runs in one warm JVM on every core; JSON lines in, one JSON line per finished job out. */
 @Command(name = "evaluate", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Evaluate many runs of your own controllers in one JVM on all cores: a job per line of JSON in"
-                + " (--jobs FILE, or standard input), one line of JSON per finished job out (standard output, or --out),"
-                + " for a parameter sweep or an evolutionary algorithm in any language driving it through a pipe.",
+                + " (--jobs FILE, or standard input), one line of JSON per finished job out (standard"
+                + " output, or --out), for a parameter sweep or an evolutionary algorithm in any language driving it"
+                + " through a pipe.",
             "A job: {\"id\": \"g3-17\", \"controller\": \"StepBraitenberg\", \"arena\": \"maze-easy\", \"seed\": 5,"
                 + " \"seconds\": 60, \"parameters\": {\"weights\": [0.4, 0.8], \"gain\": 2}, \"settings\":"
-                + " {\"noise.reading\": \"0.5\"}, \"trace\": \"runs/g3-17.trace\"}; only controller and arena are needed"
-                + " (or --controller, --arena); seed defaults to the job's line number, seconds to --seconds.",
+                + " {\"noise.reading\": \"0.5\"}, \"trace\": \"runs/g3-17.trace\"}; only controller and"
+                + " arena are needed (or --controller, --arena); seed defaults to the job's line number, seconds"
+                + " to --seconds.",
             "Each outcome names its job's index (its line, from 0) and id, and is the same for any --threads and any"
                 + " order of completion. The controllers run as your own code (unchecked); code not your own is graded"
                 + " with 'grade', in a sandbox. See docs/evaluate.md."})
@@ -48,7 +50,8 @@ final class EvaluateCommand implements Callable<Integer> {
             + " (- for standard input, the default)")
     String jobs;
 
-    @Option(names = "--out", paramLabel = "FILE", defaultValue = "-", description = "where the outcomes go (- for standard"
+    @Option(names = "--out", paramLabel = "FILE", defaultValue = "-",
+            description = "where the outcomes go (- for standard"
             + " output, the default)")
     String out;
 
@@ -77,15 +80,18 @@ final class EvaluateCommand implements Callable<Integer> {
     @Option(names = "--ordered", description = "write the outcomes in the jobs' order (by default each as it finishes)")
     boolean ordered;
 
-    @Option(names = "--shard", paramLabel = "K/N", description = "evaluate only the jobs of slice K of N (lines K-1, K-1+N,"
+    @Option(names = "--shard", paramLabel = "K/N",
+            description = "evaluate only the jobs of slice K of N (lines K-1, K-1+N,"
             + " ...), for a Slurm job array or a Kubernetes Indexed Job; join the slices' outputs with --join")
     String shard;
 
-    @Option(names = "--join", paramLabel = "FILE", arity = "1..*", description = "instead of evaluating: join outputs of"
+    @Option(names = "--join", paramLabel = "FILE", arity = "1..*",
+            description = "instead of evaluating: join outputs of"
             + " --shard slices into one, in the jobs' order (the same as one machine's --ordered output)")
     List<Path> join;
 
-    @Option(names = "--contained", description = "check the controllers against the allowlist (docs/controller-rules.md)"
+    @Option(names = "--contained",
+            description = "check the controllers against the allowlist (docs/controller-rules.md)"
             + " instead of running them as your own code")
     boolean contained;
 
@@ -109,7 +115,8 @@ final class EvaluateCommand implements Callable<Integer> {
         }
     }
 
-    private int evaluate(GradePlan.Shard slice, int n, PrintStream sink, boolean progress) throws IOException, InterruptedException {
+    private int evaluate(GradePlan.Shard slice, int n, PrintStream sink, boolean progress) throws IOException,
+            InterruptedException {
         AtomicInteger done = new AtomicInteger();
         AtomicInteger failed = new AtomicInteger();
         AtomicInteger bad = new AtomicInteger();
@@ -119,9 +126,11 @@ final class EvaluateCommand implements Callable<Integer> {
         List<Long> order = new ArrayList<>();
         Object lock = new Object();
         long start = System.nanoTime();
-        org.kheperasim.sim.arena.RobotKind robot = robotFile == null ? null : org.kheperasim.sim.arena.RobotKind.of(robotFile);
+        org.kheperasim.sim.arena.RobotKind robot =
+                robotFile == null ? null : org.kheperasim.sim.arena.RobotKind.of(robotFile);
         try (Evaluator evaluator = new Evaluator(classpath, !contained, n).robot(robot);
-                BufferedReader in = jobs.equals("-") ? new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8))
+                BufferedReader in = jobs.equals("-")
+                        ? new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8))
                         : jobFile(Path.of(jobs))) {
             BoundedLines lines = new BoundedLines(in, MAX_JOB_CHARS, (l, what) -> new InputFileException(
                     jobs.equals("-") ? "standard input" : jobs, l, what + " (a job is one JSON object on one line)"));
@@ -143,7 +152,8 @@ final class EvaluateCommand implements Callable<Integer> {
                         firstBad[0] = "line " + (index + 1) + ": " + e.getMessage();
                     }
                     emit(lock, pending, order, nextOrdered, sink, index,
-                            EvaluateJson.error(index, EvaluateJson.idOf(line), "line " + (index + 1) + ": " + e.getMessage()));
+                            EvaluateJson.error(index, EvaluateJson.idOf(line),
+                                    "line " + (index + 1) + ": " + e.getMessage()));
                     continue;
                 }
                 long i = index;
@@ -154,7 +164,8 @@ final class EvaluateCommand implements Callable<Integer> {
                     emit(lock, pending, order, nextOrdered, sink, i, EvaluateJson.outcome(o));
                     int d = done.incrementAndGet();
                     if (progress) {
-                        System.err.printf(Locale.ROOT, "\r%d jobs done, %.1f a second   ", d, d / ((System.nanoTime() - start) / 1e9));
+                        System.err.printf(Locale.ROOT, "\r%d jobs done, %.1f a second   ", d,
+                                d / ((System.nanoTime() - start) / 1e9));
                     }
                 });
             }
@@ -180,14 +191,16 @@ final class EvaluateCommand implements Callable<Integer> {
      */
     private static BufferedReader jobFile(Path file) throws IOException {
         if (Files.isDirectory(file)) {
-            throw new InputFileException(file.toString(), 0, "this is a folder; give a job file (JSON job lines), or - for"
+            throw new InputFileException(file.toString(), 0,
+                    "this is a folder; give a job file (JSON job lines), or - for"
                     + " standard input");
         }
         return Files.newBufferedReader(file, StandardCharsets.UTF_8);
     }
 
     /** Write an outcome now, or (--ordered) once every job before it has been written. */
-    private void emit(Object lock, Map<Long, String> pending, List<Long> order, long[] next, PrintStream sink, long index,
+    private void emit(Object lock, Map<Long, String> pending, List<Long> order, long[] next,
+            PrintStream sink, long index,
             String json) {
         synchronized (lock) {
             if (!ordered) {
@@ -200,7 +213,8 @@ final class EvaluateCommand implements Callable<Integer> {
         }
     }
 
-    private static void flushOrdered(Map<Long, String> pending, List<Long> order, long[] next, PrintStream sink, boolean all) {
+    private static void flushOrdered(Map<Long, String> pending, List<Long> order, long[] next,
+            PrintStream sink, boolean all) {
         while (next[0] + 1 < order.size()) {
             long want = order.get((int) (next[0] + 1));
             String json = pending.remove(want);

@@ -44,8 +44,10 @@ final class EvaluateJson {
                     + " \"arena\": \"lab\"}");
         }
         for (Object key : m.keySet()) {
-            if (!List.of("id", "controller", "arena", "seed", "seconds", "parameters", "settings", "trace").contains(key)) {
-                throw new IllegalArgumentException("unknown field \"" + key + "\"; a job has id, controller, arena, seed,"
+            if (!List.of("id", "controller", "arena", "seed", "seconds", "parameters", "settings", "trace")
+                    .contains(key)) {
+                throw new IllegalArgumentException("unknown field \"" + key
+                        + "\"; a job has id, controller, arena, seed,"
                         + " seconds, parameters, settings and trace");
             }
         }
@@ -58,11 +60,13 @@ final class EvaluateJson {
         long seed = m.containsKey("seed") ? whole(m.get("seed"), "seed") : index + 1;
         double s = m.containsKey("seconds") ? number(m.get("seconds"), "seconds") : seconds;
         if (!(s > 0 && s <= Job.MAX_SECONDS)) {
-            throw new IllegalArgumentException("\"seconds\": " + m.get("seconds") + " is out of range; give a simulated time"
+            throw new IllegalArgumentException("\"seconds\": " + m.get("seconds")
+                    + " is out of range; give a simulated time"
                     + " greater than 0 and at most " + (long) Job.MAX_SECONDS + ", e.g. 60");
         }
         Object t = m.get("trace");
-        return new Job(index, text(m, "id", ""), c, a, seed, s, parameters(m.get("parameters")), settings(m.get("settings")),
+        return new Job(index, text(m, "id", ""), c, a, seed, s, parameters(m.get("parameters")),
+                settings(m.get("settings")),
                 t == null ? null : Path.of(string(t, "trace")));
     }
 
@@ -110,7 +114,8 @@ final class EvaluateJson {
             return Parameters.NONE;
         }
         if (!(v instanceof Map<?, ?> m)) {
-            throw new IllegalArgumentException("\"parameters\" must be an object of names and numbers or arrays of numbers,"
+            throw new IllegalArgumentException(
+                    "\"parameters\" must be an object of names and numbers or arrays of numbers,"
                     + " e.g. {\"weights\": [0.4, 0.8], \"gain\": 2}");
         }
         Map<String, double[]> out = new LinkedHashMap<>();
@@ -160,10 +165,12 @@ final class EvaluateJson {
         }
         Score score = o.score();
         if (score != null) {
-            j.beginObject("score").put("points", score.points()).put("max", score.max()).put("percent", score.percent());
+            j.beginObject("score").put("points", score.points()).put("max", score.max())
+                    .put("percent", score.percent());
             j.beginArray("tasks");
             for (Score.Part p : score.parts()) {
-                j.element().put("task", p.task()).put("points", p.points()).put("max", p.max()).put("detail", p.detail()).end();
+                j.element().put("task", p.task()).put("points", p.points()).put("max", p.max())
+                        .put("detail", p.detail()).end();
             }
             j.endArray().end();
         }
@@ -172,7 +179,8 @@ final class EvaluateJson {
             j.element().put("name", rr.name()).put("x", rr.x()).put("y", rr.y()).put("headingDeg", rr.headingDeg())
                     .put("distanceMm", rr.distanceMm()).put("collisions", rr.collisions())
                     .put("visitedPercent", rr.visitedPercent()).put("regionsEntered", rr.regionsEntered())
-                    .put("controllerStatus", rr.status().name().toLowerCase(Locale.ROOT)).put("failure", rr.failure()).end();
+                    .put("controllerStatus", rr.status().name().toLowerCase(Locale.ROOT))
+                    .put("failure", rr.failure()).end();
         }
         j.endArray();
         if (o.job().trace() != null) {
@@ -208,13 +216,16 @@ final class EvaluateJson {
                 try {
                     v = JsonValues.parse(line);
                 } catch (IllegalArgumentException e) {
-                    throw new IllegalArgumentException(f + ":" + (i + 1) + ": not an outcome of evaluate (" + e.getMessage() + ")");
+                    throw new IllegalArgumentException(f + ":" + (i + 1) + ": not an outcome of evaluate ("
+                            + e.getMessage() + ")");
                 }
                 if (!(v instanceof Map<?, ?> m) || !(m.get("index") instanceof Double d)) {
-                    throw new IllegalArgumentException(f + ":" + (i + 1) + ": not an outcome of evaluate (no \"index\")");
+                    throw new IllegalArgumentException(f + ":" + (i + 1)
+                            + ": not an outcome of evaluate (no \"index\")");
                 }
                 if (lines.put(d.longValue(), line) != null) {
-                    throw new IllegalArgumentException(f + ":" + (i + 1) + ": job " + d.longValue() + " is in two outputs;"
+                    throw new IllegalArgumentException(f + ":" + (i + 1) + ": job " + d.longValue()
+                            + " is in two outputs;"
                             + " join the outputs of one evaluation's slices");
                 }
                 anyFailed |= !"ok".equals(m.get("status"));

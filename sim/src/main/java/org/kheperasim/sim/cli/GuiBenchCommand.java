@@ -14,7 +14,8 @@ import picocli.CommandLine.Option;
         description = {"Open the window and measure: start-up time, frames/s at x1 with every panel on,",
             "and the engine's speed at 'as fast as possible' with the window open against headless. Needs a display."})
 final class GuiBenchCommand implements Callable<Integer> {
-    @Option(names = "--seconds", defaultValue = "5", converter = CliNumbers.PositiveSeconds.class, description = "real seconds per measurement (default: ${DEFAULT-VALUE})")
+    @Option(names = "--seconds", defaultValue = "5", converter = CliNumbers.PositiveSeconds.class,
+            description = "real seconds per measurement (default: ${DEFAULT-VALUE})")
     double seconds;
 
     @Override

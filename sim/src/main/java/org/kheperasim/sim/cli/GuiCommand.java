@@ -33,19 +33,21 @@ final class GuiCommand implements Callable<Integer> {
 
     @Option(names = "--controller", paramLabel = "NAME", defaultValue = "WallFollower",
             completionCandidates = BundledControllers.class,
-            description = "a bundled controller (${COMPLETION-CANDIDATES}), a class name on --classpath, or a controller's"
-                    + " .java file, which the window compiles (default: ${DEFAULT-VALUE})")
+            description = "a bundled controller (${COMPLETION-CANDIDATES}), a class name on --classpath, or"
+                    + " a controller's .java file, which the window compiles (default: ${DEFAULT-VALUE})")
     String controller;
 
     @Option(names = "--classpath", paramLabel = "DIR_OR_JAR", split = "${sys:path.separator}",
             description = "folders and jars with your compiled controller classes")
     List<Path> classpath = new ArrayList<>();
 
-    @Option(names = "--seed", paramLabel = "N", converter = CliNumbers.AnyLong.class, description = "the runs' seed (default: a new one each run, shown in the console)")
+    @Option(names = "--seed", paramLabel = "N", converter = CliNumbers.AnyLong.class,
+            description = "the runs' seed (default: a new one each run, shown in the console)")
     Long seed;
 
     @Option(names = "--trusted", description = "the controller is your own: run it unchecked (Controller > Trust this"
-            + " controller ticked), as a controller that opens a window of its own needs; never for someone else's code")
+            + " controller ticked), as a controller that opens a window of its own needs; never for"
+            + " someone else's code")
     boolean trusted;
 
     @Override

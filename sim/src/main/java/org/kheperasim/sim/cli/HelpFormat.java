@@ -39,10 +39,13 @@ final class HelpFormat {
         }
         Map<String, CommandLine.IHelpSectionRenderer> sections = cl.getHelpSectionMap();
         sections.put(UsageMessageSpec.SECTION_KEY_SYNOPSIS, HelpFormat::synopsis);
-        sections.put(UsageMessageSpec.SECTION_KEY_DESCRIPTION, h -> paragraphs(h, h.commandSpec().usageMessage().description()));
+        sections.put(UsageMessageSpec.SECTION_KEY_DESCRIPTION,
+                h -> paragraphs(h, h.commandSpec().usageMessage().description()));
         sections.put(UsageMessageSpec.SECTION_KEY_FOOTER, h -> paragraphs(h, h.commandSpec().usageMessage().footer()));
-        sections.put(UsageMessageSpec.SECTION_KEY_OPTION_LIST, h -> h.optionList(layout(h), comparator(h), h.parameterLabelRenderer()));
-        sections.put(UsageMessageSpec.SECTION_KEY_PARAMETER_LIST, h -> h.parameterList(layout(h), h.parameterLabelRenderer()));
+        sections.put(UsageMessageSpec.SECTION_KEY_OPTION_LIST,
+                h -> h.optionList(layout(h), comparator(h), h.parameterLabelRenderer()));
+        sections.put(UsageMessageSpec.SECTION_KEY_PARAMETER_LIST,
+                h -> h.parameterList(layout(h), h.parameterLabelRenderer()));
         sections.put(UsageMessageSpec.SECTION_KEY_COMMAND_LIST, HelpFormat::commands);
         cl.setHelpSectionMap(sections);
         for (CommandLine sub : cl.getSubcommands().values()) {
@@ -54,7 +57,8 @@ final class HelpFormat {
     }
 
     private static java.util.Comparator<CommandLine.Model.OptionSpec> comparator(Help h) {
-        return h.commandSpec().usageMessage().sortOptions() ? java.util.Comparator.comparing(o -> o.shortestName()) : null;
+        return h.commandSpec().usageMessage().sortOptions()
+                ? java.util.Comparator.comparing(o -> o.shortestName()) : null;
     }
 
     /** The options' table as picocli lays it out, with a table that wraps descriptions at spaces. */

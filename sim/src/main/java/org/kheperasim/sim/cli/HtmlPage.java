@@ -71,14 +71,16 @@ final class HtmlPage {
         }
         Path parent = file.toAbsolutePath().getParent();
         if (parent != null && !Files.isDirectory(parent)) {
-            throw new IllegalArgumentException("--html " + file + ": its folder " + parent + " does not exist; create it or"
+            throw new IllegalArgumentException("--html " + file + ": its folder " + parent
+                    + " does not exist; create it or"
                     + " give another path");
         }
     }
 
     /** @return e.g. {@code wrote run.html: 167.9 KB, 600.0 s of 1 robot, poses every 50 ms, ...} */
     static String wrote(RunPage.Written w, double seconds) {
-        return String.format(Locale.ROOT, "wrote %s: %.1f KB, %.1f s of %d robot%s, poses every %d ms, sensor values every %d ms,"
+        return String.format(Locale.ROOT,
+                "wrote %s: %.1f KB, %.1f s of %d robot%s, poses every %d ms, sensor values every %d ms,"
                 + " in %.2f s", w.file(), w.bytes() / 1024.0, w.seconds(), w.robots(), w.robots() == 1 ? "" : "s",
                 w.poseEveryMs(), w.sensorsEveryMs(), seconds);
     }
@@ -133,11 +135,13 @@ final class HtmlPage {
             try {
                 if (Files.size(trace) > 0) {
                     RunPage.Written w = RunPage.write(trace, arena, RunOutcome.none(), html);
-                    info.println(wrote(w, (System.nanoTime() - start) / 1e9) + " (from the sandboxed run's trace: no failures"
+                    info.println(wrote(w, (System.nanoTime() - start) / 1e9)
+                            + " (from the sandboxed run's trace: no failures"
                             + " or floor coverage shown)");
                 }
             } catch (IOException e) {
-                throw new UncheckedIOException("cannot read the sandboxed run's trace " + trace + ": " + e.getMessage(), e);
+                throw new UncheckedIOException("cannot read the sandboxed run's trace " + trace + ": "
+                        + e.getMessage(), e);
             } finally {
                 if (temporary) {
                     try {

@@ -45,7 +45,8 @@ final class ImportWsuCommand implements Callable<Integer> {
                     + " WSU Khepera Simulator");
         }
         if (!profile.equals("robot") && !profile.equals("wsu")) {
-            throw new IllegalArgumentException("--profile " + profile + ": give robot (the real Khepera, the default) or wsu"
+            throw new IllegalArgumentException("--profile " + profile
+                    + ": give robot (the real Khepera, the default) or wsu"
                     + " (the original simulator's behaviour)");
         }
         Path target = output != null ? output : Path.of(WsuWorld.nameOf(map) + ArenaFormat.EXTENSION);
@@ -67,7 +68,8 @@ final class ImportWsuCommand implements Callable<Integer> {
         writeAtomically(target, header(imported, warnings) + ArenaFormat.write(arena));
         Pose p = arena.robots().get(0);
         System.out.printf(Locale.ROOT, "wrote %s from %s: %s; robot at (%.1f, %.1f) mm facing east%s%n", target, map,
-                contents(imported), p.x(), p.y(), warnings.isEmpty() ? "" : "; " + warnings.size() + " warning(s) above");
+                contents(imported), p.x(), p.y(),
+                warnings.isEmpty() ? "" : "; " + warnings.size() + " warning(s) above");
         return 0;
     }
 
@@ -81,10 +83,12 @@ final class ImportWsuCommand implements Callable<Integer> {
         StringBuilder sb = new StringBuilder();
         sb.append("# Imported from the WSU Khepera Simulator world file ").append(map.getFileName())
                 .append(" by khepera-sim import-wsu (see docs/wsu-migration.md).\n");
-        sb.append("# 500 x 500 px panel -> 1219.2 mm square, 1 px = 2.4384 mm, y flipped to point up; balls are caps.\n");
+        sb.append("# 500 x 500 px panel -> 1219.2 mm square, 1 px = 2.4384 mm, y flipped to point up;"
+                + " balls are caps.\n");
         sb.append("# ").append(contents(imported)).append(".\n");
         if (profile.equals("wsu")) {
-            sb.append("# The robot is 'wsu': it behaves as the original simulator's (the wsu profile, docs/wsu-migration.md).\n");
+            sb.append("# The robot is 'wsu': it behaves as the original simulator's (the wsu profile,"
+                    + " docs/wsu-migration.md).\n");
         }
         for (String w : warnings) {
             sb.append("# warning: ").append(w).append('\n');

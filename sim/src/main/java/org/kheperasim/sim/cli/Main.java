@@ -11,8 +11,10 @@ import picocli.CommandLine.Command;
  */
 @Command(name = "khepera-sim", mixinStandardHelpOptions = true, versionProvider = ToolVersion.class,
         description = "A deterministic Khepera robot simulator. Runs a controller class in an arena.",
-        subcommands = {GuiCommand.class, GuiBenchCommand.class, RunCommand.class, BenchCommand.class, SettingsCommand.class,
-            ListCommand.class, RobotsCommand.class, ServeCommand.class, ImportWsuCommand.class, VerifyCommand.class, GradeCommand.class,
+        subcommands = {GuiCommand.class, GuiBenchCommand.class, RunCommand.class, BenchCommand.class,
+                SettingsCommand.class,
+            ListCommand.class, RobotsCommand.class, ServeCommand.class, ImportWsuCommand.class, VerifyCommand.class,
+            GradeCommand.class,
             ReplayCommand.class, EvaluateCommand.class, CalibrationReportCommand.class, CompareCommand.class,
             CommandLine.HelpCommand.class})
 public final class Main implements java.util.concurrent.Callable<Integer> {

@@ -26,20 +26,24 @@ import picocli.CommandLine.Parameters;
 /** {@code replay --html}: a recorded run as a web page that replays it in any browser. */
 @Command(name = "replay", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Turn a recorded run into one self-contained web page that replays it in any browser: the arena,"
-                + " the robots with their trails, play/pause and speeds, a timeline with marks at contacts, cap moves and"
-                + " failures, the sensor panel and the score at every moment. No server, no network: open the file, put it"
-                + " on a USB stick or upload it to a course site.",
+                + " the robots with their trails, play/pause and speeds, a timeline with marks at"
+                + " contacts, cap moves and failures, the sensor panel and the score at every moment. No server, no"
+                + " network: open the file, put it on a USB stick or upload it to a course site.",
             "RECORDING is a trace file (run --trace), a run recording folder (the window's File > Save run recording)"
-                    + " or a robot-link recording of a real robot. To watch it in the window instead: File > Open recording."})
+                    + " or a robot-link recording of a real robot. To watch it in the window instead: File >"
+                    + " Open recording."})
 final class ReplayCommand implements Callable<Integer> {
-    @Option(names = "--html", required = true, paramLabel = "OUT.html", description = "write the page here (replaced if it exists)")
+    @Option(names = "--html", required = true, paramLabel = "OUT.html",
+            description = "write the page here (replaced if it exists)")
     Path html;
 
     @Option(names = "--arena", paramLabel = "FILE",
-            description = "the arena a trace was recorded in (default: start.arena or the arena file of the same name beside the trace, or the bundled arena it names)")
+            description = "the arena a trace was recorded in (default: start.arena or the arena file of the same name"
+                    + " beside the trace, or the bundled arena it names)")
     Path arenaFile;
 
-    @Parameters(index = "0", paramLabel = "RECORDING|TRACE", description = "a trace file, a run recording folder or a robot-link recording")
+    @Parameters(index = "0", paramLabel = "RECORDING|TRACE",
+            description = "a trace file, a run recording folder or a robot-link recording")
     Path recording;
 
     @Override
@@ -60,13 +64,18 @@ final class ReplayCommand implements Callable<Integer> {
         Replay replay = arenaFile == null ? ReplayFiles.open(recording) : ReplayFiles.open(recording, arena());
         replay.notes().forEach(n -> System.err.println("note: " + n));
         RunPage.Written w = RunPage.write(replay, RunOutcome.none(), html);
-        System.out.println(String.format(Locale.ROOT, "wrote %s: %.1f KB, %.1f s of %d robot%s, poses every %d ms, sensor values"
-                + " every %d ms, in %.2f s", w.file(), w.bytes() / 1024.0, w.seconds(), w.robots(), w.robots() == 1 ? "" : "s",
+        System.out.println(String.format(Locale.ROOT,
+                "wrote %s: %.1f KB, %.1f s of %d robot%s, poses every %d ms, sensor values"
+                + " every %d ms, in %.2f s", w.file(), w.bytes() / 1024.0, w.seconds(), w.robots(),
+                w.robots() == 1 ? "" : "s",
                 w.poseEveryMs(), w.sensorsEveryMs(), (System.nanoTime() - start) / 1e9));
         return ExitCodes.OK;
     }
 
-    /** The arena given with --arena: it must be the one the trace names by its SHA-256, or the walls drawn would mislead. */
+    /**
+     * The arena given with --arena: it must be the one the trace names by its SHA-256, or the walls drawn would
+     * mislead.
+     */
     private Arena arena() {
         Arena a = ArenaFiles.load(arenaFile, note -> { });
         try (BufferedReader in = Files.newBufferedReader(recording, StandardCharsets.UTF_8)) {
@@ -77,7 +86,8 @@ final class ReplayCommand implements Callable<Integer> {
                 if (f.length >= 4 && f[1].equals("arena") && f[3].startsWith("sha256=")
                         && !f[3].substring(7).equals(ArenaFormat.sha256(a))) {
                     throw new IllegalArgumentException("--arena " + arenaFile + " is not the arena " + recording
-                            + " was recorded in (its sha256 is " + ArenaFormat.sha256(a) + ", the trace names " + f[3].substring(7)
+                            + " was recorded in (its sha256 is " + ArenaFormat.sha256(a) + ", the trace names "
+                            + f[3].substring(7)
                             + "); give the arena file the run used");
                 }
             }

@@ -10,10 +10,12 @@ import picocli.CommandLine.Parameters;
 
 /** {@code robots}: the bundled robots (and any robot files named), one line each. */
 @Command(name = "robots", mixinStandardHelpOptions = true,
-        description = {"List the bundled robots, and check the robot files named: name, sensors, size, dialect, source.",
+        description = {"List the bundled robots, and check the robot files named: name, sensors, size,"
+                + " dialect, source.",
             "A robot is chosen with --robot-file FILE_OR_NAME, or in an arena's robot line: 'robot 300 300 0 epuck'."})
 final class RobotsCommand implements Runnable {
-    @Parameters(paramLabel = "FILE", arity = "0..*", description = "robot files to read and list too (a wrong one is refused by its line)")
+    @Parameters(paramLabel = "FILE", arity = "0..*",
+            description = "robot files to read and list too (a wrong one is refused by its line)")
     List<java.nio.file.Path> files = new ArrayList<>();
 
     @Override

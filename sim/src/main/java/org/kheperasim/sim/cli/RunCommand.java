@@ -34,9 +34,9 @@ import picocli.CommandLine.Option;
 @Command(name = "run", mixinStandardHelpOptions = true, sortOptions = false,
         description = {"Run a controller in an arena headless and print the result.",
             "A controller fails the run (exit status 1) when it throws, hangs, breaks a rule while it runs"
-                    + " (System.exit, a shutdown hook, a wait nothing can end) or runs out of memory; a class that uses a"
-                    + " forbidden call (files, the network: see docs/controller-rules.md) is refused before the run"
-                    + " (exit status 2).",
+                    + " (System.exit, a shutdown hook, a wait nothing can end) or runs out of memory; a"
+                    + " class that uses a forbidden call (files, the network: see docs/controller-rules.md) is refused"
+                    + " before the run (exit status 2).",
             "With --trace the trace is written as the run goes (whole lines, at least every second), so a run"
                     + " that is killed leaves a readable trace; on SIGTERM (kill, Ctrl-C) the run stops, the trace is"
                     + " finished and the result line printed."})
@@ -49,7 +49,8 @@ final class RunCommand implements Callable<Integer> {
     String arena;
 
     @Option(names = "--robot-file", paramLabel = "FILE",
-            description = "the robot for the arena's robot lines that name none: a robot file or a bundled robot (see robots)")
+            description = "the robot for the arena's robot lines that name none: a robot file or a bundled"
+                    + " robot (see robots)")
     String robotFile;
 
     @Mixin
@@ -60,10 +61,12 @@ final class RunCommand implements Callable<Integer> {
     Long seed;
 
     @Option(names = "--trusted",
-            description = "run the controller uncontained: allow files, the network, reflection and System.exit (only for code you trust; see docs/controller-rules.md)")
+            description = "run the controller uncontained: allow files, the network, reflection and System.exit (only"
+                    + " for code you trust; see docs/controller-rules.md)")
     boolean trusted;
 
-    @Option(names = "--trace", paramLabel = "FILE", description = "write a trace of the run (text, one line per sample)")
+    @Option(names = "--trace", paramLabel = "FILE",
+            description = "write a trace of the run (text, one line per sample)")
     Path trace;
 
     @Option(names = "--html", paramLabel = "FILE", description = "write the run as one web page that replays it in any"
@@ -71,7 +74,8 @@ final class RunCommand implements Callable<Integer> {
     Path html;
 
     @Option(names = "--edits", paramLabel = "FILE",
-            description = "apply the arena edits recorded in the window (run.edits) at their simulated times, replaying that run")
+            description = "apply the arena edits recorded in the window (run.edits) at their simulated times,"
+                    + " replaying that run")
     Path edits;
 
     @Option(names = "--sample-ms", paramLabel = "MS", defaultValue = "50", converter = CliNumbers.PositiveLong.class,
@@ -81,12 +85,15 @@ final class RunCommand implements Callable<Integer> {
     @Mixin
     SettingsOptions settingsOptions = new SettingsOptions();
 
-    @Option(names = "--hang-timeout", paramLabel = "SECONDS", defaultValue = "5", converter = CliNumbers.PositiveSeconds.class,
-            description = "real seconds without an API call after which a controller counts as hung, > 0 (default: ${DEFAULT-VALUE})")
+    @Option(names = "--hang-timeout", paramLabel = "SECONDS", defaultValue = "5",
+            converter = CliNumbers.PositiveSeconds.class,
+            description = "real seconds without an API call after which a controller counts as hung, > 0 (default:"
+                    + " ${DEFAULT-VALUE})")
     double hangTimeout;
 
     @Option(names = "--robot", paramLabel = "N:KEY=VALUE",
-            description = {"give robot N (0 for the arena's first robot line) its own controller or setting; repeatable:",
+            description = {"give robot N (0 for the arena's first robot line) its own controller or"
+                    + " setting; repeatable:",
                 "--robot 1:controller=Braitenberg --robot 1:motor.left.calibration=0.8 (KEY is 'controller' or a"
                         + " setting name from 'khepera-sim settings')"})
     List<String> robotOptions = new ArrayList<>();
@@ -97,9 +104,10 @@ final class RunCommand implements Callable<Integer> {
     @Option(names = "--quiet", description = "do not print the controller's messages")
     boolean quiet;
 
-    @Option(names = "--sandbox", description = "run in an operating-system sandbox, as grade does: only the Java runtime,"
-            + " the simulator, the controller's classpath and the arena visible, no network, limits on processes, files,"
-            + " memory (Linux, bubblewrap; see docs/grading.md)")
+    @Option(names = "--sandbox",
+            description = "run in an operating-system sandbox, as grade does: only the Java runtime,"
+            + " the simulator, the controller's classpath and the arena visible, no network, limits on"
+            + " processes, files, memory (Linux, bubblewrap; see docs/grading.md)")
     boolean sandbox;
 
     @picocli.CommandLine.Spec
@@ -110,8 +118,10 @@ final class RunCommand implements Callable<Integer> {
         if (sandbox) {
             String c = controllerOptions.controller().strip();
             if (c.endsWith(".java") && java.nio.file.Files.isRegularFile(Path.of(c))) {
-                throw new org.kheperasim.api.spi.ControllerException("--sandbox runs compiled classes, and " + c + " is a"
-                        + " source: compile it first, javac -cp khepera-sim.jar -d out " + c + ", then give --classpath out"
+                throw new org.kheperasim.api.spi.ControllerException(
+                        "--sandbox runs compiled classes, and " + c + " is a"
+                        + " source: compile it first, javac -cp khepera-sim.jar -d out " + c
+                        + ", then give --classpath out"
                         + " --controller " + Path.of(c).getFileName().toString().replaceFirst("\\.java$", ""));
             }
             return inTheBox();
@@ -122,7 +132,8 @@ final class RunCommand implements Callable<Integer> {
         HtmlPage[] page = new HtmlPage[1]; // set once the run is configured; the console writes to it
         FailureLines failures = new FailureLines();
         EditLog editLog = edits == null ? null : EditLog.load(edits);
-        SourceController.Compiled chosen = SourceController.of(controllerOptions.controller(), controllerOptions.classpath(),
+        SourceController.Compiled chosen =
+                SourceController.of(controllerOptions.controller(), controllerOptions.classpath(),
                 System.err);
         Simulation.Builder run = Simulation.builder()
                 .arena(resolved)
@@ -192,7 +203,8 @@ final class RunCommand implements Callable<Integer> {
     }
 
     /** The options whose values are files: the box runs in a folder of its own, where a relative path names nothing. */
-    private static final java.util.Set<String> PATH_OPTIONS = java.util.Set.of("--arena", "--classpath", "--trace", "--edits",
+    private static final java.util.Set<String> PATH_OPTIONS =
+            java.util.Set.of("--arena", "--classpath", "--trace", "--edits",
             "--robot-file");
 
     /** @return the arguments with each file option's value an absolute path ({@code --arena} only when it is a file) */
@@ -209,7 +221,8 @@ final class RunCommand implements Callable<Integer> {
             String value = eq > 0 ? a.substring(eq + 1) : args.get(++i);
             StringBuilder abs = new StringBuilder();
             for (String part : value.split(java.util.regex.Pattern.quote(java.io.File.pathSeparator), -1)) {
-                boolean file = !name.equals("--arena") && !name.equals("--robot-file") || java.nio.file.Files.isRegularFile(Path.of(part));
+                boolean file = !name.equals("--arena") && !name.equals("--robot-file")
+                        || java.nio.file.Files.isRegularFile(Path.of(part));
                 abs.append(abs.length() > 0 ? java.io.File.pathSeparator : "")
                         .append(file && !part.isEmpty() ? Path.of(part).toAbsolutePath().toString() : part);
             }
@@ -237,7 +250,8 @@ final class RunCommand implements Callable<Integer> {
                 index = -1;
             }
             if (index < 0 || eq < 0 || eq == colon + 1) {
-                throw new IllegalArgumentException("--robot '" + o + "': expected N:KEY=VALUE with N a robot's index from 0,"
+                throw new IllegalArgumentException("--robot '" + o
+                        + "': expected N:KEY=VALUE with N a robot's index from 0,"
                         + " e.g. --robot 1:controller=Braitenberg or --robot 1:motor.left.calibration=0.8");
             }
             String key = o.substring(colon + 1, eq).strip();
@@ -287,7 +301,8 @@ final class RunCommand implements Callable<Integer> {
      */
     static String summary(RunResult result, Score score) {
         boolean lone = result.robots().size() == 1;
-        StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "%s in %s: %.1f s simulated in %.2f s (%.0fx real time)",
+        StringBuilder s = new StringBuilder(
+                String.format(Locale.ROOT, "%s in %s: %.1f s simulated in %.2f s (%.0fx real time)",
                 Shown.line(simpleName(result.controller())), Shown.line(result.arena()), result.simulatedSeconds(),
                 result.wallSeconds(),
                 result.realTimeFactor()));
@@ -318,7 +333,8 @@ final class RunCommand implements Callable<Integer> {
     }
 
     private static void robot(StringBuilder s, RunResult.RobotResult r) {
-        s.append(String.format(Locale.ROOT, "ended at (%.1f, %.1f) mm heading %.1f deg; travelled %.2f m; %d collisions;"
+        s.append(String.format(Locale.ROOT,
+                "ended at (%.1f, %.1f) mm heading %.1f deg; travelled %.2f m; %d collisions;"
                 + " visited %.1f%% of the floor", r.x(), r.y(), r.headingDeg(), r.distanceMm() / 1000, r.collisions(),
                 r.visitedPercent()));
         s.append("; controller ").append(r.status().name().toLowerCase(Locale.ROOT));
@@ -375,7 +391,8 @@ final class RunCommand implements Callable<Integer> {
         }
         j.endArray();
         if (score != null) {
-            j.beginObject("score").put("points", score.points()).put("max", score.max()).put("percent", score.percent());
+            j.beginObject("score").put("points", score.points()).put("max", score.max())
+                    .put("percent", score.percent());
             j.beginArray("tasks");
             for (Score.Part p : score.parts()) {
                 j.element().put("task", p.task()).put("fraction", p.fraction()).put("points", p.points())

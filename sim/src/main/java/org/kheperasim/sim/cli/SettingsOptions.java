@@ -13,10 +13,12 @@ final class SettingsOptions {
                     + " --set link.baud=N takes any speed in 300..1000000)")
     Integer baud;
 
-    @Option(names = "--noise", paramLabel = "X", converter = CliNumbers.NonNegativeDecimal.class, description = "scale all noise, per reading and per robot (0 = none, 1 = default)")
+    @Option(names = "--noise", paramLabel = "X", converter = CliNumbers.NonNegativeDecimal.class,
+            description = "scale all noise, per reading and per robot (0 = none, 1 = default)")
     Double noise;
 
-    @Option(names = "--set", paramLabel = "KEY=VALUE", description = "change a setting, e.g. prox.3.gain=0.5 (see the 'settings' command)")
+    @Option(names = "--set", paramLabel = "KEY=VALUE",
+            description = "change a setting, e.g. prox.3.gain=0.5 (see the 'settings' command)")
     List<String> set = new ArrayList<>();
 
     /**

@@ -47,10 +47,13 @@ final class SourceController {
             err.print(r.report(file));
         }
         if (!r.success()) {
-            List<ControllerCompiler.Problem> errors = r.problems().stream().filter(ControllerCompiler.Problem::error).toList();
-            String first = errors.isEmpty() ? "the compiler failed" : errors.get(0).format(file).lines().findFirst().orElse("");
+            List<ControllerCompiler.Problem> errors =
+                    r.problems().stream().filter(ControllerCompiler.Problem::error).toList();
+            String first = errors.isEmpty() ? "the compiler failed"
+                    : errors.get(0).format(file).lines().findFirst().orElse("");
             throw new ControllerException(file + " does not compile: " + first
-                    + (errors.size() > 1 ? " (" + (errors.size() - 1) + " more errors above)" : "") + "; fix it and run again");
+                    + (errors.size() > 1 ? " (" + (errors.size() - 1) + " more errors above)" : "")
+                    + "; fix it and run again");
         }
         List<Path> path = new ArrayList<>(List.of(out));
         path.addAll(classpath);

@@ -39,7 +39,8 @@ final class StopOnSignal {
                 if (!reported.await(graceMillis, TimeUnit.MILLISECONDS)) {
                     LineFileWriter.flushAll();
                     System.err.println(ToolErrors.prefix("khepera-sim") + "stopped by a signal, but the run did not"
-                            + " stop within " + graceMillis / 1000 + " s (a controller holds on), so there is no result;"
+                            + " stop within " + graceMillis / 1000
+                            + " s (a controller holds on), so there is no result;"
                             + " the trace holds every whole line written so far");
                 }
             } catch (InterruptedException e) {

@@ -61,8 +61,10 @@ final class Swarm {
                 live[0] = ManagementFactory.getMemoryMXBean().getHeapMemoryUsage().getUsed();
             }
         });
-        System.out.printf(Locale.ROOT, "set-up of a run (construction, 1 ms simulated, teardown): %.3f s; peak heap in use"
+        System.out.printf(Locale.ROOT,
+                "set-up of a run (construction, 1 ms simulated, teardown): %.3f s; peak heap in use"
                 + " (sum of the pools' peaks, garbage included: an upper bound): %,d MB; live while a run"
-                + " is set up, after a full collection: %,d MB; heap limit %,d MB (-Xmx)%n", setUp, peak >> 20, live[0] >> 20, Runtime.getRuntime().maxMemory() >> 20);
+                + " is set up, after a full collection: %,d MB; heap limit %,d MB (-Xmx)%n", setUp, peak >> 20,
+                live[0] >> 20, Runtime.getRuntime().maxMemory() >> 20);
     }
 }

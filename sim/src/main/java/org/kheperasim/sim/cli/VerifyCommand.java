@@ -41,7 +41,8 @@ final class VerifyCommand implements Callable<Integer> {
     Path recording;
 
     @Option(names = "--arena", paramLabel = "FILE",
-            description = "the arena the trace was recorded in (default: start.arena in a recording or beside the trace, the arena file of the same name beside it, or the bundled arena it names)")
+            description = "the arena the trace was recorded in (default: start.arena in a recording or beside the"
+                    + " trace, the arena file of the same name beside it, or the bundled arena it names)")
     Path arenaFile;
 
     @Option(names = "--classpath", paramLabel = "PATHS", split = "${sys:path.separator}",
@@ -54,9 +55,11 @@ final class VerifyCommand implements Callable<Integer> {
         boolean folder = Files.isDirectory(recording);
         Path traceFile = folder ? recording.resolve("run.trace") : recording;
         if (!Files.exists(traceFile)) {
-            throw new IllegalArgumentException(folder ? "the run recording " + recording + " has no run.trace to compare"
+            throw new IllegalArgumentException(folder
+                    ? "the run recording " + recording + " has no run.trace to compare"
                     + " with; save the recording from the window (it keeps the run's trace), or verify a trace file"
-                    : "no trace file " + recording + "; give a trace written by 'run --trace FILE' or a run recording folder");
+                    : "no trace file " + recording
+                    + "; give a trace written by 'run --trace FILE' or a run recording folder");
         }
         String recorded = TextFiles.readUtf8(traceFile, MAX_TRACE_BYTES, "trace",
                 (line, what) -> new TraceFormatException(traceFile.toString(), line, what));
@@ -80,7 +83,8 @@ final class VerifyCommand implements Callable<Integer> {
         run.trace(again).console(line -> { }).run();
         TraceDiff.Result diff = TraceDiff.compare(recorded, again.toString());
         if (diff.identical()) {
-            System.out.println("identical: " + diff.samples() + " sample lines up to " + summary.lastSeconds() + " s, " + traceFile);
+            System.out.println("identical: " + diff.samples() + " sample lines up to " + summary.lastSeconds()
+                    + " s, " + traceFile);
             return ExitCodes.OK;
         }
         System.out.println("differs: " + traceFile);
@@ -104,14 +108,18 @@ final class VerifyCommand implements Callable<Integer> {
         List<Path> own = RunRecording.classpath(recording);
         for (Path p : own) {
             if (!Files.exists(p)) {
-                throw new IllegalArgumentException("the recording's replay.txt names the classpath entry " + p + ", which"
+                throw new IllegalArgumentException(
+                        "the recording's replay.txt names the classpath entry " + p + ", which"
                         + " does not exist; give the controller's classes with --classpath DIR_OR_JAR");
             }
         }
         return own;
     }
 
-    /** The recorded arena: given, the recording's start.arena, the arena file beside the trace, or the bundled one the trace names; its sha256 must match. */
+    /**
+     * The recorded arena: given, the recording's start.arena, the arena file beside the trace, or the bundled one the
+     * trace names; its sha256 must match.
+     */
     private Arena arena(boolean folder, String recordedArena) {
         String[] nameAndSha = recordedArena.split(" sha256=", 2);
         Arena a;
@@ -126,7 +134,8 @@ final class VerifyCommand implements Callable<Integer> {
         }
         if (nameAndSha.length == 2 && !ArenaFormat.sha256(a).equals(nameAndSha[1])) {
             throw new IllegalArgumentException("the arena " + a.name() + " is not the one recorded (its sha256 is "
-                    + ArenaFormat.sha256(a) + ", the trace names " + nameAndSha[1] + "); give the recorded one with --arena FILE");
+                    + ArenaFormat.sha256(a) + ", the trace names " + nameAndSha[1]
+                    + "); give the recorded one with --arena FILE");
         }
         return a;
     }

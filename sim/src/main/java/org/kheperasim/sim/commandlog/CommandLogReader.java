@@ -96,7 +96,8 @@ public final class CommandLogReader implements AutoCloseable {
             if (!m.startsWith(i + " ")) {
                 throw new LogFormatException(lineNumber, "expected 'mode " + i + " tethered|onboard|onboard-steps'");
             }
-            robots.add(new LogHeader.Robot(r[1], r[2], s.substring(s.indexOf(' ') + 1), m.substring(m.indexOf(' ') + 1)));
+            robots.add(new LogHeader.Robot(r[1], r[2], s.substring(s.indexOf(' ') + 1),
+                    m.substring(m.indexOf(' ') + 1)));
         }
         this.header = new LogHeader(seed, arena, end, sample, robots);
     }
@@ -121,7 +122,8 @@ public final class CommandLogReader implements AutoCloseable {
         }
         String l = line();
         if (l == null) {
-            throw new TornLogException(lineNumber, "the log stops before its end line (torn: the run did not finish it)");
+            throw new TornLogException(lineNumber,
+                    "the log stops before its end line (torn: the run did not finish it)");
         }
         try {
             if (l.startsWith("claim ")) {
@@ -130,7 +132,8 @@ public final class CommandLogReader implements AutoCloseable {
             if (l.startsWith("end ")) {
                 long count = Long.parseLong(l.substring(4));
                 if (count != events) {
-                    throw new LogFormatException(lineNumber, "the end line counts " + count + " events, the log holds " + events);
+                    throw new LogFormatException(lineNumber,
+                            "the end line counts " + count + " events, the log holds " + events);
                 }
                 ended = true;
                 return null;
@@ -151,7 +154,8 @@ public final class CommandLogReader implements AutoCloseable {
                 }
                 case 'v', 'p' -> {
                     count(f, 5);
-                    yield new Command(kind, robot, Long.parseLong(f[2]), Integer.parseInt(f[3]), Integer.parseInt(f[4]));
+                    yield new Command(kind, robot, Long.parseLong(f[2]), Integer.parseInt(f[3]),
+                            Integer.parseInt(f[4]));
                 }
                 case 'a', 'f', 'r' -> {
                     count(f, 4);
@@ -178,14 +182,16 @@ public final class CommandLogReader implements AutoCloseable {
         }
         int r = Integer.parseInt(f[1]);
         if (r < 0 || r >= header.robots().size()) {
-            throw new LogFormatException(lineNumber, "robot " + r + " is not one of the run's " + header.robots().size());
+            throw new LogFormatException(lineNumber,
+                    "robot " + r + " is not one of the run's " + header.robots().size());
         }
         return r;
     }
 
     private void count(String[] f, int n) {
         if (f.length != n) {
-            throw new LogFormatException(lineNumber, "'" + f[0] + "' takes " + (n - 1) + " fields, this line has " + (f.length - 1));
+            throw new LogFormatException(lineNumber,
+                    "'" + f[0] + "' takes " + (n - 1) + " fields, this line has " + (f.length - 1));
         }
     }
 

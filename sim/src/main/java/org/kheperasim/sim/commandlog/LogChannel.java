@@ -59,7 +59,8 @@ public final class LogChannel {
     public static Connection open(Path socket) throws IOException {
         SocketChannel ch = SocketChannel.open(StandardProtocolFamily.UNIX);
         ch.connect(UnixDomainSocketAddress.of(socket));
-        OutputStream out = new GZIPOutputStream(new BufferedOutputStream(Channels.newOutputStream(ch), 1 << 16), 1 << 13);
+        OutputStream out = new GZIPOutputStream(
+                new BufferedOutputStream(Channels.newOutputStream(ch), 1 << 16), 1 << 13);
         return new Connection(ch, new BufferedWriter(new OutputStreamWriter(out, StandardCharsets.UTF_8), 1 << 14));
     }
 
@@ -149,7 +150,8 @@ public final class LogChannel {
             server = ServerSocketChannel.open(StandardProtocolFamily.UNIX);
             server.bind(UnixDomainSocketAddress.of(socket));
             try {
-                // A boxed run's user (another uid, for a root grader) must be able to connect; the folder keeps others out.
+                // A boxed run's user (another uid, for a root grader) must be able to connect; the folder keeps others
+                // out.
                 Files.setPosixFilePermissions(socket, PosixFilePermissions.fromString("rw-rw-rw-"));
             } catch (UnsupportedOperationException e) {
                 // not a POSIX file system (Windows): the folder's own access rules apply

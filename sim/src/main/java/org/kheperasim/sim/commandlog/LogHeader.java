@@ -21,7 +21,8 @@ public record LogHeader(long seed, String arena, long endNanos, long sampleMilli
      * @param controllerClass the controller's class name, as the trace header writes it
      * @param name            the robot's name in reports (the class's simple name, {@code Name#i} with several)
      * @param settings        its settings as {@code Settings.describe()} writes them
-     * @param mode            where its controller ran ({@code SimRobot.controlMode()}): through the link or on the robot
+     * @param mode            where its controller ran ({@code SimRobot.controlMode()}): through the link or on the
+     *     robot
      */
     public record Robot(String controllerClass, String name, String settings, String mode) {
     }
@@ -59,7 +60,8 @@ public record LogHeader(long seed, String arena, long endNanos, long sampleMilli
         sb.append("robots ").append(robots.size()).append('\n');
         for (int i = 0; i < robots.size(); i++) {
             Robot r = robots.get(i);
-            sb.append("robot ").append(i).append(' ').append(r.controllerClass()).append(' ').append(r.name()).append('\n');
+            sb.append("robot ").append(i).append(' ').append(r.controllerClass()).append(' ')
+                    .append(r.name()).append('\n');
             sb.append("settings ").append(i).append(' ').append(r.settings()).append('\n');
             sb.append("mode ").append(i).append(' ').append(r.mode()).append('\n');
         }

@@ -80,7 +80,8 @@ public final class OpenLoopReplay {
      * As {@link #replay(Run, CommandLogReader, Writer)}, telling a recorder what the replay's drivers do
      * (a test's check that the replay does what the log says, in the same order).
      */
-    static Outcome replay(Run run, CommandLogReader log, Writer trace, org.kheperasim.sim.engine.view.DriverRecorder recorder) {
+    static Outcome replay(Run run, CommandLogReader log, Writer trace,
+            org.kheperasim.sim.engine.view.DriverRecorder recorder) {
         return replay(run, log, trace, recorder, null, 0);
     }
 
@@ -92,11 +93,13 @@ public final class OpenLoopReplay {
      * @param listener     also receives the replay's snapshots
      * @param periodMillis how often, simulated ms, ≥ 1
      */
-    public static Outcome replay(Run run, CommandLogReader log, Writer trace, SnapshotListener listener, long periodMillis) {
+    public static Outcome replay(Run run, CommandLogReader log, Writer trace, SnapshotListener listener,
+            long periodMillis) {
         return replay(run, log, trace, null, listener, periodMillis);
     }
 
-    private static Outcome replay(Run run, CommandLogReader log, Writer trace, org.kheperasim.sim.engine.view.DriverRecorder recorder,
+    private static Outcome replay(Run run, CommandLogReader log, Writer trace,
+            org.kheperasim.sim.engine.view.DriverRecorder recorder,
             SnapshotListener listener, long periodMillis) {
         LogHeader h = log.header();
         check(run, h);
@@ -107,7 +110,8 @@ public final class OpenLoopReplay {
         List<SimRobot> robots = new ArrayList<>();
         List<Driver> drivers = new ArrayList<>();
         for (int i = 0; i < h.robots().size(); i++) {
-            SimRobot robot = engine.addRobot(h.robots().get(i).name(), run.arena().robots().get(i), run.settings().get(i),
+            SimRobot robot = engine.addRobot(h.robots().get(i).name(), run.arena().robots().get(i),
+                    run.settings().get(i),
                     run.arena().robotType(i));
             try {
                 robot.controlMode(h.robots().get(i).mode());
@@ -147,7 +151,8 @@ public final class OpenLoopReplay {
         for (int i = 0; i < robots.size(); i++) {
             SimRobot r = robots.get(i);
             results.add(new RunResult.RobotResult(r.name(), r.x(), r.y(), r.headingDeg(), r.distanceTravelledMm(),
-                    r.collisions(), r.visitedPercent(), drivers.get(i).ended ? ControllerStatus.FINISHED : ControllerStatus.STOPPED,
+                    r.collisions(), r.visitedPercent(),
+                    drivers.get(i).ended ? ControllerStatus.FINISHED : ControllerStatus.STOPPED,
                     null, r.regionsEntered()));
         }
         RunResult result = new RunResult(run.seed(), run.arena().name(), h.robots().get(0).controllerClass(),
@@ -164,7 +169,8 @@ public final class OpenLoopReplay {
         header.put("controller", h.robots().get(0).controllerClass());
         header.put("settings", run.settings().get(0).describe());
         header.put("sample-ms", Long.toString(run.sampleMillis()));
-        header.put("mode", org.kheperasim.sim.run.RunSession.modes(h.robots().stream().map(LogHeader.Robot::mode).toList()));
+        header.put("mode", org.kheperasim.sim.run.RunSession.modes(
+                h.robots().stream().map(LogHeader.Robot::mode).toList()));
         org.kheperasim.sim.run.RunSession.robotTypes(header, run.arena());
         boolean alike = true;
         for (LogHeader.Robot r : h.robots()) {
@@ -173,7 +179,8 @@ public final class OpenLoopReplay {
         }
         if (!alike) {
             for (int i = 0; i < h.robots().size(); i++) {
-                header.put("robot-" + i, h.robots().get(i).controllerClass() + " settings " + run.settings().get(i).describe());
+                header.put("robot-" + i,
+                        h.robots().get(i).controllerClass() + " settings " + run.settings().get(i).describe());
             }
         }
         return header;
@@ -182,13 +189,15 @@ public final class OpenLoopReplay {
     private static void check(Run run, LogHeader h) {
         String arena = run.arena().name() + " sha256=" + ArenaFormat.sha256(run.arena());
         if (h.seed() != run.seed()) {
-            throw new ReplayMismatchException("the log is of seed " + h.seed() + ", the run was asked for seed " + run.seed());
+            throw new ReplayMismatchException("the log is of seed " + h.seed()
+                    + ", the run was asked for seed " + run.seed());
         }
         if (!h.arena().equals(arena)) {
             throw new ReplayMismatchException("the log is of arena " + h.arena() + ", the run was asked for " + arena);
         }
         if (h.endNanos() != run.endNanos() || h.sampleMillis() != run.sampleMillis()) {
-            throw new ReplayMismatchException("the log is of a run to " + h.endNanos() + " ns sampled every " + h.sampleMillis()
+            throw new ReplayMismatchException("the log is of a run to " + h.endNanos() + " ns sampled every "
+                    + h.sampleMillis()
                     + " ms, the run was asked to " + run.endNanos() + " ns every " + run.sampleMillis() + " ms");
         }
         if (h.robots().size() != run.arena().robots().size() || run.settings().size() != h.robots().size()) {
@@ -197,12 +206,14 @@ public final class OpenLoopReplay {
         }
         for (int i = 0; i < h.robots().size(); i++) {
             if (!h.robots().get(i).settings().equals(run.settings().get(i).describe())) {
-                throw new ReplayMismatchException("robot " + i + "'s settings in the log are '" + h.robots().get(i).settings()
+                throw new ReplayMismatchException("robot " + i + "'s settings in the log are '"
+                        + h.robots().get(i).settings()
                         + "', the run was asked for '" + run.settings().get(i).describe() + "'");
             }
             if (!h.robots().get(i).controllerClass().matches("[\\p{L}_$][\\p{L}\\p{N}_$.]*")
                     || !h.robots().get(i).name().matches("[\\p{L}\\p{N}_$#.]+")) {
-                throw new ReplayMismatchException("robot " + i + "'s controller or name in the log is not a class name");
+                throw new ReplayMismatchException("robot " + i
+                        + "'s controller or name in the log is not a class name");
             }
         }
     }
@@ -300,7 +311,8 @@ public final class OpenLoopReplay {
         private CommandLogReader.Event next(String where) {
             CommandLogReader.Event e = log.next();
             if (e == null || e instanceof CommandLogReader.Claim) {
-                throw new ReplayMismatchException("the log ends (line " + log.lineNumber() + ") where the run goes on: " + where);
+                throw new ReplayMismatchException("the log ends (line " + log.lineNumber()
+                        + ") where the run goes on: " + where);
             }
             events++;
             return e;
@@ -328,7 +340,8 @@ public final class OpenLoopReplay {
                     case 'v' -> r.controls().commandSpeeds(c.now(), c.a(), c.b());
                     case 'p' -> r.controls().commandPositions(c.now(), c.a(), c.b());
                     case 'a' -> r.controls().commandArm(c.now(), c.a());
-                    case 'f' -> r.controls().commandFingers(c.now(), c.a() == 1 ? GripperState.CLOSED : GripperState.OPEN);
+                    case 'f' -> r.controls()
+                            .commandFingers(c.now(), c.a() == 1 ? GripperState.CLOSED : GripperState.OPEN);
                     case 'r' -> read(r, c.now(), c.a());
                     case 'i' -> r.vision().image(c.now()); // the same image, at the same moment: the trace shows it
                     default -> throw new IllegalStateException("command " + c.kind());
@@ -352,7 +365,8 @@ public final class OpenLoopReplay {
         }
 
         private ReplayMismatchException diverged(String expected, CommandLogReader.Wake w) {
-            return new ReplayMismatchException("the log does not follow the run at line " + log.lineNumber() + ": " + expected
+            return new ReplayMismatchException("the log does not follow the run at line " + log.lineNumber()
+                    + ": " + expected
                     + ", but the log holds a wake of robot " + w.robot());
         }
     }

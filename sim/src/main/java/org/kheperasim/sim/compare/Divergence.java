@@ -17,7 +17,8 @@ import java.util.Locale;
  * @param partedAt the first time the paths are more than the threshold apart, s; NaN: never
  * @param maxApartMm the largest distance between them, mm
  */
-public record Divergence(double[] sensorRms, double[] times, double[][] realPath, double[][] simPath, double thresholdMm,
+public record Divergence(double[] sensorRms, double[] times, double[][] realPath, double[][] simPath,
+        double thresholdMm,
         double partedAt, double maxApartMm) {
 
     /**
@@ -112,11 +113,13 @@ public record Divergence(double[] sensorRms, double[] times, double[][] realPath
         for (int i = 0; i < sensorRms.length; i++) {
             sb.append(i == 0 ? "" : ",").append(String.format(Locale.ROOT, "%.3f", sensorRms[i]));
         }
-        sb.append(String.format(Locale.ROOT, "],\"thresholdMm\":%.3f,\"partedAt\":%s,\"maxApartMm\":%.3f,\"samples\":[", thresholdMm,
+        sb.append(String.format(Locale.ROOT,
+                "],\"thresholdMm\":%.3f,\"partedAt\":%s,\"maxApartMm\":%.3f,\"samples\":[", thresholdMm,
                 Double.isNaN(partedAt) ? "null" : String.format(Locale.ROOT, "%.4f", partedAt), maxApartMm));
         List<String> rows = new ArrayList<>();
         for (int k = 0; k < times.length; k++) {
-            rows.add(String.format(Locale.ROOT, "{\"t\":%.4f,\"real\":[%.2f,%.2f],\"sim\":[%.2f,%.2f]}", times[k], realPath[k][0],
+            rows.add(String.format(Locale.ROOT, "{\"t\":%.4f,\"real\":[%.2f,%.2f],\"sim\":[%.2f,%.2f]}",
+                    times[k], realPath[k][0],
                     realPath[k][1], simPath[k][0], simPath[k][1]));
         }
         return sb.append(String.join(",", rows)).append("]}").toString();

@@ -66,7 +66,8 @@ public final class PathPlot {
         g.drawString("simulation (odometry)", MARGIN + 160, 20);
         g.setColor(Color.DARK_GRAY);
         g.drawString(Double.isNaN(d.partedAt()) ? String.format(Locale.ROOT, "never %.0f mm apart", d.thresholdMm())
-                : String.format(Locale.ROOT, "%.0f mm apart at %.2f s (rings)", d.thresholdMm(), d.partedAt()), MARGIN + 340, 20);
+                : String.format(Locale.ROOT, "%.0f mm apart at %.2f s (rings)", d.thresholdMm(), d.partedAt()),
+                MARGIN + 340, 20);
         g.dispose();
         org.kheperasim.sim.files.AtomicFiles.writePng(png, img);
     }

@@ -36,13 +36,15 @@ public final class SimulatedRun {
         if (type != null) {
             kinds.set(0, new RobotKind(type.name(), type));
         }
-        Arena a = new Arena(arena.name(), arena.width(), arena.height(), poses, arena.walls(), arena.lights(), arena.caps(),
+        Arena a = new Arena(arena.name(), arena.width(), arena.height(), poses, arena.walls(),
+                arena.lights(), arena.caps(),
                 arena.regions(), arena.assignment(), kinds);
         List<Track.Point> points = new ArrayList<>();
         Simulation.builder().arena(a).controller(controller).settings(settings).seed(seed).seconds(seconds)
                 .listener(snapshot -> {
                     RobotView r = snapshot.robots().get(0);
-                    points.add(new Track.Point(snapshot.timeNanos() / 1e9, r.proximity(), r.encoderLeft(), r.encoderRight()));
+                    points.add(new Track.Point(snapshot.timeNanos() / 1e9, r.proximity(), r.encoderLeft(),
+                            r.encoderRight()));
                 }, periodMillis).run();
         return new Track(points);
     }

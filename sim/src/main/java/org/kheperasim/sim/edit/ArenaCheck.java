@@ -47,13 +47,16 @@ public final class ArenaCheck {
             for (Wall w : edited.walls()) {
                 if (!before.walls().contains(w) && segmentDistance(r.x(), r.y(), w) < clear + w.thickness() / 2) {
                     return String.format(java.util.Locale.ROOT,
-                            "a wall there would land on the running robot at (%.0f, %.0f) mm; place it at least %.1f mm from the robot's centre",
+                            "a wall there would land on the running robot at (%.0f, %.0f) mm; place it at least %.1f mm"
+                                    + " from the robot's centre",
                             r.x(), r.y(), clear + w.thickness() / 2);
                 }
             }
             for (Light l : edited.lights()) {
-                if (!before.lights().contains(l) && StrictMath.hypot(r.x() - l.x(), r.y() - l.y()) < clear + l.radius()) {
-                    return String.format(java.util.Locale.ROOT, "a lamp there would land on the running robot at (%.0f, %.0f) mm",
+                if (!before.lights().contains(l)
+                        && StrictMath.hypot(r.x() - l.x(), r.y() - l.y()) < clear + l.radius()) {
+                    return String.format(java.util.Locale.ROOT,
+                            "a lamp there would land on the running robot at (%.0f, %.0f) mm",
                             r.x(), r.y());
                 }
             }

@@ -61,7 +61,8 @@ public final class ArenaEdits {
     public static Arena setWallEnd(Arena a, int index, int end, double x, double y) {
         List<Wall> walls = new ArrayList<>(a.walls());
         Wall w = walls.get(index);
-        walls.set(index, end == 0 ? new Wall(x, y, w.x2(), w.y2(), w.thickness()) : new Wall(w.x1(), w.y1(), x, y, w.thickness()));
+        walls.set(index, end == 0 ? new Wall(x, y, w.x2(), w.y2(), w.thickness())
+                : new Wall(w.x1(), w.y1(), x, y, w.thickness()));
         return with(a, a.robots(), walls, a.lights(), a.caps());
     }
 
@@ -84,7 +85,8 @@ public final class ArenaEdits {
                 }
                 case LIGHT -> {
                     Light l = lights.get(i);
-                    lights.set(i, new Light(l.x() + dx, l.y() + dy, l.radius(), l.range(), l.intensity(), l.directionDeg(), l.spreadDeg()));
+                    lights.set(i, new Light(l.x() + dx, l.y() + dy, l.radius(), l.range(), l.intensity(),
+                            l.directionDeg(), l.spreadDeg()));
                 }
                 case CAP -> {
                     Cap c = caps.get(i);
@@ -189,9 +191,11 @@ public final class ArenaEdits {
     /** @return a new empty arena of the given size, with a border of walls and one robot in the middle */
     public static Arena blank(String name, double width, double height) {
         double t = WALL_THICKNESS;
-        List<Wall> border = List.of(new Wall(0, t / 2, width, t / 2, t), new Wall(0, height - t / 2, width, height - t / 2, t),
+        List<Wall> border = List.of(new Wall(0, t / 2, width, t / 2, t),
+                new Wall(0, height - t / 2, width, height - t / 2, t),
                 new Wall(t / 2, 0, t / 2, height, t), new Wall(width - t / 2, 0, width - t / 2, height, t));
-        return new Arena(name, width, height, List.of(new Pose(width / 2, height / 2, 90)), border, List.of(), List.of(), List.of());
+        return new Arena(name, width, height, List.of(new Pose(width / 2, height / 2, 90)), border, List.of(),
+                List.of(), List.of());
     }
 
     private static boolean in(double x, double y, double lx, double ly, double hx, double hy) {

@@ -108,7 +108,8 @@ public final class EditorModel {
         }
         Arena prev = undo.peek();
         if (ArenaCheck.problem(prev, arena, running.get(), List.of()) != null) {
-            refusals.accept("cannot undo that while a run goes on: " + ArenaCheck.problem(prev, arena, running.get(), List.of()));
+            refusals.accept("cannot undo that while a run goes on: "
+                    + ArenaCheck.problem(prev, arena, running.get(), List.of()));
             return false;
         }
         undo.pop();
@@ -124,7 +125,8 @@ public final class EditorModel {
         }
         Arena next = redo.peek();
         if (ArenaCheck.problem(next, arena, running.get(), List.of()) != null) {
-            refusals.accept("cannot redo that while a run goes on: " + ArenaCheck.problem(next, arena, running.get(), List.of()));
+            refusals.accept("cannot redo that while a run goes on: "
+                    + ArenaCheck.problem(next, arena, running.get(), List.of()));
             return false;
         }
         redo.pop();
@@ -264,7 +266,10 @@ public final class EditorModel {
         return new Kept(arena, new ArrayList<>(undo), new ArrayList<>(redo), dirty);
     }
 
-    /** @param k what {@link #keep} returned: the arena comes back with its steps and, if it had them, its unsaved changes */
+    /**
+     * @param k what {@link #keep} returned: the arena comes back with its steps and, if it had them, its unsaved
+     *     changes
+     */
     public void restore(Kept k) {
         arena = k.arena();
         preview = null;

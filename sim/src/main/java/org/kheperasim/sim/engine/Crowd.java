@@ -17,7 +17,8 @@ import org.kheperasim.sim.engine.space.Bodies;
  * its own, gliding as far as the walls allow, from one scan to the next. The scans are taken in the
  * order of their ticks (and of the robots within a tick); before a scan, the robots that may come
  * within its sight are moved to its tick too. A scan therefore sees every robot where the
- * tick-by-tick reference has it, and each robot's path is the one it would drive there. While any robot may touch a cap, or its gripper moves or holds one, {@link Motion} keeps
+ * tick-by-tick reference has it, and each robot's path is the one it would drive there. While any robot may touch a
+ * cap, or its gripper moves or holds one, {@link Motion} keeps
  * these robots to the tick-by-tick lockstep instead: a cap pushed moves while others may be looking
  * at it.
  */
@@ -147,7 +148,8 @@ final class Crowd implements Bodies.Visitor {
         // The same for both robots of a pair (a sum is exact to swap): one must not find the other
         // within sight while the other finds no one and moves on its own.
         double apart = StrictMath.sqrt(dx * dx + dy * dy) - (lookingReach + o.travelPerTickMm() * ticks);
-        if (apart - StrictMath.max(looking.unseenMm(), o.unseenMm()) - StrictMath.max(looking.radiusMm(), o.radiusMm()) < 0) {
+        if (apart - StrictMath.max(looking.unseenMm(), o.unseenMm())
+                - StrictMath.max(looking.radiusMm(), o.radiusMm()) < 0) {
             if (sightCount == sight.length) {
                 sight = Arrays.copyOf(sight, sightCount * 2);
             }

@@ -97,7 +97,8 @@ public final class Engine {
      */
     public SimRobot addRobot(String name, Pose start, Settings settings, RobotType type) {
         RobotType t = WsuProfile.robotFor(settings, type);
-        SimRobot r = new SimRobot(robots.size(), name, world, start, WsuProfile.settingsFor(settings, t), t, seeds.split());
+        SimRobot r = new SimRobot(robots.size(), name, world, start, WsuProfile.settingsFor(settings, t),
+                t, seeds.split());
         robots.add(r);
         if (recorder != null) {
             r.record(recorder);
@@ -150,7 +151,8 @@ public final class Engine {
      */
     public void addListener(SnapshotListener listener, long periodNanos) {
         if (periodNanos < TICK_NANOS || periodNanos % TICK_NANOS != 0) {
-            throw new IllegalArgumentException("listener period " + periodNanos + " ns must be a whole number of 1 ms ticks");
+            throw new IllegalArgumentException("listener period " + periodNanos
+                    + " ns must be a whole number of 1 ms ticks");
         }
         listeners.add(new Subscription(listener, periodNanos / TICK_NANOS));
     }
@@ -332,8 +334,8 @@ public final class Engine {
     /**
      * How many ticks the world can move through at once: up to the next tick at which anything is
      * due (a command, a noise redraw, a position-move update, a controller's wake-up, a snapshot,
-     * the end; for a lone robot, its own commands, redraws and updates do not count); at least one. Each robot then moves through the stretch as cheaply as it can (see
-     * {@link Motion}).
+     * the end; for a lone robot, its own commands, redraws and updates do not count); at least one. Each robot then
+     * moves through the stretch as cheaply as it can (see {@link Motion}).
      */
     private long quietTicks() {
         if (ticking || (hasDrivers && !anyDriverRunning())) {
@@ -412,7 +414,8 @@ public final class Engine {
      */
     public void edit(org.kheperasim.sim.arena.Arena edited) {
         if (inTick) {
-            throw new IllegalStateException("the arena can only be edited between ticks, by the thread holding the turn");
+            throw new IllegalStateException(
+                    "the arena can only be edited between ticks, by the thread holding the turn");
         }
         // Values of the scans left for a later read are those of the arena as it was.
         for (SimRobot r : robots) {
@@ -438,7 +441,8 @@ public final class Engine {
             r.copyVisible(timeNanos(), prox, light);
             views.add(new RobotView(r.id(), r.name(), r.x(), r.y(), r.headingDeg(), r.speedLeft(), r.speedRight(),
                     r.encoderLeft(), r.encoderRight(), r.contact(), prox, light, r.collisions(),
-                    r.distanceTravelledMm(), driverStatus.get(r.id()).apply(r), r.gripper().view(), r.leds(), r.type()));
+                    r.distanceTravelledMm(), driverStatus.get(r.id()).apply(r), r.gripper().view(),
+                    r.leds(), r.type()));
         }
         List<VisionView> vision = new ArrayList<>();
         for (SimRobot r : robots) {

@@ -41,7 +41,8 @@ final class Glides {
         if (body.wheels().still()) {
             return Long.MAX_VALUE;
         }
-        double others = StrictMath.min(capContacts.freeTravelMm(body.x(), body.y()), coverage.freeTravelMm(body.x(), body.y()));
+        double others = StrictMath.min(capContacts.freeTravelMm(body.x(), body.y()),
+                coverage.freeTravelMm(body.x(), body.y()));
         // The body's clearance is looked up only when its cheap lower bound does not already allow the glide wanted.
         long ticks = glideTicksFor(StrictMath.min(body.freeTravelAtLeastMm(false), others));
         if (ticks >= wanted) {

@@ -217,7 +217,8 @@ public final class OnBoardControl {
             case 0 -> leds & ~bit;
             case 1 -> leds | bit;
             case 2 -> leds ^ bit;
-            default -> throw new IllegalArgumentException("LED action " + action + " must be 0 (off), 1 (on) or 2 (toggle)");
+            default -> throw new IllegalArgumentException("LED action " + action
+                    + " must be 0 (off), 1 (on) or 2 (toggle)");
         };
     }
 

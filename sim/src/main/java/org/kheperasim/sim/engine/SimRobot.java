@@ -103,7 +103,8 @@ public final class SimRobot {
         CounterNoise motorRight = new CounterNoise(random.nextLong());
         Miscalibration calibration = new Miscalibration(model, systematic);
         this.body = new DriveBody(world, id, start.x(), start.y(), start.headingDeg(), type, model.motors(),
-                model.noise().reading(), calibration.calibrationLeft, calibration.calibrationRight, motorLeft, motorRight);
+                model.noise().reading(), calibration.calibrationLeft, calibration.calibrationRight,
+                motorLeft, motorRight);
         this.sense = new SamplePose(body);
         this.proximity = new ProximitySensing(world, id, placement, model, calibration, proxNoise);
         this.light = new LightSensing(world, placement, model, calibration, lightNoise);
@@ -115,7 +116,8 @@ public final class SimRobot {
         this.coverage = new Coverage(world, start.x(), start.y(), body.radius());
         this.unseenMm = placement.reachMm + model.proximity().profile().rangeMm() + 1;
         this.glides = new Glides(model, body, gripper, capContacts, coverage);
-        this.scans = new Scans(sense, proximity, light, coverage, !world.arena().lights().isEmpty(), type.sensorCount());
+        this.scans = new Scans(sense, proximity, light, coverage, !world.arena().lights().isEmpty(),
+                type.sensorCount());
         this.end = new LinkEnd(body, sense, gripper, light, scans);
         this.link = new RobotLink(model.link().timing(), end, type.sensorCount());
         this.controls = new ControllerLink(this, link);

@@ -21,7 +21,8 @@ import org.kheperasim.link.tool.CliNumbers;
  * @param settings settings other than the defaults ({@code key -> value}, as {@code --set} takes them)
  * @param trace where to write the run's trace, or null for none
  */
-public record Job(long index, String id, String controller, String arena, long seed, double seconds, Parameters parameters,
+public record Job(long index, String id, String controller, String arena, long seed, double seconds,
+        Parameters parameters,
         Map<String, String> settings, Path trace) {
     /** The longest simulated time of a job, s: the command line's own limit ({@code run --seconds}). */
     public static final double MAX_SECONDS = CliNumbers.MAX_SECONDS;
@@ -34,7 +35,8 @@ public record Job(long index, String id, String controller, String arena, long s
         Objects.requireNonNull(parameters, "parameters");
         settings = Map.copyOf(settings);
         if (!(seconds > 0) || !(seconds <= MAX_SECONDS)) {
-            throw new IllegalArgumentException("seconds " + seconds + ": give a simulated time greater than 0 and at most "
+            throw new IllegalArgumentException("seconds " + seconds
+                    + ": give a simulated time greater than 0 and at most "
                     + (long) MAX_SECONDS + " (about 3 years)");
         }
     }

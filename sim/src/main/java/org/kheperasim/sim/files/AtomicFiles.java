@@ -164,7 +164,8 @@ public final class AtomicFiles {
         } catch (NoSuchFileException e) {
             return;
         } catch (IOException e) {
-            LOG.log(System.Logger.Level.DEBUG, "cannot read the permissions of " + from + "; the saved file gets the defaults", e);
+            LOG.log(System.Logger.Level.DEBUG,
+                    "cannot read the permissions of " + from + "; the saved file gets the defaults", e);
             return;
         }
         try {

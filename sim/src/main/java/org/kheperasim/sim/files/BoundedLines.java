@@ -51,7 +51,8 @@ public final class BoundedLines {
                 return line.toString();
             }
             if (line.length() >= maxChars) {
-                throw errors.error(lineNumber, "the line is longer than " + maxChars + " characters; is it the right file?");
+                throw errors.error(lineNumber,
+                        "the line is longer than " + maxChars + " characters; is it the right file?");
             }
             line.append((char) c);
         }

@@ -35,7 +35,8 @@ final class ChildResults {
      * @param madeIn     how the run was made
      * @return the record
      */
-    static RunRecord fromClaim(GradePlan.Job job, String controller, Map<String, Object> claim, Score score, double seconds,
+    static RunRecord fromClaim(GradePlan.Job job, String controller, Map<String, Object> claim,
+            Score score, double seconds,
             String err, String madeIn) {
         RunStatus status = RunStatus.OK;
         String failure = null;
@@ -74,7 +75,8 @@ final class ChildResults {
         if (failure != null) {
             // The student's line is kept whole, however long the message before it.
             String where = at == null ? "" : " at " + at;
-            detail.insert(0, shorten(failure, MAX_DETAIL - where.length()) + where + (detail.length() > 0 ? " | " : ""));
+            detail.insert(0, shorten(failure, MAX_DETAIL - where.length()) + where
+                    + (detail.length() > 0 ? " | " : ""));
         }
         return new RunRecord(job.student(), job.arena(), job.seed(), status, score == null ? 0 : score.points(),
                 score == null ? 0 : score.max(), score == null ? 0 : score.percent(), seconds, controller,
@@ -93,7 +95,8 @@ final class ChildResults {
      * @param record     the run as the report holds it
      * @return the page's outcome
      */
-    static RunOutcome page(GradePlan.Job job, String controller, Map<String, Object> claim, RunResult replay, RunRecord record) {
+    static RunOutcome page(GradePlan.Job job, String controller, Map<String, Object> claim, RunResult replay,
+            RunRecord record) {
         String title = job.student() + ": " + controller.substring(controller.lastIndexOf('.') + 1) + " in "
                 + ReportFiles.arenaLabel(job.arena()) + " · seed " + job.seed();
         List<RunOutcome.Failure> failures = new ArrayList<>();
@@ -106,7 +109,8 @@ final class ChildResults {
                     }
                     String text = robot.get("failure") == null ? "" : String.valueOf(robot.get("failure"));
                     RunStatus s = ofController(word);
-                    String message = s == RunStatus.THREW ? text + (robot.get("failureAt") instanceof String at ? " at " + at : "")
+                    String message = s == RunStatus.THREW
+                            ? text + (robot.get("failureAt") instanceof String at ? " at " + at : "")
                             : s == RunStatus.EXCEEDED_MEMORY ? outOfMemory(controller) : FailureText.machineFree(text);
                     double seconds = robot.get("failureSeconds") instanceof Number n ? n.doubleValue() : Double.NaN;
                     failures.add(new RunOutcome.Failure(i, seconds, word, message));
@@ -114,7 +118,8 @@ final class ChildResults {
             }
         }
         if (failures.isEmpty() && record.status() != RunStatus.OK) {
-            title += " · " + record.status().label() + (record.status() == RunStatus.TAMPERED || record.status() == RunStatus.DIVERGED
+            title += " · " + record.status().label()
+                    + (record.status() == RunStatus.TAMPERED || record.status() == RunStatus.DIVERGED
                     ? " (the replay's points)" : "");
         }
         return new RunOutcome(title, failures, RunFacts.of(replay));
@@ -137,7 +142,8 @@ final class ChildResults {
      * @param madeIn     how the run was made
      * @return the record: never ok
      */
-    static RunRecord noResult(GradePlan.Job job, String controller, boolean killed, double wallLimit, int exit, String err,
+    static RunRecord noResult(GradePlan.Job job, String controller, boolean killed, double wallLimit,
+            int exit, String err,
             String madeIn) {
         RunStatus status;
         String detail;
@@ -158,7 +164,8 @@ final class ChildResults {
                     + " something other than the simulator ended it; what it printed is not a result";
         } else {
             status = RunStatus.ERROR;
-            detail = (exit > 128 ? "killed by signal " + (exit - 128) + " (exit status " + exit + ")" : "exit status " + exit)
+            detail = (exit > 128 ? "killed by signal " + (exit - 128) + " (exit status " + exit + ")"
+                    : "exit status " + exit)
                     + ": " + lastLine(err, "");
         }
         return new RunRecord(job.student(), job.arena(), job.seed(), status, 0, 0, 0, 0, controller,
@@ -174,9 +181,12 @@ final class ChildResults {
      * @param madeIn     how the run was made
      * @return a run found tampering, with what the replay says its robot did (never what it says itself)
      */
-    static RunRecord tampered(GradePlan.Job job, String controller, String why, Score score, double seconds, String madeIn) {
-        return new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.TAMPERED, score == null ? 0 : score.points(),
-                score == null ? 0 : score.max(), score == null ? 0 : score.percent(), seconds, controller, shorten(why), "",
+    static RunRecord tampered(GradePlan.Job job, String controller, String why, Score score, double seconds,
+            String madeIn) {
+        return new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.TAMPERED,
+                score == null ? 0 : score.points(),
+                score == null ? 0 : score.max(), score == null ? 0 : score.percent(), seconds, controller,
+                shorten(why), "",
                 madeIn);
     }
 

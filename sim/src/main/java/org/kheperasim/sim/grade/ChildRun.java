@@ -19,7 +19,8 @@ import org.kheperasim.sim.web.RunPageRecorder;
 
 /**
  * Makes one graded run in a child JVM: {@code java -Xmx… -cp SIMULATOR GradedRun … --command-log SOCKET}
- * (the simulator's classpath at its real location, {@link OwnClasspath}: the child runs in another folder), in the operating-system sandbox ({@link Box}) unless the grading said
+ * (the simulator's classpath at its real location, {@link OwnClasspath}: the child runs in another folder), in the
+ * operating-system sandbox ({@link Box}) unless the grading said
  * {@code --no-sandbox}, with the heap limit, the simulated-time limit and a wall-clock limit after
  * which the child is killed (and at which it also ends itself). The child hands its command log
  * over the socket ({@link LogChannel}); standard input is a pipe the grader never writes to, whose end
@@ -127,7 +128,8 @@ final class ChildRun {
         }
         double wall = (System.nanoTime() - start) / 1e9;
         String madeIn = lim.sandbox() ? RunRecord.SANDBOX : RunRecord.NO_SANDBOX;
-        Verdict.Child child = new Verdict.Child(killed, exit, err, Files.isRegularFile(logFile) ? logFile : null, cut, madeIn);
+        Verdict.Child child =
+                new Verdict.Child(killed, exit, err, Files.isRegularFile(logFile) ? logFile : null, cut, madeIn);
         Verdict.Judged judged = Verdict.judge(job, sub, arena, lim, child, trace);
         return new Outcome(judged.record(), wall, Files.isRegularFile(trace) ? trace : null, child.log(), judged.page(),
                 judged.tape(), judged.diverged());
@@ -155,8 +157,10 @@ final class ChildRun {
      */
     static List<String> runArgs(GradePlan.Job job, Submission sub, Limits lim, Path channel) {
         Path arenaFile = arenaFile(job.arena());
-        return new GradedRun.Args(arenaFile != null ? arenaFile.toString() : job.arena(), sub.classpath(), sub.controller(),
-                job.seed(), lim.hangSeconds(), lim.sampleMillis(), channel, lim.wallSeconds(), lim.seconds(), lim.trusted())
+        return new GradedRun.Args(arenaFile != null ? arenaFile.toString() : job.arena(), sub.classpath(),
+                sub.controller(),
+                job.seed(), lim.hangSeconds(), lim.sampleMillis(), channel, lim.wallSeconds(),
+                lim.seconds(), lim.trusted())
                 .toList();
     }
 

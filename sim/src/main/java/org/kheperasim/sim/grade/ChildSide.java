@@ -77,7 +77,8 @@ public final class ChildSide {
                 } catch (InterruptedException e) {
                     return;
                 }
-                err.println(String.format(Locale.ROOT, "khepera-sim: error: the run passed its wall-clock limit of %.0f s"
+                err.println(String.format(Locale.ROOT,
+                        "khepera-sim: error: the run passed its wall-clock limit of %.0f s"
                         + " and ends itself (exit status %d)", wallSeconds, WALL_LIMIT_EXIT));
                 err.flush();
                 Runtime.getRuntime().halt(WALL_LIMIT_EXIT);
@@ -116,7 +117,8 @@ public final class ChildSide {
         try {
             log.finish(claimJson);
         } catch (IOException e) {
-            System.err.println("khepera-sim: error: could not hand the run's command log to the grader: " + e.getMessage());
+            System.err.println("khepera-sim: error: could not hand the run's command log to the grader: "
+                    + e.getMessage());
             status = exit == 0 ? 1 : exit;
         }
         System.out.flush();

@@ -62,6 +62,7 @@ final class Claim {
     }
 
     private static String num(double value) {
-        return Double.isFinite(value) ? new BigDecimal(value).round(SIGNIFICANT).stripTrailingZeros().toPlainString() : "null";
+        return Double.isFinite(value)
+                ? new BigDecimal(value).round(SIGNIFICANT).stripTrailingZeros().toPlainString() : "null";
     }
 }

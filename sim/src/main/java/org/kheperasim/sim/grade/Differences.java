@@ -26,7 +26,8 @@ final class Differences {
         RunResult result = replay.result();
         String sha = result.traceSha256();
         if (!sha.equals(claim.get("traceSha256"))) {
-            return "its trace's SHA-256 " + shortSha(claim.get("traceSha256")) + ", the replay's " + shortSha(sha) + "; "
+            return "its trace's SHA-256 " + shortSha(claim.get("traceSha256")) + ", the replay's "
+                    + shortSha(sha) + "; "
                     + where(claim, result);
         }
         if (!same(claim.get("simulatedSeconds"), result.simulatedSeconds())) {
@@ -45,7 +46,8 @@ final class Differences {
     /** @return where the run's end and the replay's first differ: simulated time, then each robot's end in order */
     static String where(Map<String, Object> claim, RunResult result) {
         if (!same(claim.get("simulatedSeconds"), result.simulatedSeconds())) {
-            return "it ends at " + claim.get("simulatedSeconds") + " s, the replay at " + result.simulatedSeconds() + " s";
+            return "it ends at " + claim.get("simulatedSeconds") + " s, the replay at "
+                    + result.simulatedSeconds() + " s";
         }
         if (!(claim.get("robots") instanceof List<?> robots) || robots.size() != result.robots().size()) {
             return "its robots are not the replay's " + result.robots().size();

@@ -12,7 +12,8 @@ import java.util.regex.Pattern;
  */
 public final class FailureText {
     /** A frame of a printed stack trace: {@code at [loader/][module/]class.method(File.java:9)}. */
-    private static final Pattern FRAME = Pattern.compile("^\\s*at (?:\\S*/)?([\\w$.]+)\\.([\\w$<>]+)\\(([^():]+:\\d+)\\)\\s*$");
+    private static final Pattern FRAME =
+            Pattern.compile("^\\s*at (?:\\S*/)?([\\w$.]+)\\.([\\w$<>]+)\\(([^():]+:\\d+)\\)\\s*$");
     private static final String[] NOT_STUDENT = {"java.", "javax.", "jdk.", "sun.", "com.sun.", "org.kheperasim.sim.",
         "org.kheperasim.api."};
 
@@ -57,7 +58,8 @@ public final class FailureText {
     public static String machineFree(String message) {
         String s = message.replaceAll("\\s*\\([^()]*\\bMB\\b[^()]*\\)", "")
                 .replaceAll("for \\d+(?:\\.\\d+)? s of real time", "for longer than the hang timeout");
-        for (String end : new String[] {"; the controller was stopped", ". The controller was stopped", "; the robot was stopped"}) {
+        for (String end : new String[] {"; the controller was stopped", ". The controller was stopped",
+                "; the robot was stopped"}) {
             int cut = s.indexOf(end);
             if (cut > 0) {
                 s = s.substring(0, cut) + (end.startsWith(".") ? "." : "");

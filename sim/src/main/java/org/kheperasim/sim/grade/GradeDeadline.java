@@ -32,7 +32,8 @@ public final class GradeDeadline {
     public static double parse(String text) {
         Matcher m = DURATION.matcher(text == null ? "" : text.strip().toLowerCase(Locale.ROOT));
         if (!m.matches() || Double.parseDouble(m.group(1)) <= 0) {
-            throw new IllegalArgumentException("--deadline '" + text + "': give a duration above 0 such as 540, 540s, 9m or"
+            throw new IllegalArgumentException("--deadline '" + text
+                    + "': give a duration above 0 such as 540, 540s, 9m or"
                     + " 1h (real time for the whole grading; keep it a minute below the platform's timeout)");
         }
         double v = Double.parseDouble(m.group(1));
@@ -62,7 +63,8 @@ public final class GradeDeadline {
      * @param running  the processes going
      * @return the watchdog's thread (a daemon)
      */
-    static Thread watch(long endNanos, AtomicBoolean stopping, AtomicBoolean passed, AtomicBoolean done, Set<Process> running) {
+    static Thread watch(long endNanos, AtomicBoolean stopping, AtomicBoolean passed, AtomicBoolean done,
+            Set<Process> running) {
         Thread t = new Thread(() -> {
             try {
                 long left;
@@ -94,8 +96,10 @@ public final class GradeDeadline {
      * @return its record: no points, out of the arena's, status {@code error} with a detail that says so
      */
     static RunRecord notMade(GradePlan.Job job, Arena arena, double seconds) {
-        return new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.ERROR, 0, arena.assignment().maxPoints(), 0, 0,
-                "", NOT_MADE + " (--deadline " + shown(seconds) + ") passed first; it counts 0 here, the runs made before"
+        return new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.ERROR, 0,
+                arena.assignment().maxPoints(), 0, 0,
+                "", NOT_MADE + " (--deadline " + shown(seconds)
+                        + ") passed first; it counts 0 here, the runs made before"
                 + " it keep their points; grade again on the same --out to make it", "", "");
     }
 

@@ -43,7 +43,8 @@ public record GradePlan(List<String> students, List<String> arenas, int seeds) {
         /** Checks 1 ≤ k ≤ n. */
         public Shard {
             if (n < 1 || k < 1 || k > n) {
-                throw new IllegalArgumentException("--shard " + k + "/" + n + ": give K/N with 1 <= K <= N, e.g. --shard 1/4");
+                throw new IllegalArgumentException("--shard " + k + "/" + n
+                        + ": give K/N with 1 <= K <= N, e.g. --shard 1/4");
             }
         }
 
@@ -54,8 +55,10 @@ public record GradePlan(List<String> students, List<String> arenas, int seeds) {
         public static Shard parse(String text) {
             Matcher m = SHARD.matcher(text.strip());
             if (!m.matches()) {
-                throw new IllegalArgumentException("--shard '" + text + "': give K/N, this shard's number from 1 and the"
-                        + " number of shards, e.g. --shard 2/8 (Slurm: --shard $((SLURM_ARRAY_TASK_ID+1))/$SLURM_ARRAY_TASK_COUNT)");
+                throw new IllegalArgumentException("--shard '" + text
+                        + "': give K/N, this shard's number from 1 and the"
+                        + " number of shards, e.g. --shard 2/8 (Slurm: --shard"
+                        + " $((SLURM_ARRAY_TASK_ID+1))/$SLURM_ARRAY_TASK_COUNT)");
             }
             return new Shard(Integer.parseInt(m.group(1)), Integer.parseInt(m.group(2)));
         }

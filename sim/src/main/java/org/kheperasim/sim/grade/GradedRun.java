@@ -57,8 +57,10 @@ public final class GradedRun {
 
         /** @return the arguments as a list, as {@link #parse} reads them back */
         List<String> toList() {
-            List<String> a = new ArrayList<>(List.of("--arena", arena, "--classpath", classpath.toString(), "--controller",
-                    controller, "--seed", Long.toString(seed), "--hang-timeout", ChildRun.format(hangSeconds), "--sample-ms",
+            List<String> a = new ArrayList<>(
+                    List.of("--arena", arena, "--classpath", classpath.toString(), "--controller",
+                    controller, "--seed", Long.toString(seed), "--hang-timeout",
+                    ChildRun.format(hangSeconds), "--sample-ms",
                     Long.toString(sampleMillis), "--command-log", channel.toString(), "--wall-limit",
                     ChildRun.format(wallSeconds)));
             if (seconds != null) {
@@ -114,7 +116,8 @@ public final class GradedRun {
                 }
             }
             if (arena == null || classpath == null || controller == null || channel == null) {
-                throw new IllegalArgumentException("graded run: --arena, --classpath, --controller and --command-log are"
+                throw new IllegalArgumentException(
+                        "graded run: --arena, --classpath, --controller and --command-log are"
                         + " needed (the grader starts graded runs; see docs/grading.md)");
             }
             return new Args(arena, Path.of(classpath), controller, seed, hang, sample, Path.of(channel), wall, seconds,

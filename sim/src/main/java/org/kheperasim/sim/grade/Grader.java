@@ -70,24 +70,30 @@ public final class Grader {
      *                     command-line option sets it
      * @param workerRuns   the most runs one worker JVM makes ({@link WorkerSlots}); 1 makes every run in a JVM of its
      *                     own, as before workers ({@link ChildRun}); {@link Integer#MAX_VALUE}: all of a submission's
-     * @param deadline     the grading's own deadline, real seconds from its start ({@link GradeDeadline}), or null for none
+     * @param deadline     the grading's own deadline, real seconds from its start ({@link GradeDeadline}), or null for
+     *     none
      */
     public record Options(Path submissions, List<String> arenas, int seeds, int jobs, Path out, GradePlan.Shard shard,
-            int heapMb, double wallSeconds, double hangSeconds, Double seconds, boolean keepTraces, PrintStream progress,
+            int heapMb, double wallSeconds, double hangSeconds, Double seconds, boolean keepTraces,
+            PrintStream progress,
             boolean terminal, boolean sandbox, boolean trustedForTests, int workerRuns, Double deadline) {
         /** Without a deadline of the grading's own. */
         public Options(Path submissions, List<String> arenas, int seeds, int jobs, Path out, GradePlan.Shard shard,
-                int heapMb, double wallSeconds, double hangSeconds, Double seconds, boolean keepTraces, PrintStream progress,
+                int heapMb, double wallSeconds, double hangSeconds, Double seconds, boolean keepTraces,
+                PrintStream progress,
                 boolean terminal, boolean sandbox, boolean trustedForTests, int workerRuns) {
-            this(submissions, arenas, seeds, jobs, out, shard, heapMb, wallSeconds, hangSeconds, seconds, keepTraces, progress,
+            this(submissions, arenas, seeds, jobs, out, shard, heapMb, wallSeconds, hangSeconds, seconds,
+                    keepTraces, progress,
                     terminal, sandbox, trustedForTests, workerRuns, null);
         }
 
         /** Runs on warm workers, each making all of its submission's runs. */
         public Options(Path submissions, List<String> arenas, int seeds, int jobs, Path out, GradePlan.Shard shard,
-                int heapMb, double wallSeconds, double hangSeconds, Double seconds, boolean keepTraces, PrintStream progress,
+                int heapMb, double wallSeconds, double hangSeconds, Double seconds, boolean keepTraces,
+                PrintStream progress,
                 boolean terminal, boolean sandbox, boolean trustedForTests) {
-            this(submissions, arenas, seeds, jobs, out, shard, heapMb, wallSeconds, hangSeconds, seconds, keepTraces, progress,
+            this(submissions, arenas, seeds, jobs, out, shard, heapMb, wallSeconds, hangSeconds, seconds,
+                    keepTraces, progress,
                     terminal, sandbox, trustedForTests, Integer.MAX_VALUE);
         }
     }
@@ -98,7 +104,8 @@ public final class Grader {
     /**
      * @param o the options
      * @return the report written to {@code o.out()}
-     * @throws IllegalArgumentException for a missing folder, a bad arena, or no sandbox where one is asked for, naming the fix
+     * @throws IllegalArgumentException for a missing folder, a bad arena, or no sandbox where one is asked for, naming
+     *     the fix
      */
     public static ReportFiles.Report grade(Options o) {
         long endNanos = o.deadline() == null ? Long.MAX_VALUE : System.nanoTime() + (long) (o.deadline() * 1e9);
@@ -106,11 +113,13 @@ public final class Grader {
             throw new IllegalArgumentException("--jobs " + o.jobs() + ": give at least 1");
         }
         if (o.workerRuns() < 1) {
-            throw new IllegalArgumentException("--worker-runs " + o.workerRuns() + ": give at least 1 (1: every run in a JVM"
+            throw new IllegalArgumentException("--worker-runs " + o.workerRuns()
+                    + ": give at least 1 (1: every run in a JVM"
                     + " of its own)");
         }
         List<Path> folders = Submissions.folders(o.submissions());
-        GradePlan plan = new GradePlan(folders.stream().map(p -> p.getFileName().toString()).toList(), o.arenas(), o.seeds());
+        GradePlan plan = new GradePlan(folders.stream().map(p -> p.getFileName().toString()).toList(),
+                o.arenas(), o.seeds());
         Map<String, Arena> arenas = new HashMap<>();
         for (String a : o.arenas()) {
             arenas.put(a, ArenaFormat.resolve(a));
@@ -141,14 +150,16 @@ public final class Grader {
                 Journal.Entry e = journal.done().get(jobs.get(i).index());
                 if (e == null) { // only past the grading's deadline
                     if (o.deadline() == null) {
-                        throw new IllegalStateException("run " + ReportFiles.runId(jobs.get(i)) + " was not made (the grading"
+                        throw new IllegalStateException("run " + ReportFiles.runId(jobs.get(i))
+                                + " was not made (the grading"
                                 + " was stopped); grade again on the same --out to make it");
                     }
                     records.add(GradeDeadline.notMade(jobs.get(i), arenas.get(jobs.get(i).arena()), o.deadline()));
                     continue;
                 }
                 records.add(e.record());
-                timings.append(ReportFiles.runId(jobs.get(i))).append(',').append(e.record().status().word()).append(',')
+                timings.append(ReportFiles.runId(jobs.get(i))).append(',')
+                        .append(e.record().status().word()).append(',')
                         .append(String.format(Locale.ROOT, "%.3f,%.3f", e.wallSeconds(), e.pageSeconds())).append('\n');
             }
             ReportFiles.Report report = new ReportFiles.Report(plan, o.shard(), records);
@@ -167,10 +178,12 @@ public final class Grader {
                 && (e.record().page().isEmpty() || Files.isRegularFile(out.resolve(e.record().page())));
     }
 
-    private static void makeRuns(Options o, List<GradePlan.Job> todo, int alreadyDone, int total, Map<String, Submission> subs,
+    private static void makeRuns(Options o, List<GradePlan.Job> todo, int alreadyDone, int total,
+            Map<String, Submission> subs,
             Map<String, Arena> arenas, Path work, Journal journal, long endNanos) {
         int processors = StrictMath.max(1, Runtime.getRuntime().availableProcessors() / o.jobs());
-        ChildRun.Limits limits = new ChildRun.Limits(o.heapMb(), o.wallSeconds(), o.hangSeconds(), o.seconds(), SAMPLE_MILLIS,
+        ChildRun.Limits limits =
+                new ChildRun.Limits(o.heapMb(), o.wallSeconds(), o.hangSeconds(), o.seconds(), SAMPLE_MILLIS,
                 processors, o.sandbox(), o.trustedForTests());
         Path sockets;
         try {
@@ -203,7 +216,8 @@ public final class Grader {
             if (stopping.get()) {
                 return;
             }
-            journal.add(job, new Journal.Entry(made.outcome().record(), made.outcome().wallSeconds(), made.pageSeconds()));
+            journal.add(job, new Journal.Entry(made.outcome().record(), made.outcome().wallSeconds(),
+                    made.pageSeconds()));
             progress.finished(job, made.outcome().record());
         };
         try {
@@ -216,8 +230,10 @@ public final class Grader {
                         finisher.finish(job, null);
                     }
                 }
-                WorkerSlots.Summary made = WorkerSlots.makeAll(todo.stream().filter(j -> subs.get(j.student()).runnable()).toList(),
-                        subs, arenas, limits, o.jobs(), o.workerRuns(), work.resolve("runs"), sockets, running, finisher, stopping);
+                WorkerSlots.Summary made =
+                        WorkerSlots.makeAll(todo.stream().filter(j -> subs.get(j.student()).runnable()).toList(),
+                        subs, arenas, limits, o.jobs(), o.workerRuns(), work.resolve("runs"), sockets, running,
+                        finisher, stopping);
                 o.progress().println(made.line());
             }
         } catch (IOException e) {
@@ -225,7 +241,8 @@ public final class Grader {
         } finally {
             allBack.set(true);
             if (deadlinePassed.get()) {
-                o.progress().println("the grading's deadline (--deadline " + GradeDeadline.shown(o.deadline()) + ") passed: the"
+                o.progress().println("the grading's deadline (--deadline " + GradeDeadline.shown(o.deadline())
+                        + ") passed: the"
                         + " runs going were stopped; the report holds the runs made before it");
             }
             running.forEach(ChildRun::kill);
@@ -259,7 +276,8 @@ public final class Grader {
                     ChildRun.Outcome made = null;
                     if (sub.runnable()) {
                         // A result that differed from its replay is made again once, in a JVM of its own too.
-                        Rerun.Making making = () -> ChildRun.run(job, sub, arenas.get(job.arena()), limits, work.resolve("runs"),
+                        Rerun.Making making =
+                                () -> ChildRun.run(job, sub, arenas.get(job.arena()), limits, work.resolve("runs"),
                                 sockets, slot, running);
                         made = Rerun.guard(making.make(), making);
                     }
@@ -325,7 +343,8 @@ public final class Grader {
             }
         } finally {
             if (!o.keepTraces()) {
-                for (Path p : new Path[] {outcome.trace(), outcome.log(), outcome.log() == null ? null : Rerun.firstLog(outcome.log())}) {
+                for (Path p : new Path[] {outcome.trace(), outcome.log(),
+                        outcome.log() == null ? null : Rerun.firstLog(outcome.log())}) {
                     if (p != null) {
                         Files.deleteIfExists(p);
                     }

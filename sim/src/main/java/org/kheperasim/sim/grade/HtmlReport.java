@@ -16,10 +16,11 @@ final class HtmlReport {
         StringBuilder sb = new StringBuilder("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
                 + "<title>Grade report</title>\n<style>\n"
                 + "body{font-family:sans-serif;margin:1.5em;color:#222}\n"
-                + "table{border-collapse:collapse;margin-bottom:1em}td,th{border:1px solid #ccc;padding:3px 8px;text-align:left}\n"
-                + ".ok{color:#176f2c}.bad{color:#b01c1c;font-weight:bold}\n"
-                + ".runs{display:flex;flex-wrap:wrap;gap:10px}.run{border:1px solid #ccc;padding:6px;width:250px;font-size:90%}\n"
-                + ".run img{width:240px;height:auto;display:block}.detail{color:#555;word-wrap:break-word}\n"
+                + "table{border-collapse:collapse;margin-bottom:1em}td,th{border:1px solid #ccc;padding:3px"
+                + " 8px;text-align:left}\n.ok{color:#176f2c}.bad{color:#b01c1c;font-weight:bold}\n"
+                + ".runs{display:flex;flex-wrap:wrap;gap:10px}.run{border:1px solid"
+                + " #ccc;padding:6px;width:250px;font-size:90%}\n.run"
+                + " img{width:240px;height:auto;display:block}.detail{color:#555;word-wrap:break-word}\n"
                 + "</style></head><body>\n<h1>Grade report</h1>\n");
         sb.append("<p>").append(report.plan().students().size()).append(" submissions &times; ")
                 .append(report.plan().arenas().size()).append(" arenas &times; ").append(report.plan().seeds())
@@ -32,16 +33,20 @@ final class HtmlReport {
             sb.append("<h2>Arena ").append(esc(e.getKey())).append("</h2>\n<table><tr><th>rank</th><th>student</th>"
                     + "<th>mean score %</th><th>mean points</th><th>score % by seed</th></tr>\n");
             for (Ranking.Entry x : e.getValue()) {
-                sb.append("<tr><td>").append(x.ranked() ? Integer.toString(x.rank()) : "&ndash;").append("</td><td>").append(esc(x.student())).append("</td><td>")
-                        .append(ReportFiles.num(x.meanPercent())).append("</td><td>").append(ReportFiles.num(x.meanPoints()))
+                sb.append("<tr><td>").append(x.ranked() ? Integer.toString(x.rank()) : "&ndash;").append("</td><td>")
+                        .append(esc(x.student())).append("</td><td>")
+                        .append(ReportFiles.num(x.meanPercent())).append("</td><td>")
+                        .append(ReportFiles.num(x.meanPoints()))
                         .append("</td><td>");
                 for (int i = 0; i < x.runs().size(); i++) {
                     RunRecord r = x.runs().get(i);
                     String tag = r.page().isEmpty() ? "span" : "a";
                     sb.append(i > 0 ? " | " : "").append('<').append(tag)
                             .append(r.page().isEmpty() ? "" : " href=\"" + esc(r.page()) + "\"").append(" class=\"")
-                            .append(r.status() == RunStatus.OK ? "ok" : "bad").append("\" title=\"seed ").append(r.seed())
-                            .append(r.detail().isEmpty() ? "" : ": " + esc(r.detail())).append("\">").append(esc(TextTable.seed(r)))
+                            .append(r.status() == RunStatus.OK ? "ok" : "bad").append("\" title=\"seed ")
+                            .append(r.seed())
+                            .append(r.detail().isEmpty() ? "" : ": " + esc(r.detail())).append("\">")
+                            .append(esc(TextTable.seed(r)))
                             .append("</").append(tag).append('>');
                 }
                 sb.append("</td></tr>\n");
@@ -51,9 +56,11 @@ final class HtmlReport {
                 for (RunRecord r : x.runs()) {
                     sb.append("<div class=\"run\">");
                     if (!r.picture().isEmpty()) {
-                        String img = "<img src=\"" + esc(r.picture()) + "\" alt=\"trajectory of " + esc(r.student()) + " seed "
+                        String img = "<img src=\"" + esc(r.picture()) + "\" alt=\"trajectory of "
+                                + esc(r.student()) + " seed "
                                 + r.seed() + "\">";
-                        sb.append(r.page().isEmpty() ? img : "<a href=\"" + esc(r.page()) + "\" title=\"watch the run\">" + img
+                        sb.append(r.page().isEmpty() ? img
+                                : "<a href=\"" + esc(r.page()) + "\" title=\"watch the run\">" + img
                                 + "</a>");
                     }
                     sb.append("<b>").append(esc(r.student())).append("</b> seed ").append(r.seed()).append("<br>")
@@ -71,10 +78,14 @@ final class HtmlReport {
     }
 
     private static String status(RunRecord r) {
-        return "<span class=\"" + (r.status() == RunStatus.OK ? "ok" : "bad") + "\">" + esc(r.status().label()) + "</span>";
+        return "<span class=\"" + (r.status() == RunStatus.OK ? "ok" : "bad") + "\">"
+                + esc(r.status().label()) + "</span>";
     }
 
-    /** @return {@code s} for HTML text or an attribute, its control characters escaped as {@link Shown#line} escapes them */
+    /**
+     * @return {@code s} for HTML text or an attribute, its control characters escaped as {@link Shown#line} escapes
+     *     them
+     */
     static String esc(String s) {
         return Shown.line(s).replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;");
     }

@@ -58,7 +58,8 @@ final class Journal implements AutoCloseable {
      */
     static Journal open(Path folder, String identity) {
         Path file = folder.resolve(FILE);
-        String first = "{\"journal\": " + JsonValues.quote(FORMAT) + ", \"grading\": " + JsonValues.quote(identity) + "}\n";
+        String first = "{\"journal\": " + JsonValues.quote(FORMAT) + ", \"grading\": "
+                + JsonValues.quote(identity) + "}\n";
         Map<Integer, Entry> done = new TreeMap<>();
         try {
             Files.createDirectories(folder);
@@ -68,8 +69,10 @@ final class Journal implements AutoCloseable {
                 String text = new String(bytes, StandardCharsets.UTF_8);
                 if (!text.isEmpty() && !text.startsWith(first)) {
                     if (text.indexOf('\n') >= 0) {
-                        throw new IllegalArgumentException("--out " + folder + " holds the journal of another grading (other"
-                                + " submissions, arenas, seeds, shard or options); give another --out, or delete " + file
+                        throw new IllegalArgumentException("--out " + folder
+                                + " holds the journal of another grading (other"
+                                + " submissions, arenas, seeds, shard or options); give another --out, or"
+                                + " delete " + file
                                 + " to grade again from the start");
                     }
                     text = ""; // a torn first line: nothing was finished
@@ -89,10 +92,12 @@ final class Journal implements AutoCloseable {
                         @SuppressWarnings("unchecked")
                         RunRecord r = ReportFiles.record((Map<String, Object>) m.get("run"));
                         double page = m.get("pageSeconds") instanceof Number n ? n.doubleValue() : 0;
-                        done.put(((Number) m.get("index")).intValue(), new Entry(r, ((Number) m.get("wallSeconds")).doubleValue(),
+                        done.put(((Number) m.get("index")).intValue(),
+                                new Entry(r, ((Number) m.get("wallSeconds")).doubleValue(),
                                 page));
                     } catch (RuntimeException e) {
-                        throw new IllegalArgumentException(file + ":" + lineNumber + ": not a journal line (" + e.getMessage()
+                        throw new IllegalArgumentException(file + ":" + lineNumber + ": not a journal line ("
+                                + e.getMessage()
                                 + "); delete " + file + " to grade again from the start");
                     }
                     at = nl + 1;
@@ -124,7 +129,8 @@ final class Journal implements AutoCloseable {
      * @param e   what came of it
      */
     synchronized void add(GradePlan.Job job, Entry e) {
-        String line = "{\"index\": " + job.index() + ", \"wallSeconds\": " + String.format(Locale.ROOT, "%.3f", e.wallSeconds())
+        String line = "{\"index\": " + job.index() + ", \"wallSeconds\": "
+                + String.format(Locale.ROOT, "%.3f", e.wallSeconds())
                 + ", \"pageSeconds\": " + String.format(Locale.ROOT, "%.3f", e.pageSeconds())
                 + ", \"run\": " + ReportFiles.json(e.record()) + "}\n";
         try {
@@ -146,7 +152,8 @@ final class Journal implements AutoCloseable {
      * @return the grading's identity, as the journal's first line holds it
      */
     static String identity(GradePlan plan, GradePlan.Shard shard, String options) {
-        return "students=" + String.join(",", plan.students()) + "; arenas=" + String.join(",", plan.arenas()) + "; seeds="
+        return "students=" + String.join(",", plan.students()) + "; arenas="
+                + String.join(",", plan.arenas()) + "; seeds="
                 + plan.seeds() + "; shard=" + shard + "; " + options;
     }
 

@@ -51,8 +51,10 @@ final class Progress {
                 out.println();
             }
         } else {
-            out.println(String.format(Locale.ROOT, "[%d/%d] %s %s seed %d: %s %s%%; %s elapsed, about %s left", done, total,
-                    Shown.line(job.student()), Shown.line(ReportFiles.arenaLabel(job.arena())), job.seed(), r.status().label(),
+            out.println(String.format(Locale.ROOT,
+                    "[%d/%d] %s %s seed %d: %s %s%%; %s elapsed, about %s left", done, total,
+                    Shown.line(job.student()), Shown.line(ReportFiles.arenaLabel(job.arena())), job.seed(),
+                    r.status().label(),
                     ReportFiles.num(r.percent()), clock(elapsed), clock(left)));
         }
         out.flush();

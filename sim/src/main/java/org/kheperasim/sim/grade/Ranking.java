@@ -16,10 +16,11 @@ import java.util.Map;
  */
 final class Ranking {
     /** The rule, as the report states it. */
-    static final String RULE = "Ranked by mean score over the seeds (a run that failed keeps the points it earned before it"
-            + " failed); at equal means, fewer runs not ok rank first, so a failure never ties a clean run; equal means with"
-            + " as many runs not ok share a rank. A student with a tampered run, or a run that differed from its replay twice,"
-            + " is not ranked (-).";
+    static final String RULE =
+            "Ranked by mean score over the seeds (a run that failed keeps the points it earned before it"
+            + " failed); at equal means, fewer runs not ok rank first, so a failure never ties a clean run;"
+            + " equal means with as many runs not ok share a rank. A student with a tampered run, or a run that"
+            + " differed from its replay twice, is not ranked (-).";
 
     /**
      * One student's line.
@@ -59,7 +60,8 @@ final class Ranking {
                 double pts = sorted.stream().mapToDouble(RunRecord::points).average().orElse(0);
                 entries.add(new Entry(0, student, ReportFiles.round2(pct), ReportFiles.round2(pts), sorted));
             });
-            entries.sort(Comparator.comparing(Ranking::tampered).thenComparing(Comparator.comparingDouble(Entry::meanPercent)
+            entries.sort(Comparator.comparing(Ranking::tampered)
+                    .thenComparing(Comparator.comparingDouble(Entry::meanPercent)
                     .reversed()).thenComparingLong(Ranking::notOk).thenComparing(Entry::student));
             List<Entry> ranked = new ArrayList<>();
             for (int i = 0; i < entries.size(); i++) {

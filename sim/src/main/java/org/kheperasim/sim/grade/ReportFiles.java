@@ -25,7 +25,8 @@ public final class ReportFiles {
     /** The first field of {@code results.json}. */
     public static final String FORMAT = "khepera-grade 1";
     /** The columns of {@code results.csv}. */
-    public static final String CSV_HEADER = "student,arena,seed,status,points,max,percent,simulated_s,controller,picture,detail,"
+    public static final String CSV_HEADER =
+            "student,arena,seed,status,points,max,percent,simulated_s,controller,picture,detail,"
             + "made_in,page,rerun";
 
     /**
@@ -84,9 +85,12 @@ public final class ReportFiles {
     static String csv(List<RunRecord> runs) {
         StringBuilder sb = new StringBuilder(CSV_HEADER).append('\n');
         for (RunRecord r : runs) {
-            sb.append(csvField(r.student())).append(',').append(csvField(r.arena())).append(',').append(r.seed()).append(',')
-                    .append(r.status().word()).append(',').append(num(r.points())).append(',').append(num(r.max())).append(',')
-                    .append(num(r.percent())).append(',').append(String.format(Locale.ROOT, "%.3f", r.simulatedSeconds()))
+            sb.append(csvField(r.student())).append(',').append(csvField(r.arena())).append(',')
+                    .append(r.seed()).append(',')
+                    .append(r.status().word()).append(',').append(num(r.points())).append(',')
+                    .append(num(r.max())).append(',')
+                    .append(num(r.percent())).append(',')
+                    .append(String.format(Locale.ROOT, "%.3f", r.simulatedSeconds()))
                     .append(',').append(csvField(r.controller())).append(',').append(csvField(r.picture())).append(',')
                     .append(csvField(r.detail())).append(',').append(r.madeIn()).append(',').append(csvField(r.page()))
                     .append(',').append(csvField(r.rerun())).append('\n');
@@ -113,7 +117,8 @@ public final class ReportFiles {
             for (int i = 0; i < ranked.size(); i++) {
                 Ranking.Entry r = ranked.get(i);
                 sb.append(i > 0 ? ", " : "").append("{\"rank\": ").append(r.rank()).append(", \"student\": ")
-                        .append(JsonValues.quote(r.student())).append(", \"meanPercent\": ").append(num(r.meanPercent()))
+                        .append(JsonValues.quote(r.student())).append(", \"meanPercent\": ")
+                        .append(num(r.meanPercent()))
                         .append(", \"meanPoints\": ").append(num(r.meanPoints())).append('}');
             }
             sb.append(']');
@@ -221,7 +226,10 @@ public final class ReportFiles {
         return ((Number) o).doubleValue();
     }
 
-    /** A text cell: one line, control characters escaped, never a formula ({@link Shown#csvCell}); numbers are written as numbers. */
+    /**
+     * A text cell: one line, control characters escaped, never a formula ({@link Shown#csvCell}); numbers are written
+     * as numbers.
+     */
     private static String csvField(String s) {
         return Shown.csvCell(s);
     }

@@ -28,7 +28,8 @@ public final class ReportMerge {
      */
     public static ReportFiles.Report merge(List<Path> shardFolders, Path out) {
         if (shardFolders.isEmpty()) {
-            throw new IllegalArgumentException("grade merge: give the shards' report folders, e.g. grade merge --out report shard-*");
+            throw new IllegalArgumentException(
+                    "grade merge: give the shards' report folders, e.g. grade merge --out report shard-*");
         }
         GradePlan plan = null;
         Map<Integer, Path> seen = new TreeMap<>();
@@ -38,23 +39,27 @@ public final class ReportMerge {
         for (Path folder : shardFolders) {
             Path file = folder.resolve("results.json");
             if (!Files.isRegularFile(file)) {
-                throw new IllegalArgumentException("grade merge: " + folder + " holds no results.json; give the --out folder of a 'grade --shard K/N' run");
+                throw new IllegalArgumentException("grade merge: " + folder
+                        + " holds no results.json; give the --out folder of a 'grade --shard K/N' run");
             }
             ReportFiles.Report r = ReportFiles.read(file);
             if (plan == null) {
                 plan = r.plan();
                 n = r.shard().n();
             } else if (!plan.equals(r.plan()) || n != r.shard().n()) {
-                throw new IllegalArgumentException("grade merge: " + folder + " is a shard of another grading (its submissions,"
+                throw new IllegalArgumentException("grade merge: " + folder
+                        + " is a shard of another grading (its submissions,"
                         + " arenas, seeds or number of shards differ from " + shardFolders.get(0) + ")");
             }
             Path before = seen.put(r.shard().k(), folder);
             if (before != null) {
-                throw new IllegalArgumentException("grade merge: shard " + r.shard() + " is given twice (" + before + " and " + folder + ")");
+                throw new IllegalArgumentException("grade merge: shard " + r.shard() + " is given twice (" + before
+                        + " and " + folder + ")");
             }
             List<GradePlan.Job> jobs = plan.shard(r.shard());
             if (jobs.size() != r.runs().size()) {
-                throw new IllegalArgumentException("grade merge: " + folder + " holds " + r.runs().size() + " runs, but shard "
+                throw new IllegalArgumentException("grade merge: " + folder + " holds " + r.runs().size()
+                        + " runs, but shard "
                         + r.shard() + " has " + jobs.size() + "; make that shard again");
             }
             for (int i = 0; i < jobs.size(); i++) {
@@ -65,7 +70,8 @@ public final class ReportMerge {
         }
         for (int k = 1; k <= n; k++) {
             if (!seen.containsKey(k)) {
-                throw new IllegalArgumentException("grade merge: shard " + k + "/" + n + " is missing; make it with grade --shard "
+                throw new IllegalArgumentException("grade merge: shard " + k + "/" + n
+                        + " is missing; make it with grade --shard "
                         + k + "/" + n + " and give its folder too");
             }
         }

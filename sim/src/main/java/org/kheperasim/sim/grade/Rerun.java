@@ -48,10 +48,13 @@ final class Rerun {
     static ChildRun.Outcome combine(ChildRun.Outcome first, ChildRun.Outcome second) {
         RunRecord r = second.record().withRerun(first.diverged());
         if (second.diverged() != null) {
-            r = new RunRecord(r.student(), r.arena(), r.seed(), r.status(), r.points(), r.max(), r.percent(), r.simulatedSeconds(),
-                    r.controller(), "in both makings of the run: " + r.detail(), r.picture(), r.madeIn(), r.page(), r.rerun());
+            r = new RunRecord(r.student(), r.arena(), r.seed(), r.status(), r.points(), r.max(), r.percent(),
+                    r.simulatedSeconds(),
+                    r.controller(), "in both makings of the run: " + r.detail(), r.picture(), r.madeIn(),
+                    r.page(), r.rerun());
         }
-        return new ChildRun.Outcome(r, first.wallSeconds() + second.wallSeconds(), second.trace(), second.log(), second.page(),
+        return new ChildRun.Outcome(r, first.wallSeconds() + second.wallSeconds(), second.trace(),
+                second.log(), second.page(),
                 second.tape(), second.diverged());
     }
 

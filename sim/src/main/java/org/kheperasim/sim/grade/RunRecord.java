@@ -46,32 +46,39 @@ public record RunRecord(String student, String arena, long seed, RunStatus statu
     }
 
     /** A run made once. */
-    public RunRecord(String student, String arena, long seed, RunStatus status, double points, double max, double percent,
+    public RunRecord(String student, String arena, long seed, RunStatus status, double points,
+            double max, double percent,
             double simulatedSeconds, String controller, String detail, String picture, String madeIn, String page) {
-        this(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture, madeIn, page, "");
+        this(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture,
+                madeIn, page, "");
     }
 
     /** A run without a page (yet). */
-    public RunRecord(String student, String arena, long seed, RunStatus status, double points, double max, double percent,
+    public RunRecord(String student, String arena, long seed, RunStatus status, double points,
+            double max, double percent,
             double simulatedSeconds, String controller, String detail, String picture, String madeIn) {
-        this(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture, madeIn, "", "");
+        this(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture,
+                madeIn, "", "");
     }
 
     /** @param picture the trajectory picture @return this run with it */
     RunRecord withPicture(String picture) {
-        return new RunRecord(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture,
+        return new RunRecord(student, arena, seed, status, points, max, percent, simulatedSeconds, controller,
+                detail, picture,
                 madeIn, page, rerun);
     }
 
     /** @param page the run's web page @return this run with it */
     RunRecord withPage(String page) {
-        return new RunRecord(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture,
+        return new RunRecord(student, arena, seed, status, points, max, percent, simulatedSeconds, controller,
+                detail, picture,
                 madeIn, page, rerun);
     }
 
     /** @param firstDifference what differed from the replay the first time @return this run, made again */
     RunRecord withRerun(String firstDifference) {
-        return new RunRecord(student, arena, seed, status, points, max, percent, simulatedSeconds, controller, detail, picture,
+        return new RunRecord(student, arena, seed, status, points, max, percent, simulatedSeconds, controller,
+                detail, picture,
                 madeIn, page, firstDifference);
     }
 

@@ -40,7 +40,8 @@ public final class Submissions {
             List<Path> out = s.filter(Files::isDirectory).filter(p -> !p.getFileName().toString().startsWith("."))
                     .sorted().toList();
             if (out.isEmpty()) {
-                throw new IllegalArgumentException("--submissions " + folder + " holds no sub-folder; put each student's"
+                throw new IllegalArgumentException("--submissions " + folder
+                        + " holds no sub-folder; put each student's"
                         + " .java or .class files in a folder of their own (e.g. " + folder.resolve("alice") + ")");
             }
             return out;
@@ -106,7 +107,8 @@ public final class Submissions {
             }
         }
         if (found.isEmpty()) {
-            return new Submission(student, classes, null, "no controller class: none of the classes extends Thread with a"
+            return new Submission(student, classes, null,
+                    "no controller class: none of the classes extends Thread with a"
                     + " (CurrentRobotState, MessagePasser) constructor, Controller, StepController or RobotController");
         }
         return new Submission(student, classes, found.get(0), null);
@@ -124,7 +126,8 @@ public final class Submissions {
         }
         String shown = String.join(", ", names.subList(0, StrictMath.min(5, names.size())))
                 + (names.size() > 5 ? ", ..." : "");
-        return "no .java or .class file; the folder holds " + (names.size() == 1 ? "1 file: " : names.size() + " files: ")
+        return "no .java or .class file; the folder holds "
+                + (names.size() == 1 ? "1 file: " : names.size() + " files: ")
                 + shown;
     }
 
@@ -141,7 +144,8 @@ public final class Submissions {
 
     private static List<Path> files(Path folder, String suffix) throws IOException {
         try (Stream<Path> s = Files.walk(folder, 16)) {
-            return s.filter(Files::isRegularFile).filter(p -> p.getFileName().toString().endsWith(suffix)).sorted().toList();
+            return s.filter(Files::isRegularFile).filter(p -> p.getFileName().toString().endsWith(suffix))
+                    .sorted().toList();
         }
     }
 }

@@ -23,25 +23,30 @@ final class TextTable {
         runs.forEach(r -> counts.merge(r.status(), 1, Integer::sum));
         for (Map.Entry<String, List<Ranking.Entry>> e : Ranking.of(runs).entrySet()) {
             List<Ranking.Entry> entries = e.getValue();
-            int nameWidth = StrictMath.max(7, entries.stream().mapToInt(x -> Shown.line(x.student()).length()).max().orElse(7));
+            int nameWidth = StrictMath.max(7,
+                    entries.stream().mapToInt(x -> Shown.line(x.student()).length()).max().orElse(7));
             double max = entries.isEmpty() || entries.get(0).runs().isEmpty() ? 0
                     : entries.stream().flatMap(x -> x.runs().stream()).mapToDouble(RunRecord::max).max().orElse(0);
             sb.append("Arena ").append(Shown.line(e.getKey()))
                     .append(max > 0 ? " (" + ReportFiles.num(max) + " points)" : " (no tasks)")
                     .append('\n');
-            sb.append(String.format(Locale.ROOT, "%4s  %-" + nameWidth + "s  %7s  %7s  %s%n", "rank", "student", "score%",
+            sb.append(String.format(Locale.ROOT, "%4s  %-" + nameWidth + "s  %7s  %7s  %s%n", "rank",
+                    "student", "score%",
                     "points", "score% by seed"));
             for (Ranking.Entry x : entries) {
                 String seeds = x.runs().stream().map(TextTable::seed).collect(Collectors.joining(" | "));
-                sb.append(String.format(Locale.ROOT, "%4s  %-" + nameWidth + "s  %7s  %7s  %s%n", x.ranked() ? x.rank() : "-", Shown.line(x.student()),
+                sb.append(String.format(Locale.ROOT, "%4s  %-" + nameWidth + "s  %7s  %7s  %s%n",
+                        x.ranked() ? x.rank() : "-", Shown.line(x.student()),
                         ReportFiles.num(x.meanPercent()), ReportFiles.num(x.meanPoints()), seeds));
             }
-            List<RunRecord> failed = entries.stream().flatMap(x -> x.runs().stream()).filter(r -> r.status() != RunStatus.OK)
+            List<RunRecord> failed =
+                    entries.stream().flatMap(x -> x.runs().stream()).filter(r -> r.status() != RunStatus.OK)
                     .toList();
             if (!failed.isEmpty()) {
                 sb.append("Runs not ok:\n");
                 for (RunRecord r : failed) {
-                    sb.append("  ").append(Shown.line(r.student())).append(", seed ").append(r.seed()).append(": ").append(r.status().label())
+                    sb.append("  ").append(Shown.line(r.student())).append(", seed ").append(r.seed()).append(": ")
+                            .append(r.status().label())
                             .append(r.detail().isEmpty() ? "" : ": " + Shown.line(r.detail())).append('\n');
                 }
             }
@@ -62,7 +67,8 @@ final class TextTable {
                 .append("; ").append(madeIn(runs)).append("; ").append(reruns(runs)).append('\n');
         for (RunRecord r : runs) {
             if (r.madeAgain()) {
-                sb.append("  made again: ").append(Shown.line(r.student())).append(", ").append(Shown.line(r.arena())).append(", seed ").append(r.seed())
+                sb.append("  made again: ").append(Shown.line(r.student())).append(", ").append(Shown.line(r.arena()))
+                        .append(", seed ").append(r.seed())
                         .append(": the first time ").append(Shown.line(r.rerun())).append('\n');
             }
         }

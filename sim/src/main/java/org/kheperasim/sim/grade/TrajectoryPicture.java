@@ -31,7 +31,8 @@ import org.kheperasim.sim.files.AtomicFiles;
  * trace, same bytes; saved atomically (a grading killed while drawing leaves no half picture).
  */
 final class TrajectoryPicture {
-    private static final Color[] PATHS = {new Color(0x1f5fbf), new Color(0x9b30c0), new Color(0x0f8f6f), new Color(0xc06010)};
+    private static final Color[] PATHS = {new Color(0x1f5fbf), new Color(0x9b30c0), new Color(0x0f8f6f),
+            new Color(0xc06010)};
 
     private TrajectoryPicture() {
     }
@@ -98,7 +99,8 @@ final class TrajectoryPicture {
                 }
                 try {
                     if (t[1].equals("cap")) {
-                        caps.put(Integer.parseInt(t[2]), new double[] {Double.parseDouble(t[3]), Double.parseDouble(t[4])});
+                        caps.put(Integer.parseInt(t[2]),
+                                new double[] {Double.parseDouble(t[3]), Double.parseDouble(t[4])});
                     } else {
                         double x = Double.parseDouble(t[2]);
                         double y = Double.parseDouble(t[3]);

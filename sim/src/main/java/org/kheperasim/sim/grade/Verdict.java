@@ -91,8 +91,10 @@ final class Verdict {
                     child.madeIn()));
         }
         if (child.logCut()) {
-            return new Judged(new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.ERROR, 0, 0, 0, 0, controller,
-                    "its command log passed the limit of " + (MAX_LOG_BYTES >> 20) + " MiB (compressed) and was cut off", "",
+            return new Judged(new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.ERROR, 0, 0,
+                    0, 0, controller,
+                    "its command log passed the limit of " + (MAX_LOG_BYTES >> 20)
+                            + " MiB (compressed) and was cut off", "",
                     child.madeIn()));
         }
         double seconds = lim.seconds() != null ? lim.seconds() : arena.assignment().secondsOr(600);
@@ -102,23 +104,27 @@ final class Verdict {
         // The page's samples come from the replay's own snapshots, every 50 ms: a trace that fine would
         // cost the run and the replay five times the formatting of the trace's 250 ms lines.
         RunPageRecorder tape = new RunPageRecorder(arena, null);
-        try (BufferedReader in = open(child.log()); Writer out = Files.newBufferedWriter(trace, StandardCharsets.UTF_8)) {
+        try (BufferedReader in = open(child.log());
+                Writer out = Files.newBufferedWriter(trace, StandardCharsets.UTF_8)) {
             if (in == null) {
                 throw new TornLogException(0, "no command log came");
             }
             replay = OpenLoopReplay.replay(run, new CommandLogReader(in), out, tape, RunPageRecorder.PERIOD_MILLIS);
         } catch (UncheckedIOException e) {
             deleteQuietly(trace);
-            return new Judged(new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.ERROR, 0, 0, 0, 0, controller,
+            return new Judged(new RunRecord(job.student(), job.arena(), job.seed(), RunStatus.ERROR, 0, 0,
+                    0, 0, controller,
                     "its command log could not be read: " + e.getMessage(), "", child.madeIn()));
         } catch (TornLogException e) {
             deleteQuietly(trace);
             // No whole log: the run did not end as the simulator ends it.
-            return new Judged(ChildResults.noResult(job, controller, false, lim.wallSeconds(), child.exit(), child.err(),
+            return new Judged(ChildResults.noResult(job, controller, false, lim.wallSeconds(),
+                    child.exit(), child.err(),
                     child.madeIn()));
         } catch (ReplayMismatchException | LogFormatException e) {
             deleteQuietly(trace);
-            return difference(job, controller, child, "its command log does not fit the run (" + e.getMessage() + ")", null, 0,
+            return difference(job, controller, child,
+                    "its command log does not fit the run (" + e.getMessage() + ")", null, 0,
                     null, null);
         } catch (IOException e) {
             throw new UncheckedIOException("cannot replay " + child.log() + ": " + e.getMessage(), e);
@@ -131,13 +137,15 @@ final class Verdict {
             Map<String, Object> parsed = (Map<String, Object>) JsonValues.parse(replay.claim());
             claim = parsed;
         } catch (RuntimeException e) {
-            RunRecord r = ChildResults.tampered(job, controller, "its own result is not the simulator's JSON", score, reached,
+            RunRecord r = ChildResults.tampered(job, controller,
+                    "its own result is not the simulator's JSON", score, reached,
                     child.madeIn());
             return new Judged(r, ChildResults.page(job, controller, Map.of(), replay.result(), r), tape);
         }
         String differs = Differences.of(claim, replay, score);
         if (differs != null) {
-            return difference(job, controller, child, "its own result differs from the replay of its command log (" + differs
+            return difference(job, controller, child,
+                    "its own result differs from the replay of its command log (" + differs
                     + "); the score is the replay's", score, reached, replay, tape);
         }
         RunRecord r = ChildResults.fromClaim(job, controller, claim, score, reached, child.err(), child.madeIn());
@@ -154,12 +162,15 @@ final class Verdict {
      * A result that differs from the replay, or a log that does not fit the run: from a JVM that ended
      * normally, a difference to make the run again for; from one that ended otherwise, evidence of tampering.
      */
-    private static Judged difference(GradePlan.Job job, String controller, Child child, String what, Score score, double reached,
+    private static Judged difference(GradePlan.Job job, String controller, Child child, String what,
+            Score score, double reached,
             OpenLoopReplay.Outcome replay, RunPageRecorder tape) {
         boolean normal = child.exit() == 0 || child.exit() == 1;
-        RunRecord t = ChildResults.tampered(job, controller, normal ? what : "its JVM ended with exit status " + child.exit()
+        RunRecord t = ChildResults.tampered(job, controller,
+                normal ? what : "its JVM ended with exit status " + child.exit()
                 + ", which the simulator never gives, and " + what, score, reached, child.madeIn());
-        RunRecord r = normal ? new RunRecord(t.student(), t.arena(), t.seed(), RunStatus.DIVERGED, t.points(), t.max(), t.percent(),
+        RunRecord r = normal
+                ? new RunRecord(t.student(), t.arena(), t.seed(), RunStatus.DIVERGED, t.points(), t.max(), t.percent(),
                 t.simulatedSeconds(), t.controller(), t.detail(), t.picture(), t.madeIn()) : t;
         RunOutcome page = replay == null ? null : ChildResults.page(job, controller, Map.of(), replay.result(), r);
         return new Judged(r, page, replay == null ? null : tape, normal ? t.detail() : null);

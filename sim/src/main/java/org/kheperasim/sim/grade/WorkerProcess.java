@@ -97,15 +97,18 @@ final class WorkerProcess implements AutoCloseable {
         }
         Path scratch = Files.createDirectories(folder.resolve("scratch"));
         List<String> java = new ArrayList<>(ChildRun.jvmOptions(lim));
-        // For the worker's own code only (grade.worker.ThreadNumbering): controllers cannot reflect, the allowlist refuses it.
+        // For the worker's own code only (grade.worker.ThreadNumbering): controllers cannot reflect, the allowlist
+        // refuses it.
         java.add(0, "--add-opens=java.base/java.lang=ALL-UNNAMED");
         if (!lim.sandbox()) {
             java.add("-Djava.io.tmpdir=" + scratch.toAbsolutePath());
         }
         java.addAll(List.of(WorkerMain.MAIN, "--classpath", sub.classpath().toString(), "--scratch",
                 lim.sandbox() ? "/tmp" : scratch.toAbsolutePath().toString()));
-        List<String> cmd = lim.sandbox() ? Box.command(new Box.Spec(ChildRun.boxed(sub, arenas), List.of(), null, channels,
-                false, BoxLimits.forWorker(lim.heapMb(), robots, lim.wallSeconds(), runs), slot), java) : ChildRun.unboxed(java);
+        List<String> cmd = lim.sandbox()
+                ? Box.command(new Box.Spec(ChildRun.boxed(sub, arenas), List.of(), null, channels,
+                false, BoxLimits.forWorker(lim.heapMb(), robots, lim.wallSeconds(), runs), slot),
+                        java) : ChildRun.unboxed(java);
         ProcessBuilder pb = new ProcessBuilder(cmd);
         if (!lim.sandbox()) {
             pb.directory(scratch.toFile()); // as the box's /tmp: emptied after each run
@@ -126,7 +129,8 @@ final class WorkerProcess implements AutoCloseable {
      * @return what came back
      * @throws IOException if its socket cannot be made, or the grading was interrupted
      */
-    ChildRun.Outcome run(GradePlan.Job job, Submission sub, Arena arena, ChildRun.Limits lim, Path runs) throws IOException {
+    ChildRun.Outcome run(GradePlan.Job job, Submission sub, Arena arena, ChildRun.Limits lim,
+            Path runs) throws IOException {
         Path trace = runs.resolve(ReportFiles.runId(job) + ".trace");
         Path logFile = runs.resolve(ReportFiles.runId(job) + ".log.gz");
         Files.deleteIfExists(trace);
@@ -169,7 +173,8 @@ final class WorkerProcess implements AutoCloseable {
         try {
             done = err.awaitDone((long) (wallSeconds * 1000));
             // Without its done mark the run ended the worker, or is still going at its wall-clock limit.
-            if (done == null && !process.waitFor(StrictMath.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS)) {
+            if (done == null && !process.waitFor(StrictMath.max(0, deadline - System.nanoTime()),
+                    TimeUnit.NANOSECONDS)) {
                 killed = true;
                 ChildRun.kill(process);
             }

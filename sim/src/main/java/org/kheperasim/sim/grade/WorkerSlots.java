@@ -52,7 +52,8 @@ final class WorkerSlots {
     record Summary(int runs, int workers, int replaced) {
         /** @return one line for the progress stream */
         String line() {
-            return String.format(java.util.Locale.ROOT, "made %d runs on %d worker JVMs (%d replaced after a run that ended"
+            return String.format(java.util.Locale.ROOT,
+                    "made %d runs on %d worker JVMs (%d replaced after a run that ended"
                     + " its worker or left something behind)", runs, workers, replaced);
         }
     }
@@ -77,7 +78,8 @@ final class WorkerSlots {
      * @param stop       once set (the grading's deadline passed, or it was told to stop), no further run is started
      * @return how they were made
      */
-    static Summary makeAll(List<GradePlan.Job> todo, Map<String, Submission> subs, Map<String, Arena> arenas, ChildRun.Limits lim,
+    static Summary makeAll(List<GradePlan.Job> todo, Map<String, Submission> subs, Map<String, Arena> arenas,
+            ChildRun.Limits lim,
             int jobs, int workerRuns, Path runs, Path sockets, Set<Process> running, Finisher finisher,
             java.util.concurrent.atomic.AtomicBoolean stop) {
         WorkerSlots slots = new WorkerSlots(todo);
@@ -92,7 +94,8 @@ final class WorkerSlots {
                 String student;
                 while ((student = slots.pick()) != null) {
                     try {
-                        slots.work(student, subs.get(student), arenaNames, robots, arenas, lim, workerRuns, slot, runs, sockets,
+                        slots.work(student, subs.get(student), arenaNames, robots, arenas, lim, workerRuns,
+                                slot, runs, sockets,
                                 running, finisher);
                     } finally {
                         slots.release(student);
@@ -107,7 +110,8 @@ final class WorkerSlots {
 
     /** Make a submission's runs (those this slot takes) on a worker, replaced as need be. */
     private void work(String student, Submission sub, List<String> arenaNames, int robots, Map<String, Arena> arenas,
-            ChildRun.Limits lim, int workerRuns, int slot, Path runs, Path sockets, Set<Process> running, Finisher finisher)
+            ChildRun.Limits lim, int workerRuns, int slot, Path runs, Path sockets, Set<Process> running,
+            Finisher finisher)
             throws IOException {
         WorkerProcess w = null;
         try {
@@ -122,7 +126,8 @@ final class WorkerSlots {
                 }
                 if (w == null) {
                     Path folder = Files.createDirectories(sockets.resolve("w" + folders.incrementAndGet()));
-                    w = WorkerProcess.start(sub, arenaNames, robots, lim, StrictMath.min(workerRuns, left(student) + 1), slot,
+                    w = WorkerProcess.start(sub, arenaNames, robots, lim,
+                            StrictMath.min(workerRuns, left(student) + 1), slot,
                             folder, running);
                 }
                 ChildRun.Outcome made = w.run(job, sub, arenas.get(job.arena()), lim, runs);
@@ -153,7 +158,10 @@ final class WorkerSlots {
         }
     }
 
-    /** @return a submission for a free slot: one no worker has yet, else a second worker's share of the most runs left, else null */
+    /**
+     * @return a submission for a free slot: one no worker has yet, else a second worker's share of the most runs left,
+     *     else null
+     */
     private synchronized String pick() {
         if (stop.get()) {
             return null;

@@ -102,7 +102,8 @@ final class ArenaFileActions {
             return true;
         }
         Object[] options = {"Save", "Discard", "Cancel"};
-        int choice = JOptionPane.showOptionDialog(frame, "The arena " + model.arena().name() + " has unsaved changes. Save"
+        int choice = JOptionPane.showOptionDialog(frame,
+                "The arena " + model.arena().name() + " has unsaved changes. Save"
                 + " them before " + doing + "?", "Unsaved changes", JOptionPane.YES_NO_CANCEL_OPTION,
                 JOptionPane.WARNING_MESSAGE, null, options, options[0]);
         if (choice == 0) {

@@ -122,7 +122,8 @@ public final class ArenaRenderer {
         g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
         g.setColor(OUTSIDE);
         g.fill(new Rectangle2D.Double(0, 0, w, h));
-        Rectangle2D floor = new Rectangle2D.Double(view.sx(0), view.sy(arena.height()), view.len(arena.width()), view.len(arena.height()));
+        Rectangle2D floor = new Rectangle2D.Double(view.sx(0), view.sy(arena.height()), view.len(arena.width()),
+                view.len(arena.height()));
         g.setColor(FLOOR);
         g.fill(floor);
         if (options.grid()) {
@@ -148,13 +149,15 @@ public final class ArenaRenderer {
         }
         for (Wall wall : arena.walls()) {
             g.setColor(WALL);
-            g.setStroke(new BasicStroke((float) StrictMath.max(1, view.len(wall.thickness())), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+            g.setStroke(new BasicStroke((float) StrictMath.max(1, view.len(wall.thickness())), BasicStroke.CAP_ROUND,
+                    BasicStroke.JOIN_ROUND));
             g.draw(new Line2D.Double(view.sx(wall.x1()), view.sy(wall.y1()), view.sx(wall.x2()), view.sy(wall.y2())));
         }
     }
 
     /** What moves: caps, trails, robots, beams, and the editor's overlay. */
-    public static void drawDynamic(Graphics2D g, ViewTransform view, Arena arena, Snapshot snapshot, Overlay overlay, Options options) {
+    public static void drawDynamic(Graphics2D g, ViewTransform view, Arena arena, Snapshot snapshot, Overlay overlay,
+            Options options) {
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setRenderingHint(RenderingHints.KEY_STROKE_CONTROL, RenderingHints.VALUE_STROKE_PURE);
         if (snapshot == null || snapshot.caps().size() != arena.caps().size()) {
@@ -203,7 +206,8 @@ public final class ArenaRenderer {
         }
         if (live) {
             for (RobotView r : snapshot.robots()) {
-                drawRobot(g, view, r.type(), r.x(), r.y(), r.headingDeg(), r.gripper(), options.beams() ? r.proximity() : null, true,
+                drawRobot(g, view, r.type(), r.x(), r.y(), r.headingDeg(), r.gripper(),
+                        options.beams() ? r.proximity() : null, true,
                         r.leds());
             }
         }
@@ -228,7 +232,8 @@ public final class ArenaRenderer {
         Stroke old = g.getStroke();
         g.setColor(new Color(0x8090A0));
         g.setStroke(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 4f}, 0f));
-        g.draw(new Rectangle2D.Double(view.sx(r.x1()), view.sy(r.y2()), view.len(r.x2() - r.x1()), view.len(r.y2() - r.y1())));
+        g.draw(new Rectangle2D.Double(view.sx(r.x1()), view.sy(r.y2()), view.len(r.x2() - r.x1()),
+                view.len(r.y2() - r.y1())));
         g.setStroke(old);
         if (view.len(r.x2() - r.x1()) > 60) {
             g.setFont(g.getFont().deriveFont(Font.PLAIN, 10f));
@@ -266,7 +271,10 @@ public final class ArenaRenderer {
         g.draw(circle(view, p.x(), p.y(), radius));
     }
 
-    /** Draws a robot: body, wheels, heading, gripper turret, its two LEDs (bit 0, bit 1 of {@code leds}), optional beams. */
+    /**
+     * Draws a robot: body, wheels, heading, gripper turret, its two LEDs (bit 0, bit 1 of {@code leds}), optional
+     * beams.
+     */
     static void drawRobot(Graphics2D g, ViewTransform view, RobotType type, double x, double y, double headingDeg,
             GripperView gripper, int[] beams, boolean live, int leds) {
         double r = type.body().radiusMm();
@@ -284,17 +292,20 @@ public final class ArenaRenderer {
                 double len = 50;
                 g.setColor(new Color(1f, 0.1f, 0.1f, (float) (0.15 + 0.7 * v)));
                 g.setStroke(new BasicStroke((float) StrictMath.max(1, view.len(2))));
-                g.draw(new Line2D.Double(view.sx(sx), view.sy(sy), view.sx(sx + len * StrictMath.cos(a)), view.sy(sy + len * StrictMath.sin(a))));
+                g.draw(new Line2D.Double(view.sx(sx), view.sy(sy), view.sx(sx + len * StrictMath.cos(a)),
+                        view.sy(sy + len * StrictMath.sin(a))));
             }
         }
         // Wheels: two dark bars on the sides.
         g.setColor(new Color(0x202020));
-        g.setStroke(new BasicStroke((float) StrictMath.max(1, view.len(6)), BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER));
+        g.setStroke(new BasicStroke((float) StrictMath.max(1, view.len(6)), BasicStroke.CAP_BUTT,
+                BasicStroke.JOIN_MITER));
         for (int side = -1; side <= 1; side += 2) {
             // Drawn just inside the body's edge (the Khepera's: 24 mm from the centre).
             double wx = x - side * (r - 3.5) * sin;
             double wy = y + side * (r - 3.5) * cos;
-            g.draw(new Line2D.Double(view.sx(wx - 10 * cos), view.sy(wy - 10 * sin), view.sx(wx + 10 * cos), view.sy(wy + 10 * sin)));
+            g.draw(new Line2D.Double(view.sx(wx - 10 * cos), view.sy(wy - 10 * sin), view.sx(wx + 10 * cos),
+                    view.sy(wy + 10 * sin)));
         }
         Ellipse2D body = circle(view, x, y, r);
         g.setColor(live ? ROBOT : new Color(0x6FBF8F));
@@ -316,18 +327,21 @@ public final class ArenaRenderer {
         }
         // Heading: a line from the centre to the front, and a notch.
         g.setColor(Color.WHITE);
-        g.setStroke(new BasicStroke((float) StrictMath.max(1.5, view.len(3)), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.setStroke(new BasicStroke((float) StrictMath.max(1.5, view.len(3)), BasicStroke.CAP_ROUND,
+                BasicStroke.JOIN_ROUND));
         g.draw(new Line2D.Double(view.sx(x), view.sy(y), view.sx(x + r * 0.85 * cos), view.sy(y + r * 0.85 * sin)));
     }
 
-    private static void drawGripperOnRobot(Graphics2D g, ViewTransform view, double x, double y, double cos, double sin, GripperView gv) {
+    private static void drawGripperOnRobot(Graphics2D g, ViewTransform view, double x, double y, double cos, double sin,
+            GripperView gv) {
         // Arm: from the body's front; the lower the arm, the farther ahead its fingers reach on the floor.
         double lowered = StrictMath.max(0, StrictMath.min(1, (gv.armPosition() - GripperTurret.ARM_UP)
                 / (double) (GripperTurret.ARM_DOWN - GripperTurret.ARM_UP)));
         double reach = 27.5 + 4 + 14 * lowered;
         double spread = gv.fingers() == GripperState.OPEN ? 9 : 3;
         g.setColor(new Color(0x505A66));
-        g.setStroke(new BasicStroke((float) StrictMath.max(1, view.len(3)), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+        g.setStroke(new BasicStroke((float) StrictMath.max(1, view.len(3)), BasicStroke.CAP_ROUND,
+                BasicStroke.JOIN_ROUND));
         for (int side = -1; side <= 1; side += 2) {
             double bx = x + 20 * cos - side * spread * sin;
             double by = y + 20 * sin + side * spread * cos;
@@ -347,7 +361,8 @@ public final class ArenaRenderer {
             if (!EditorModel.exists(arena, it)) {
                 continue;
             }
-            g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND, 10f, new float[] {5f, 3f}, 0f));
+            g.setStroke(new BasicStroke(2f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND, 10f,
+                    new float[] {5f, 3f}, 0f));
             switch (it.kind()) {
                 case ROBOT -> {
                     Pose p = arena.robots().get(it.index());
@@ -359,7 +374,8 @@ public final class ArenaRenderer {
                 }
                 case WALL -> {
                     Wall w = arena.walls().get(it.index());
-                    g.setStroke(new BasicStroke((float) StrictMath.max(3, view.len(w.thickness()) + 4), BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+                    g.setStroke(new BasicStroke((float) StrictMath.max(3, view.len(w.thickness()) + 4),
+                            BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
                     g.setColor(new Color(0x601E6FFF, true));
                     g.draw(new Line2D.Double(view.sx(w.x1()), view.sy(w.y1()), view.sx(w.x2()), view.sy(w.y2())));
                     g.setColor(SELECTION);
@@ -378,7 +394,8 @@ public final class ArenaRenderer {
         }
         if (o.band() != null) {
             double[] b = o.band();
-            Rectangle2D r = new Rectangle2D.Double(view.sx(StrictMath.min(b[0], b[2])), view.sy(StrictMath.max(b[1], b[3])),
+            Rectangle2D r = new Rectangle2D.Double(view.sx(StrictMath.min(b[0], b[2])),
+                    view.sy(StrictMath.max(b[1], b[3])),
                     view.len(StrictMath.abs(b[2] - b[0])), view.len(StrictMath.abs(b[3] - b[1])));
             g.setComposite(AlphaComposite.getInstance(AlphaComposite.SRC_OVER, 0.15f));
             g.fill(r);
@@ -395,7 +412,8 @@ public final class ArenaRenderer {
     }
 
     private static void handle(Graphics2D g, ViewTransform view, double x, double y) {
-        Rectangle2D r = new Rectangle2D.Double(view.sx(x) - HANDLE_PX / 2, view.sy(y) - HANDLE_PX / 2, HANDLE_PX, HANDLE_PX);
+        Rectangle2D r = new Rectangle2D.Double(view.sx(x) - HANDLE_PX / 2, view.sy(y) - HANDLE_PX / 2,
+                HANDLE_PX, HANDLE_PX);
         g.setColor(Color.WHITE);
         g.fill(r);
         g.setColor(SELECTION);

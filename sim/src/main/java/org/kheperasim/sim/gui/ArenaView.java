@@ -78,7 +78,8 @@ final class ArenaView extends JComponent {
                     selection.select(clicked);
                     clickedRobot = true;
                 } else if (SwingUtilities.isLeftMouseButton(e) && !e.isAltDown() && editable.getAsBoolean()) {
-                    gestures.press(view.ax(e.getX()), view.ay(e.getY()), e.isShiftDown() || e.isControlDown(), 6 / view.scale());
+                    gestures.press(view.ax(e.getX()), view.ay(e.getY()), e.isShiftDown() || e.isControlDown(),
+                            6 / view.scale());
                 } else {
                     panning = true;
                     panX = e.getX();
@@ -192,8 +193,10 @@ final class ArenaView extends JComponent {
         try {
             List<float[]> t = options.trail() ? trails.get() : new ArrayList<>();
             Arena shown = model.shown();
-            String key = System.identityHashCode(shown) + " " + view.sx(0) + " " + view.sy(0) + " " + view.scale() + " " + w + "x" + h + " " + options.grid();
-            if (background == null || !key.equals(backgroundKey) || background.getWidth() != w || background.getHeight() != h) {
+            String key = System.identityHashCode(shown) + " " + view.sx(0) + " " + view.sy(0) + " " + view.scale() + " "
+                    + w + "x" + h + " " + options.grid();
+            if (background == null || !key.equals(backgroundKey) || background.getWidth() != w
+                    || background.getHeight() != h) {
                 background = getGraphicsConfiguration() != null ? getGraphicsConfiguration().createCompatibleImage(w, h)
                         : new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
                 Graphics2D bg = background.createGraphics();

@@ -56,7 +56,8 @@ final class ControllerChooser {
             public java.awt.Component getListCellRendererComponent(javax.swing.JList<?> list, Object value, int index,
                     boolean selected, boolean focus) {
                 String full = String.valueOf(value);
-                super.getListCellRendererComponent(list, full.substring(full.lastIndexOf('.') + 1), index, selected, focus);
+                super.getListCellRendererComponent(list, full.substring(full.lastIndexOf('.') + 1), index,
+                        selected, focus);
                 setToolTipText(full);
                 return this;
             }
@@ -97,7 +98,8 @@ final class ControllerChooser {
             return;
         }
         Path p = chooser.getSelectedFile().toPath();
-        String name = JOptionPane.showInputDialog(frame, "The controller's class name (with its package, if any):", guessClass(p));
+        String name = JOptionPane.showInputDialog(frame,
+                "The controller's class name (with its package, if any):", guessClass(p));
         if (name == null || name.isBlank()) {
             return;
         }
@@ -168,7 +170,8 @@ final class ControllerChooser {
         try {
             text = Files.readString(source);
             Path out = Path.of(System.getProperty("user.home"), ".khepera-sim", "classes",
-                    source.getFileName().toString().replaceFirst("\\.java$", "") + "-" + Long.toHexString(System.nanoTime()));
+                    source.getFileName().toString().replaceFirst("\\.java$", "") + "-"
+                            + Long.toHexString(System.nanoTime()));
             result = ControllerCompiler.compile(source, out);
         } catch (IOException | RuntimeException e) {
             console.error("cannot compile " + source + ": " + e.getMessage());
@@ -181,12 +184,14 @@ final class ControllerChooser {
             choices.javaSource = source;
             choices.sourceClass = result.className();
             choices.failedText = text;
-            choices.failedError = report.lines().findFirst().orElse("").replace(source.toString(), source.getFileName().toString());
+            choices.failedError =
+                    report.lines().findFirst().orElse("").replace(source.toString(), source.getFileName().toString());
             choices.controllerName = result.className();
             discardRun.run();
             offer(result.className());
             box.setSelectedItem(result.className());
-            status.alert(source.getFileName() + " does not compile: " + choices.failedError + ". Fix it, then Start (F5) or"
+            status.alert(source.getFileName() + " does not compile: " + choices.failedError
+                    + ". Fix it, then Start (F5) or"
                     + " Reload (F10) compiles it again; until then nothing runs");
             return false;
         }
@@ -219,7 +224,8 @@ final class ControllerChooser {
             now = Files.readString(source);
         } catch (IOException e) {
             if (choices.failedText == null && choices.compiledText != null) {
-                console.note("cannot read " + source + " (" + e.getMessage() + "); running the version compiled before");
+                console.note("cannot read " + source + " (" + e.getMessage()
+                        + "); running the version compiled before");
                 return true;
             }
             status.alert("Cannot read " + source + ": " + e.getMessage());
@@ -229,9 +235,11 @@ final class ControllerChooser {
             return true;
         }
         if (now.equals(choices.failedText)) {
-            console.error(source.getFileName() + " still does not compile (" + choices.failedError + "); nothing runs until it"
+            console.error(source.getFileName() + " still does not compile (" + choices.failedError
+                    + "); nothing runs until it"
                     + " does: the last version that compiled is not your file as it is now");
-            status.alert(source.getFileName() + " does not compile: " + choices.failedError + ". Fix it, then Start (F5);"
+            status.alert(source.getFileName() + " does not compile: " + choices.failedError
+                    + ". Fix it, then Start (F5);"
                     + " until then nothing runs");
             return false;
         }
@@ -246,8 +254,10 @@ final class ControllerChooser {
             return null;
         }
         try {
-            return Files.readString(source).equals(choices.compiledText) ? null : source.getFileName() + " changed since this run"
-                    + " started: the run goes on with the version it started with; Reset (F9) and Start (F5) run the change";
+            return Files.readString(source).equals(choices.compiledText)
+                    ? null : source.getFileName() + " changed since this run"
+                    + " started: the run goes on with the version it started with; Reset (F9) and Start (F5)"
+                    + " run the change";
         } catch (IOException e) {
             return null;
         }

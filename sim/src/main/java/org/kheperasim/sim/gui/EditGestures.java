@@ -171,7 +171,8 @@ public final class EditGestures {
                 }
                 case ROTATE -> {
                     Pose p = a.robots().get(handle.item().index());
-                    return ArenaEdits.setRobot(a, handle.item().index(), new Pose(p.x(), p.y(), heading(p.x(), p.y(), x, y)));
+                    return ArenaEdits.setRobot(a, handle.item().index(),
+                            new Pose(p.x(), p.y(), heading(p.x(), p.y(), x, y)));
                 }
                 case BAND -> {
                     band = new double[] {band[0], band[1], x, y};
@@ -185,7 +186,8 @@ public final class EditGestures {
                     return ArenaEdits.addWall(a, pressX, pressY, p[0], p[1]);
                 }
                 case ROBOT -> {
-                    double h = StrictMath.hypot(x - pressX, y - pressY) < 10 ? a.robots().get(0).headingDeg() : heading(pressX, pressY, x, y);
+                    double h = StrictMath.hypot(x - pressX, y - pressY) < 10
+                            ? a.robots().get(0).headingDeg() : heading(pressX, pressY, x, y);
                     return ArenaEdits.setRobot(a, 0, new Pose(pressX, pressY, h));
                 }
                 default -> {
@@ -214,7 +216,8 @@ public final class EditGestures {
             double best = SNAP_ENDS_MM;
             double[] out = null;
             for (int i = 0; i < a.walls().size(); i++) {
-                if (mode == Mode.RESIZE && handle != null && handle.item().index() == i && sel.contains(handle.item())) {
+                if (mode == Mode.RESIZE && handle != null && handle.item().index() == i
+                        && sel.contains(handle.item())) {
                     continue;
                 }
                 Wall w = a.walls().get(i);

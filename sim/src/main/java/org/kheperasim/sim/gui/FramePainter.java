@@ -32,7 +32,8 @@ final class FramePainter {
     private long fpsSince = System.nanoTime();
     private double fps;
 
-    FramePainter(ViewFeed feed, ReplayPlayer player, ReplayBar replayBar, PlotPanel plot, javax.swing.JComponent sensorPanel,
+    FramePainter(ViewFeed feed, ReplayPlayer player, ReplayBar replayBar, PlotPanel plot,
+            javax.swing.JComponent sensorPanel,
             ArenaView arenaView, ConsolePanel console, StatusBar status, RunControls runs, RunChoices choices) {
         this.feed = feed;
         this.player = player;
@@ -68,7 +69,8 @@ final class FramePainter {
         replayBar.update();
         Snapshot s = feed.snapshot();
         if (s != lastPainted) {
-            plot.show(feed.selectedSeries(), s == null ? 0 : s.timeSeconds(), player.open() ? player.cursor() : Double.NaN);
+            plot.show(feed.selectedSeries(), s == null ? 0 : s.timeSeconds(),
+                    player.open() ? player.cursor() : Double.NaN);
             sensorPanel.repaint();
             lastPainted = s;
         }
@@ -82,7 +84,8 @@ final class FramePainter {
         }
         PacedRunner r = runs.runner();
         String rtf = player.open() ? String.format(Locale.ROOT, "%.2fx", player.playing() ? player.speed() : 0.0)
-                : r == null || r.state() != PacedRunner.State.RUNNING ? "-" : String.format(Locale.ROOT, "%.2fx", r.realTimeFactor());
+                : r == null || r.state() != PacedRunner.State.RUNNING ? "-"
+                : String.format(Locale.ROOT, "%.2fx", r.realTimeFactor());
         timer.setDelay(choices.speed == PacedRunner.MAX_SPEED && !player.open() ? FRAME_MS_MAX_SPEED : FRAME_MS);
         status.update(feed.state(), s == null ? 0.0 : s.timeSeconds(), rtf, fps, arenaView.mouse());
         status.score(feed.source() == runs ? runs.score() : null);

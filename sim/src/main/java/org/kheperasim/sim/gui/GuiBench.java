@@ -32,7 +32,8 @@ public final class GuiBench {
             Thread.sleep(5);
         }
         long painted = System.currentTimeMillis();
-        out.printf(Locale.ROOT, "start-up: %.2f s from JVM start to the first painted frame of the window (maze, WallFollower)%n",
+        out.printf(Locale.ROOT,
+                "start-up: %.2f s from JVM start to the first painted frame of the window (maze, WallFollower)%n",
                 (painted - jvmStart) / 1000.0);
         SwingUtilities.invokeAndWait(() -> {
             w.setSeed(1);
@@ -46,8 +47,10 @@ public final class GuiBench {
         long f1 = view.frames();
         long t1 = System.nanoTime();
         double sim1 = w.runner().latest().timeSeconds();
-        out.printf(Locale.ROOT, "x1 with every panel on (beams, trail, grid, sensor panel, plot, console): %.1f frames/s;"
-                + " simulated %.2f s in %.2f s (%.3fx)%n", (f1 - f0) * 1e9 / (t1 - t0), sim1 - sim0, (t1 - t0) / 1e9, (sim1 - sim0) / ((t1 - t0) / 1e9));
+        out.printf(Locale.ROOT,
+                "x1 with every panel on (beams, trail, grid, sensor panel, plot, console): %.1f frames/s;"
+                + " simulated %.2f s in %.2f s (%.3fx)%n", (f1 - f0) * 1e9 / (t1 - t0), sim1 - sim0, (t1 - t0) / 1e9,
+                (sim1 - sim0) / ((t1 - t0) / 1e9));
 
         PacedRunner r = w.runner();
         SwingUtilities.invokeAndWait(() -> w.chooseSpeed(PacedRunner.MAX_SPEED));
@@ -59,15 +62,19 @@ public final class GuiBench {
         t1 = System.nanoTime();
         sim1 = r.latest().timeSeconds();
         double windowSpeed = (sim1 - sim0) / ((t1 - t0) / 1e9);
-        out.printf(Locale.ROOT, "as fast as possible, window open: %.0fx real time (%.1f frames/s meanwhile)%n", windowSpeed,
+        out.printf(Locale.ROOT,
+                "as fast as possible, window open: %.0fx real time (%.1f frames/s meanwhile)%n", windowSpeed,
                 (view.frames() - frames.get()) * 1e9 / (t1 - t0));
         SwingUtilities.invokeAndWait(() -> w.action("close").actionPerformed(null));
         Thread.sleep(300);
 
         double simSeconds = StrictMath.max(60, StrictMath.rint(sim1 - sim0));
-        RunResult headless = Simulation.builder().arena("maze").controller("WallFollower").seed(1).seconds(simSeconds).run();
-        out.printf(Locale.ROOT, "headless, same run: %.0fx real time (%.0f s simulated in %.2f s)%n", headless.realTimeFactor(),
+        RunResult headless =
+                Simulation.builder().arena("maze").controller("WallFollower").seed(1).seconds(simSeconds).run();
+        out.printf(Locale.ROOT, "headless, same run: %.0fx real time (%.0f s simulated in %.2f s)%n",
+                headless.realTimeFactor(),
                 headless.simulatedSeconds(), headless.wallSeconds());
-        out.printf(Locale.ROOT, "the window costs %.0f%% of the engine's speed%n", 100 * (1 - windowSpeed / headless.realTimeFactor()));
+        out.printf(Locale.ROOT, "the window costs %.0f%% of the engine's speed%n",
+                100 * (1 - windowSpeed / headless.realTimeFactor()));
     }
 }

@@ -19,7 +19,10 @@ public final class GuiLauncher {
     private GuiLauncher() {
     }
 
-    /** @return the window the latest {@link #launch} opens (for test drivers and benchmarks that start through the command line) */
+    /**
+     * @return the window the latest {@link #launch} opens (for test drivers and benchmarks that start through the
+     *     command line)
+     */
     public static CompletableFuture<MainWindow> lastLaunched() {
         return last;
     }
@@ -42,10 +45,11 @@ public final class GuiLauncher {
         if (GraphicsEnvironment.isHeadless()) {
             String display = System.getenv("DISPLAY");
             throw new NoDisplayException("no display to open the window on"
-                    + (display == null || display.isEmpty() ? " (DISPLAY is not set)" : " (DISPLAY=" + display + ", java.awt.headless="
+                    + (display == null || display.isEmpty() ? " (DISPLAY is not set)"
+                            : " (DISPLAY=" + display + ", java.awt.headless="
                     + System.getProperty("java.awt.headless") + ")")
-                    + ". Run headless with 'khepera-sim run --arena maze --controller WallFollower', or set DISPLAY to a running X server"
-                    + " (for example start 'Xvfb :5 &' and use DISPLAY=:5)");
+                    + ". Run headless with 'khepera-sim run --arena maze --controller WallFollower', or set DISPLAY to"
+                    + " a running X server (for example start 'Xvfb :5 &' and use DISPLAY=:5)");
         }
         PREFS_LOG.setLevel(java.util.logging.Level.WARNING);
         ControllerWindowCloser.install();
@@ -55,7 +59,8 @@ public final class GuiLauncher {
             try {
                 // FlatLaf: a modern look, and proper scaling on HiDPI screens.
                 if (!com.formdev.flatlaf.FlatLightLaf.setup()) {
-                    LOG.log(System.Logger.Level.DEBUG, "FlatLaf could not be set up; keeping the default look and feel");
+                    LOG.log(System.Logger.Level.DEBUG,
+                            "FlatLaf could not be set up; keeping the default look and feel");
                 }
                 MainWindow w = new MainWindow(options);
                 w.frame().setVisible(true);

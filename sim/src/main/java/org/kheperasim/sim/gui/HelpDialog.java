@@ -19,9 +19,11 @@ final class HelpDialog {
     private static final System.Logger LOG = System.getLogger(HelpDialog.class.getName());
 
     /** Every page of docs/, in reading order (a test checks that none is missing). */
-    static final List<String> PAGES = List.of("quick-start.md", "gui.md", "arena-format.md", "robot-files.md", "simulation-model.md",
+    static final List<String> PAGES =
+            List.of("quick-start.md", "gui.md", "arena-format.md", "robot-files.md", "simulation-model.md",
             "controller-rules.md", "swarms.md", "robot-link.md", "protocol-server.md", "wsu-migration.md", "grading.md",
-            "testing.md", "autograding.md", "web-replay.md", "evaluate.md", "calibration.md", "adding-a-device.md", "faq.md");
+            "testing.md", "autograding.md", "web-replay.md", "evaluate.md", "calibration.md",
+            "adding-a-device.md", "faq.md");
 
     private HelpDialog() {
     }
@@ -108,7 +110,8 @@ final class HelpDialog {
         if (available.isEmpty()) {
             view.setText("<html>The manual is not inside this build; read docs/ in the repository.</html>");
         } else {
-            list.setSelectedValue(available.stream().filter(p -> p.file().equals(page)).findFirst().orElse(available.get(0)), true);
+            list.setSelectedValue(
+                    available.stream().filter(p -> p.file().equals(page)).findFirst().orElse(available.get(0)), true);
         }
         d.setVisible(true);
         return d;

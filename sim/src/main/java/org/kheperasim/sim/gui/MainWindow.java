@@ -84,7 +84,8 @@ public final class MainWindow {
         arenaView.setEditable(() -> !player.open());
         sensorPanel = new SensorPanel(feed::selected, feed::state);
         sensorColumn = new SensorColumn(sensorPanel, feed::selectedVision);
-        controllers = new ControllerChooser(frame, console, status, choices, robotControllers, robotSelection, runs::discard);
+        controllers = new ControllerChooser(frame, console, status, choices, robotControllers,
+                robotSelection, runs::discard);
         runs.checks(controllers::readyForNewRun, controllers::staleNote);
         files = new ArenaFileActions(frame, model, console, status, choices, prefs, () -> {
             runs.discard();
@@ -103,17 +104,22 @@ public final class MainWindow {
             commands.refresh();
             frame.setTitle(title());
         });
-        robotEditing = new org.kheperasim.sim.gui.robot.RobotEditing(frame, model, robotSelection::index, runs::discard, () -> {
+        robotEditing = new org.kheperasim.sim.gui.robot.RobotEditing(frame, model, robotSelection::index,
+                runs::discard, () -> {
             runs.start();
             actions.refresh();
         }, new org.kheperasim.sim.gui.robot.RobotFiles(), org.kheperasim.sim.gui.robot.RobotFiles.bundled());
-        actions.add("editRobot", "Edit robot…", "the selected robot's type in the robot editor", null, robotEditing::editSelected);
+        actions.add("editRobot", "Edit robot…", "the selected robot's type in the robot editor", null,
+                robotEditing::editSelected);
         actions.add("openRobot", "Open robot file…", "a robot file in the robot editor", null, robotEditing::openFile);
-        actions.add("newRobot", "New robot…", "design a robot from scratch in the robot editor", null, robotEditing::newRobot);
+        actions.add("newRobot", "New robot…", "design a robot from scratch in the robot editor", null,
+                robotEditing::newRobot);
         menus = new WindowMenus(actions, runs::setSpeed);
         wireModel();
-        frame.setJMenuBar(menus.menuBar(files.recentMenu(), model, menus.viewMenu(arenaView), menus.trustToggle(choices, console)));
-        frame.setContentPane(WindowLayout.content(frame, menus.toolbar(controllers.box()), arenaView, replayBar.component(),
+        frame.setJMenuBar(menus.menuBar(files.recentMenu(), model, menus.viewMenu(arenaView),
+                menus.trustToggle(choices, console)));
+        frame.setContentPane(
+                WindowLayout.content(frame, menus.toolbar(controllers.box()), arenaView, replayBar.component(),
                 sensorColumn, plot, console, status.component(), () -> model.arena().width() / model.arena().height()));
         frame.setDefaultCloseOperation(JFrame.DO_NOTHING_ON_CLOSE);
         frame.addWindowListener(new WindowAdapter() {
@@ -129,7 +135,8 @@ public final class MainWindow {
         console.note("Loaded arena " + arena.name() + "; controller " + choices.controllerName
                 + ". Press Start (F5). Draw with the palette; File > Open recording replays a run; Help > Quick start"
                 + " gets your own controller running in 15 minutes.");
-        painter = new FramePainter(feed, player, replayBar, plot, sensorColumn, arenaView, console, status, runs, choices);
+        painter = new FramePainter(feed, player, replayBar, plot, sensorColumn, arenaView, console,
+                status, runs, choices);
         if (options.javaSource() != null) {
             controllers.compileAndUse(options.javaSource());
             actions.refresh();
@@ -142,8 +149,10 @@ public final class MainWindow {
         String own = robotControllers.describe(Integer.MAX_VALUE);
         robotControllers.clear();
         int n = arena.robots().size();
-        console.note("Opened arena " + arena.name() + " (" + n + (n == 1 ? " robot" : " robots") + "); every robot runs "
-                + choices.controllerName + (own.isEmpty() ? "" : " (the last arena's own choices, " + own + ", are dropped)"));
+        console.note("Opened arena " + arena.name() + " (" + n + (n == 1 ? " robot" : " robots")
+                + "); every robot runs "
+                + choices.controllerName
+                + (own.isEmpty() ? "" : " (the last arena's own choices, " + own + ", are dropped)"));
     }
 
     private void wireModel() {
@@ -176,7 +185,8 @@ public final class MainWindow {
 
     private String title() {
         return "Khepera simulator - " + (player.open() ? "replay of " + player.replay().source() : model.arena().name()
-                + (model.dirty() ? " *" : "") + (choices.arenaFile != null ? " (" + choices.arenaFile + ")" : " (bundled)")
+                + (model.dirty() ? " *" : "")
+                + (choices.arenaFile != null ? " (" + choices.arenaFile + ")" : " (bundled)")
                 + " - " + choices.controllerName);
     }
 
@@ -197,7 +207,8 @@ public final class MainWindow {
         gestures.setTool(t);
         menus.showTool(t);
         status.show(switch (t) {
-            case SELECT -> "Select: click or drag a box; drag to move; drag a wall's end to resize; drag a robot's handle to turn; [ ] rotate; Delete.";
+            case SELECT -> "Select: click or drag a box; drag to move; drag a wall's end to resize; drag a robot's"
+                    + " handle to turn; [ ] rotate; Delete.";
             case WALL -> "Wall: press and drag to draw a wall (snaps to the 10 mm grid and to wall ends).";
             case LIGHT -> "Light: click to place a lamp.";
             case CAP -> "Cap: click to place a bottle cap.";

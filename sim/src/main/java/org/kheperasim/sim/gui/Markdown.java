@@ -15,9 +15,10 @@ final class Markdown {
     private static final Parser PARSER = Parser.builder().extensions(EXTENSIONS).build();
     private static final HtmlRenderer RENDERER = HtmlRenderer.builder().extensions(EXTENSIONS).escapeHtml(true).build();
     /** Swing's HTML is HTML 3.2 with a little CSS: borders for tables, a tint for code. */
-    private static final String STYLE = "<style>body{font-family:sans-serif;margin:10px} pre{background:#f0f0f0;padding:4px}"
-            + " code{background:#f0f0f0} table{border-collapse:collapse} th,td{border:1px solid #c0c0c0;padding:2px 6px}"
-            + " th{background:#e8e8e8}</style>";
+    private static final String STYLE =
+            "<style>body{font-family:sans-serif;margin:10px} pre{background:#f0f0f0;padding:4px}"
+            + " code{background:#f0f0f0} table{border-collapse:collapse} th,td{border:1px solid"
+            + " #c0c0c0;padding:2px 6px} th{background:#e8e8e8}</style>";
 
     private Markdown() {
     }

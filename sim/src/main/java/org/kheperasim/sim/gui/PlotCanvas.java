@@ -161,7 +161,8 @@ final class PlotCanvas extends JComponent {
         if (!Double.isNaN(p.cursor()) && p.cursor() >= from && p.cursor() <= to) {
             double x = left + (p.cursor() - from) / (to - from) * pw;
             g.setColor(new Color(0x555555));
-            g.setStroke(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {3f, 3f}, 0f));
+            g.setStroke(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f,
+                    new float[] {3f, 3f}, 0f));
             g.draw(new Line2D.Double(x, TOP, x, TOP + ph));
         }
         if (ts.length == 0) {

@@ -58,7 +58,8 @@ final class PlotPanel extends JPanel {
 
     private final PlotCanvas canvas = new PlotCanvas();
     private final JComboBox<Quantity> quantity = new JComboBox<>(Quantity.values());
-    private final JComboBox<String> span = new JComboBox<>(new String[] {"last 10 s", "last 60 s", "last 10 min", "whole run"});
+    private final JComboBox<String> span =
+            new JComboBox<>(new String[] {"last 10 s", "last 60 s", "last 10 min", "whole run"});
     private final JToggleButton[] chosen = new JToggleButton[8];
     private RobotSeries series;
     private double now;
@@ -153,7 +154,8 @@ final class PlotPanel extends JPanel {
         }
         double[] range = range(s);
         int[] channels = channels();
-        canvas.show(new PlotCanvas.Plot(s.extract(range[0], range[1], channels, StrictMath.max(200, canvas.getWidth() * 2)),
+        canvas.show(new PlotCanvas.Plot(
+                s.extract(range[0], range[1], channels, StrictMath.max(200, canvas.getWidth() * 2)),
                 labels(channels), colours(), range[0], range[1], ((Quantity) quantity.getSelectedItem()).max,
                 ((Quantity) quantity.getSelectedItem()).unit, cursor));
     }
@@ -222,7 +224,8 @@ final class PlotPanel extends JPanel {
 
     /** @return the plot as a picture at its size on screen */
     BufferedImage image() {
-        BufferedImage img = new BufferedImage(StrictMath.max(1, canvas.getWidth()), StrictMath.max(1, canvas.getHeight()),
+        BufferedImage img = new BufferedImage(StrictMath.max(1, canvas.getWidth()),
+                StrictMath.max(1, canvas.getHeight()),
                 BufferedImage.TYPE_INT_RGB);
         Graphics2D g = img.createGraphics();
         try {

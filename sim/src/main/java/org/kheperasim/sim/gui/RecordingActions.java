@@ -47,7 +47,8 @@ final class RecordingActions {
     private Replay shown;
 
     RecordingActions(JFrame frame, EditorModel model, ConsolePanel console, StatusBar status, RunChoices choices,
-            ArenaFileActions files, RunControls runs, ServeControls serve, ReplayPlayer player, ViewFeed feed, Runnable fit) {
+            ArenaFileActions files, RunControls runs, ServeControls serve, ReplayPlayer player,
+            ViewFeed feed, Runnable fit) {
         this.frame = frame;
         this.model = model;
         this.console = console;
@@ -80,7 +81,8 @@ final class RecordingActions {
                 console.error("the recording has no run.trace: " + e.getMessage());
             }
         }
-        status.show("Recording saved in " + dir + " (replay it with File > Open recording; check it with 'verify " + dir + "')", false);
+        status.show("Recording saved in " + dir + " (replay it with File > Open recording; check it with 'verify "
+                + dir + "')", false);
     }
 
     /** Save what replays a run exactly (see {@link RunRecording}). */
@@ -126,7 +128,8 @@ final class RecordingActions {
         shown = replay;
         feed.show(player);
         replay.notes().forEach(console::note);
-        console.note(String.format(Locale.ROOT, "Replaying %s: %d robot(s), %.1f s of run, %d samples (read in %.0f ms)."
+        console.note(String.format(Locale.ROOT,
+                "Replaying %s: %d robot(s), %.1f s of run, %d samples (read in %.0f ms)."
                 + " Play, scrub the timeline, step; Close replay goes back to the arena.", path, replay.robotCount(),
                 replay.endSeconds() - replay.startSeconds(), replay.samples(), ms));
         fit.run();
@@ -139,7 +142,8 @@ final class RecordingActions {
         c.setSelectedFile(c.getCurrentDirectory().toPath().resolve("run.html").toFile());
         if (c.showSaveDialog(frame) == JFileChooser.APPROVE_OPTION) {
             Path out = c.getSelectedFile().toPath();
-            exportPage(out.getFileName().toString().contains(".") ? out : out.resolveSibling(out.getFileName() + ".html"));
+            exportPage(out.getFileName().toString().contains(".") ? out
+                    : out.resolveSibling(out.getFileName() + ".html"));
         }
     }
 
@@ -162,7 +166,8 @@ final class RecordingActions {
                 status.show("No run to export: start a run, or open a recording, first", true);
                 return false;
             }
-            String what = String.format(Locale.ROOT, "Web page saved: %s (%.0f KB, %.1f s of the run; open it in any browser)",
+            String what = String.format(Locale.ROOT,
+                    "Web page saved: %s (%.0f KB, %.1f s of the run; open it in any browser)",
                     w.file(), w.bytes() / 1024.0, w.seconds());
             console.note(what);
             status.show(what, false);
@@ -237,7 +242,8 @@ final class RecordingActions {
             choices.arenaFile = fileBefore;
             arenaBefore = null;
         }
-        console.note("Replay closed." + (model.dirty() ? " The arena " + model.arena().name() + " is back as it was, with"
+        console.note("Replay closed."
+                + (model.dirty() ? " The arena " + model.arena().name() + " is back as it was, with"
                 + " its unsaved changes." : ""));
         fit.run();
     }

@@ -102,7 +102,8 @@ final class ReplayBar {
         try {
             double span = r.endSeconds() - r.startSeconds();
             if (!timeline.getValueIsAdjusting()) { // never fight the user's drag
-                timeline.setValue(span <= 0 ? 0 : (int) StrictMath.round((player.cursor() - r.startSeconds()) / span * TICKS));
+                timeline.setValue(span <= 0 ? 0
+                        : (int) StrictMath.round((player.cursor() - r.startSeconds()) / span * TICKS));
             }
             play.setText(player.playing() ? "Pause" : "Play");
             for (int i = 0; i < ReplayPlayer.SPEEDS.length; i++) {

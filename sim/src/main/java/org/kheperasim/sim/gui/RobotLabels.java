@@ -32,7 +32,8 @@ final class RobotLabels {
                         2 * radius + 8, 2 * radius + 8));
             }
             g.setColor(new Color(0x202830));
-            g.drawString(Integer.toString(r.id()), (float) (view.sx(r.x()) + radius + 3), (float) (view.sy(r.y()) - radius));
+            g.drawString(Integer.toString(r.id()), (float) (view.sx(r.x()) + radius + 3),
+                    (float) (view.sy(r.y()) - radius));
         }
     }
 

@@ -244,9 +244,12 @@ final class RunControls implements SnapshotSource {
         String own = robotControllers.describe(arena.robots().size());
         double limit = timeLimitSeconds(arena);
         console.note("Run of " + name + (own.isEmpty() ? "" : " (" + own + ")") + " in " + arena.name()
-                + ", seed " + runSeed + (choices.settings.overrides().isEmpty() ? "" : ", settings " + choices.settings.describe())
-                + (limit > 0 ? "; it ends at " + Score.number(limit) + " s (" + (arena.assignment().timeLimitSeconds() > 0
-                        ? "the arena's time limit" : "the arena sets tasks but no time limit") + "), as 'run' ends it" : "")
+                + ", seed " + runSeed
+                + (choices.settings.overrides().isEmpty() ? "" : ", settings " + choices.settings.describe())
+                + (limit > 0 ? "; it ends at " + Score.number(limit) + " s ("
+                        + (arena.assignment().timeLimitSeconds() > 0
+                        ? "the arena's time limit" : "the arena sets tasks but no time limit")
+                                + "), as 'run' ends it" : "")
                 + "; " + session.modeLine());
         // The score is run's: the start arena's assignment over the engine's own facts (floor covered,
         // regions entered to the millisecond, caps), taken on the engine's thread at the moment shown.
@@ -296,7 +299,8 @@ final class RunControls implements SnapshotSource {
         String who = RunMessages.described(r.session());
         switch (st) {
             case RUNNING -> status.show("Running " + who + ": F6 pauses, F8 stops.", false);
-            case PAUSED -> status.show("Paused at " + at + ": F5 resumes, F7 steps " + PacedRunner.STEP_NANOS / 1_000_000
+            case PAUSED -> status.show("Paused at " + at + ": F5 resumes, F7 steps "
+                    + PacedRunner.STEP_NANOS / 1_000_000
                     + " ms, F8 stops.", false);
             case FINISHED -> {
                 String note = "The controller ended at " + at + ".";
@@ -305,7 +309,8 @@ final class RunControls implements SnapshotSource {
             }
             case TIME_UP -> {
                 String sc = score();
-                String note = String.format(Locale.ROOT, "Time is up: the arena %s gives a run %s s, and the run ended at %s%s.",
+                String note = String.format(Locale.ROOT,
+                        "Time is up: the arena %s gives a run %s s, and the run ended at %s%s.",
                         r.session().arena().name(), Score.number(timeLimitSeconds(r.session().arena())), at,
                         sc == null ? "" : ", " + sc + ", as 'run' scores it");
                 console.note(note);

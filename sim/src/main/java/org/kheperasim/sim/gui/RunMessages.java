@@ -40,7 +40,8 @@ final class RunMessages {
         if (out.isEmpty()) {
             return null;
         }
-        return String.join("; ", out) + String.format(java.util.Locale.ROOT, " (by t = %.3f s; the robot was stopped; the"
+        return String.join("; ", out)
+                + String.format(java.util.Locale.ROOT, " (by t = %.3f s; the robot was stopped; the"
                 + " console has the stack trace)", seconds);
     }
 
@@ -49,7 +50,8 @@ final class RunMessages {
         for (StackTraceElement e : t.getStackTrace()) {
             String c = e.getClassName();
             if (e.getFileName() != null && e.getLineNumber() > 0 && !c.startsWith("java.") && !c.startsWith("jdk.")
-                    && !c.startsWith("sun.") && !c.startsWith("org.kheperasim.api.") && !c.startsWith("org.kheperasim.sim.")) {
+                    && !c.startsWith("sun.") && !c.startsWith("org.kheperasim.api.")
+                    && !c.startsWith("org.kheperasim.sim.")) {
                 return e.getFileName() + ":" + e.getLineNumber();
             }
         }

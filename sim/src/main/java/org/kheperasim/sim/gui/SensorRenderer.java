@@ -51,7 +51,8 @@ public final class SensorRenderer {
      * @return the scale the drawing takes there: as large as fits, up to {@link #MAX_SCALE}
      */
     static double scale(int w, int h) {
-        return StrictMath.max(0.1, StrictMath.min(MAX_SCALE, StrictMath.min(w / (double) BASE_WIDTH, h / (double) BASE_HEIGHT)));
+        return StrictMath.max(0.1,
+                StrictMath.min(MAX_SCALE, StrictMath.min(w / (double) BASE_WIDTH, h / (double) BASE_HEIGHT)));
     }
 
     /**
@@ -76,7 +77,8 @@ public final class SensorRenderer {
         g.setRenderingHint(RenderingHints.KEY_FRACTIONALMETRICS, RenderingHints.VALUE_FRACTIONALMETRICS_ON);
         g.setColor(new Color(0xFAFAFA));
         g.fill(new Rectangle2D.Double(0, 0, w, h));
-        // The whole drawing, text included, scales with the panel: readable on a small window, larger on a large screen.
+        // The whole drawing, text included, scales with the panel: readable on a small window, larger on a large
+        // screen.
         double scale = scale(w, h);
         g.translate((w - BASE_WIDTH * scale) / 2, 0);
         g.scale(scale, scale);
@@ -139,15 +141,20 @@ public final class SensorRenderer {
         g.setColor(new Color(0x333333));
         y += icon + 16;
         caption(g, fm, gap + icon / 2, y, "arm " + (gv == null ? "-" : armText(gv)));
-        caption(g, fm, 2 * gap + 1.5 * icon, y, "fingers " + (gv == null ? "-" : gv.fingers().name().toLowerCase(Locale.ROOT)));
-        caption(g, fm, 3 * gap + 2.5 * icon, y, gv == null ? "object -" : gv.objectPresent() ? "object: yes (" + gv.resistivity() + ")" : "object: no");
+        caption(g, fm, 2 * gap + 1.5 * icon, y,
+                "fingers " + (gv == null ? "-" : gv.fingers().name().toLowerCase(Locale.ROOT)));
+        caption(g, fm, 3 * gap + 2.5 * icon, y,
+                gv == null ? "object -" : gv.objectPresent() ? "object: yes (" + gv.resistivity() + ")" : "object: no");
         y += 22;
         g.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
         g.setColor(Color.BLACK);
         if (r != null) {
-            g.drawString(String.format(Locale.ROOT, "speed   L %4d   R %4d  (units of 8 mm/s)", r.speedLeft(), r.speedRight()), 10, (float) y);
-            g.drawString(String.format(Locale.ROOT, "encoder L %7d R %7d  pulses", r.encoderLeft(), r.encoderRight()), 10, (float) y + 16);
-            g.drawString(String.format(Locale.ROOT, "pose (%.1f, %.1f) mm  %.1f deg  robot %d", r.x(), r.y(), r.headingDeg(),
+            g.drawString(String.format(Locale.ROOT, "speed   L %4d   R %4d  (units of 8 mm/s)", r.speedLeft(),
+                    r.speedRight()), 10, (float) y);
+            g.drawString(String.format(Locale.ROOT, "encoder L %7d R %7d  pulses", r.encoderLeft(), r.encoderRight()),
+                    10, (float) y + 16);
+            g.drawString(String.format(Locale.ROOT, "pose (%.1f, %.1f) mm  %.1f deg  robot %d", r.x(),
+                    r.y(), r.headingDeg(),
                     r.id()), 10, (float) y + 32);
             g.drawString("contact " + r.contact().name().toLowerCase(Locale.ROOT) + "  collisions " + r.collisions()
                     + "  " + ("running".equals(r.controller()) && runState != null ? runState : r.controller()), 10,
@@ -158,7 +165,8 @@ public final class SensorRenderer {
     }
 
     private static String armText(GripperView gv) {
-        String pos = gv.armPosition() <= GripperTurret.ARM_UP + 5 ? "up" : gv.armPosition() >= GripperTurret.ARM_DOWN - 5 ? "down" : Integer.toString(gv.armPosition());
+        String pos = gv.armPosition() <= GripperTurret.ARM_UP + 5 ? "up"
+                : gv.armPosition() >= GripperTurret.ARM_DOWN - 5 ? "down" : Integer.toString(gv.armPosition());
         return pos + (gv.armMoving() ? " (moving)" : "");
     }
 
@@ -167,7 +175,8 @@ public final class SensorRenderer {
         g.drawString(text, (float) (cx - g.getFontMetrics().stringWidth(text) / 2.0), (float) y);
     }
 
-    private static void drawReading(Graphics2D g, FontMetrics fm, double cx, double cy, int index, int prox, int light, boolean live) {
+    private static void drawReading(Graphics2D g, FontMetrics fm, double cx, double cy, int index, int prox,
+            int light, boolean live) {
         double bw = 54;
         double bh = 6;
         double x0 = cx - bw / 2;

@@ -90,7 +90,8 @@ final class ServeControls implements SnapshotSource {
             servers.forEach(ProtocolServer::close);
             servers.clear();
             world.close();
-            console.error("Cannot serve the robots: " + e.getMessage() + ". Free a loopback port or use 'khepera-sim serve --port N'.");
+            console.error("Cannot serve the robots: " + e.getMessage()
+                    + ". Free a loopback port or use 'khepera-sim serve --port N'.");
             return;
         }
         served = world;
@@ -100,9 +101,12 @@ final class ServeControls implements SnapshotSource {
             servers.get(i).addListener(ev -> console.note(who + ev.text()));
         }
         boolean one = servers.size() == 1;
-        String urls = one ? servers.get(0).url() : String.join(", ", servers.stream().map(ProtocolServer::url).toList());
-        console.note((one ? "Serving this robot at " : "Serving these " + servers.size() + " robots (robot 0, 1, ...) at ")
-                + urls + " (seed " + seed + "). Drive " + (one ? "it" : "each") + " with any Khepera client, e.g. java -jar"
+        String urls = one ? servers.get(0).url()
+                : String.join(", ", servers.stream().map(ProtocolServer::url).toList());
+        console.note((one ? "Serving this robot at "
+                : "Serving these " + servers.size() + " robots (robot 0, 1, ...) at ")
+                + urls + " (seed " + seed + "). Drive " + (one ? "it" : "each")
+                + " with any Khepera client, e.g. java -jar"
                 + " robot-link/target/khepera-link.jar run --port " + servers.get(0).url()
                 + " --controller WallFollower. Run > Stop serving ends it.");
         status.show("Serving at " + urls, false);

@@ -128,7 +128,8 @@ final class SettingsDialog {
         filter.getDocument().addDocumentListener(new DocumentListener() {
             private void update() {
                 String f = filter.getText().strip();
-                sorter.setRowFilter(f.isEmpty() ? null : RowFilter.regexFilter("(?i)" + java.util.regex.Pattern.quote(f)));
+                sorter.setRowFilter(f.isEmpty() ? null
+                        : RowFilter.regexFilter("(?i)" + java.util.regex.Pattern.quote(f)));
             }
 
             @Override
@@ -158,7 +159,8 @@ final class SettingsDialog {
         JButton saveProfile = new JButton("Save profile…");
         JButton withArena = new JButton("Save with arena");
         withArena.setEnabled(arenaFile != null);
-        withArena.setToolTipText(arenaFile == null ? "save the arena to a file first" : "writes " + SettingsFile.besideArena(arenaFile));
+        withArena.setToolTipText(arenaFile == null ? "save the arena to a file first"
+                : "writes " + SettingsFile.besideArena(arenaFile));
         ok.addActionListener(e -> {
             if (table.isEditing()) {
                 table.getCellEditor().stopCellEditing();
@@ -179,17 +181,21 @@ final class SettingsDialog {
                 try {
                     model.load(SettingsFile.load(c.getSelectedFile().toPath()));
                 } catch (RuntimeException ex) {
-                    JOptionPane.showMessageDialog(d, ex.getMessage(), "Cannot load the profile", JOptionPane.ERROR_MESSAGE);
+                    JOptionPane.showMessageDialog(d, ex.getMessage(), "Cannot load the profile",
+                            JOptionPane.ERROR_MESSAGE);
                 }
             }
         });
         saveProfile.addActionListener(e -> {
-            String name = JOptionPane.showInputDialog(d, "Profile name (saved as NAME.settings in " + SettingsFile.profiles() + "):", "worn-motors");
+            String name = JOptionPane.showInputDialog(d,
+                    "Profile name (saved as NAME.settings in " + SettingsFile.profiles() + "):", "worn-motors");
             if (name != null && !name.isBlank()) {
                 try {
-                    SettingsFile.save(model.settings(), SettingsFile.profiles().resolve(name.strip() + SettingsFile.EXTENSION));
+                    SettingsFile.save(model.settings(),
+                            SettingsFile.profiles().resolve(name.strip() + SettingsFile.EXTENSION));
                 } catch (RuntimeException ex) {
-                    JOptionPane.showMessageDialog(d, ex.getMessage(), "Cannot save the profile", JOptionPane.ERROR_MESSAGE);
+                    JOptionPane.showMessageDialog(d, ex.getMessage(), "Cannot save the profile",
+                            JOptionPane.ERROR_MESSAGE);
                 }
             }
         });

@@ -102,8 +102,10 @@ final class StatusBar {
     void update(String state, double seconds, String rtf, double fps, double[] mouse) {
         clock.setText(String.format(Locale.ROOT, "  %s   t = %.2f s   %s   %.0f fps  ",
                 state == null ? "no run" : state, seconds, "-".equals(rtf) ? "" : rtf + " real time", fps));
-        clock.setToolTipText("the run's state, its simulated time, simulated seconds per real second, frames drawn per second");
-        position.setText(Double.isNaN(mouse[0]) ? "  " : String.format(Locale.ROOT, "  (%.1f, %.1f) mm  ", mouse[0], mouse[1]));
+        clock.setToolTipText(
+                "the run's state, its simulated time, simulated seconds per real second, frames drawn per second");
+        position.setText(Double.isNaN(mouse[0]) ? "  "
+                : String.format(Locale.ROOT, "  (%.1f, %.1f) mm  ", mouse[0], mouse[1]));
         if (messageUntil != 0 && System.nanoTime() > messageUntil) {
             set(lasting, lastingRed);
             messageUntil = 0;

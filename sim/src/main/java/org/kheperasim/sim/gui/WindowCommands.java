@@ -47,20 +47,25 @@ final class WindowCommands {
      * @param setTool what choosing a tool does
      * @param view the arena view (zoom, fit)
      */
-    void build(ArenaFileActions files, RecordingActions recordings, Runnable close, java.util.function.Consumer<Tool> setTool,
+    void build(ArenaFileActions files, RecordingActions recordings, Runnable close,
+            java.util.function.Consumer<Tool> setTool,
             ArenaView view) {
         int ctrl = Toolkit.getDefaultToolkit().getMenuShortcutKeyMaskEx();
         int shift = InputEvent.SHIFT_DOWN_MASK;
         add("new", "New arena…", "a new empty arena of a chosen size", KeyEvent.VK_N, ctrl, files::newArena);
         add("open", "Open arena…", "open an .arena file or a WSU world", KeyEvent.VK_O, ctrl, files::open);
         add("save", "Save", "save the arena (atomically)", KeyEvent.VK_S, ctrl, () -> files.save(false));
-        add("saveAs", "Save as…", "save the arena under a new name", KeyEvent.VK_S, ctrl | shift, () -> files.save(true));
+        add("saveAs", "Save as…", "save the arena under a new name", KeyEvent.VK_S, ctrl | shift,
+                () -> files.save(true));
         add("openRecording", "Open recording…", "replay a run recording folder, a trace or a real robot's robot-link"
                 + " recording: play, pause, scrub, step", KeyEvent.VK_R, ctrl | shift, recordings::openRecording);
-        add("saveRecording", "Save run recording…", "save what replays this run exactly: start arena, edits, seed, trace",
+        add("saveRecording", "Save run recording…",
+                "save what replays this run exactly: start arena, edits, seed, trace",
                 0, 0, recordings::saveRecording);
-        add("exportPage", "Export run as web page…", "write the run shown (live or replayed) as one web page that replays"
-                + " it in any browser: no Java, server or network needed (docs/web-replay.md)", 0, 0, recordings::exportPage);
+        add("exportPage", "Export run as web page…",
+                "write the run shown (live or replayed) as one web page that replays"
+                + " it in any browser: no Java, server or network needed (docs/web-replay.md)", 0, 0,
+                recordings::exportPage);
         add("closeReplay", "Close replay", "back to the arena and its runs", 0, 0, recordings::closeReplay);
         add("close", "Close window", "close the simulator", KeyEvent.VK_Q, ctrl, close);
         add("undo", "Undo", "undo the last edit", KeyEvent.VK_Z, ctrl, model::undo);
@@ -68,14 +73,17 @@ final class WindowCommands {
         add("delete", "Delete", "delete the selected walls, lamps and caps", 0, 0, model::deleteSelection);
         add("selectAll", "Select all", "select everything", KeyEvent.VK_A, ctrl,
                 () -> model.select(ArenaEdits.inside(model.arena(), -1e9, -1e9, 1e9, 1e9)));
-        add("rotateLeft", "Rotate left 15°", "rotate the selection counter-clockwise", 0, 0, () -> model.rotateSelection(15));
-        add("rotateRight", "Rotate right 15°", "rotate the selection clockwise", 0, 0, () -> model.rotateSelection(-15));
+        add("rotateLeft", "Rotate left 15°", "rotate the selection counter-clockwise", 0, 0,
+                () -> model.rotateSelection(15));
+        add("rotateRight", "Rotate right 15°", "rotate the selection clockwise", 0, 0,
+                () -> model.rotateSelection(-15));
         add("start", "Start", "start or resume the run", KeyEvent.VK_F5, 0, runs::start);
         add("pause", "Pause", "pause the run", KeyEvent.VK_F6, 0, runs::pause);
         add("step", "Step", "run " + PacedRunner.STEP_NANOS / 1_000_000 + " ms of simulated time, then pause",
                 KeyEvent.VK_F7, 0, runs::step);
         add("stop", "Stop", "stop the run (the robot stops where it is)", KeyEvent.VK_F8, 0, runs::stop);
-        add("reset", "Reset", "back to the start poses, reloading the controller class", KeyEvent.VK_F9, 0, runs::reset);
+        add("reset", "Reset", "back to the start poses, reloading the controller class", KeyEvent.VK_F9,
+                0, runs::reset);
         add("serve", "Serve this robot", "let a Khepera client (robot-link, a C program, MATLAB) drive a simulated"
                 + " robot in this arena over TCP with the robot's own protocol", 0, 0, () -> {
                     if (!serve.serving()) {
@@ -86,9 +94,11 @@ final class WindowCommands {
         add("loadClasses", "Load compiled classes…", "add a folder or jar with your compiled controller", 0, 0,
                 controllers::loadClasses);
         add("openJava", "Open .java…", "compile a controller source file and use it", 0, 0, controllers::openJava);
-        add("assignRobot", "Give the selected robot this controller", "from the next Start the selected robot (click it)"
+        add("assignRobot", "Give the selected robot this controller",
+                "from the next Start the selected robot (click it)"
                 + " runs the controller chosen now; the others keep theirs", 0, 0, controllers::assignSelected);
-        add("clearRobots", "Every robot runs the chosen controller", "forget the controllers given to single robots", 0, 0,
+        add("clearRobots", "Every robot runs the chosen controller",
+                "forget the controllers given to single robots", 0, 0,
                 controllers::clearAssignments);
         add("reload", "Reload controller", "recompile the .java (if one was opened) and reset, picking up your changes",
                 KeyEvent.VK_F10, 0, controllers::reload);
@@ -187,7 +197,8 @@ final class WindowCommands {
         SettingsDialog.Result r = SettingsDialog.show(frame, choices.settings, choices.arenaFile);
         if (r != null) {
             choices.settings = r.settings();
-            console.note("Settings: " + choices.settings.describe() + (runs.active() ? " (they apply from the next Reset or Start)" : ""));
+            console.note("Settings: " + choices.settings.describe()
+                    + (runs.active() ? " (they apply from the next Reset or Start)" : ""));
         }
     }
 

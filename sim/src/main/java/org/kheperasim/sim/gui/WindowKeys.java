@@ -40,7 +40,8 @@ final class WindowKeys implements KeyEventDispatcher {
      * @param letters letter keys (a VK code, pressed with or without Shift) and their actions
      * @return the dispatcher, to {@link #uninstall()} when the window closes
      */
-    static WindowKeys install(Window window, Map<Integer, Action> keys, Action startPause, Map<Integer, Action> letters) {
+    static WindowKeys install(Window window, Map<Integer, Action> keys, Action startPause,
+            Map<Integer, Action> letters) {
         WindowKeys k = new WindowKeys(window, keys, startPause, letters);
         KeyboardFocusManager.getCurrentKeyboardFocusManager().addKeyEventDispatcher(k);
         return k;
@@ -82,7 +83,8 @@ final class WindowKeys implements KeyEventDispatcher {
         if (mods != 0 || typing(e.getComponent())) {
             return false;
         }
-        Action a = e.getID() == KeyEvent.KEY_TYPED ? letters.get(KeyEvent.getExtendedKeyCodeForChar(Character.toUpperCase(e.getKeyChar())))
+        Action a = e.getID() == KeyEvent.KEY_TYPED
+                ? letters.get(KeyEvent.getExtendedKeyCodeForChar(Character.toUpperCase(e.getKeyChar())))
                 : letters.get(e.getKeyCode());
         if (a == null) {
             return false;

@@ -34,7 +34,8 @@ final class WindowLayout {
      * @param arenaAspect the arena's width over its height
      * @return the content pane
      */
-    static JComponent content(JFrame frame, JComponent toolbar, JComponent arena, JComponent replayBar, JComponent sensors,
+    static JComponent content(JFrame frame, JComponent toolbar, JComponent arena, JComponent replayBar,
+            JComponent sensors,
             JComponent plot, JComponent console, JComponent statusBar, DoubleSupplier arenaAspect) {
         JPanel right = new JPanel();
         right.setLayout(new SidePanelLayout(sensors, plot));

@@ -37,7 +37,8 @@ final class WindowMenus {
             // The toolbar's box is kept narrow ("fastest"); the Run > Speed menu says it in full.
             speedBox.addItem(s == PacedRunner.MAX_SPEED ? "fastest" : speedLabel(s));
         }
-        speedBox.setToolTipText("simulated seconds per real second; fastest = as fast as possible. The speed never changes"
+        speedBox.setToolTipText(
+                "simulated seconds per real second; fastest = as fast as possible. The speed never changes"
                 + " what the run computes");
         speedBox.setSelectedIndex(2);
         speedBox.setName("speed");
@@ -137,8 +138,11 @@ final class WindowMenus {
 
     /** @return Controller > Trust this controller */
     JCheckBoxMenuItem trustToggle(RunChoices choices, ConsolePanel console) {
-        JCheckBoxMenuItem trust = new JCheckBoxMenuItem("Trust this controller (your own code: run it unchecked, with files, network and its own windows)", choices.trusted);
-        trust.setToolTipText("uncontained: only for code you trust; see docs/controller-rules.md. Takes effect at the next Start.");
+        JCheckBoxMenuItem trust = new JCheckBoxMenuItem(
+                "Trust this controller (your own code: run it unchecked, with files, network and its own windows)",
+                choices.trusted);
+        trust.setToolTipText(
+                "uncontained: only for code you trust; see docs/controller-rules.md. Takes effect at the next Start.");
         trust.addActionListener(e -> {
             choices.trusted = trust.isSelected();
             console.note(choices.trusted ? "the controller will run uncontained (trusted) from the next Start"

@@ -73,7 +73,10 @@ final class ControllerClock implements SimClock.Clock, PortClock {
         return running != null && Thread.currentThread() == running.runner;
     }
 
-    /** @return {@code p}'s interrupt flag as the thread holding the turn sees it (see {@link ControllerThreads#interrupted}) */
+    /**
+     * @return {@code p}'s interrupt flag as the thread holding the turn sees it (see
+     *     {@link ControllerThreads#interrupted})
+     */
     boolean interrupted(Participant p) {
         return threads.interrupted(p);
     }

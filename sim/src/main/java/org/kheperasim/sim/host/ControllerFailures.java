@@ -3,7 +3,9 @@ package org.kheperasim.sim.host;
 import java.io.PrintWriter;
 import java.io.StringWriter;
 
-/** How a controller's failure is told to the student: which kind it is, and the part of its stack trace that is theirs. */
+/**
+ * How a controller's failure is told to the student: which kind it is, and the part of its stack trace that is theirs.
+ */
 final class ControllerFailures {
     private ControllerFailures() {
     }
@@ -13,7 +15,8 @@ final class ControllerFailures {
             + " there ('khepera-sim gui --arena ... --classpath ... --controller ...') and run it trusted: tick"
             + " Controller > Trust this controller, then Start (a controller that opens windows needs to be trusted;"
             + " --trusted is the same on the command line). To run it headless too, open the window only when"
-            + " !java.awt.GraphicsEnvironment.isHeadless(). The controller was stopped and the robot's motors set to 0.";
+            + " !java.awt.GraphicsEnvironment.isHeadless(). The controller was stopped and the robot's"
+            + " motors set to 0.";
 
     static boolean isHeadless(Throwable e) {
         for (Throwable t = e; t != null; t = t.getCause()) {
@@ -53,7 +56,8 @@ final class ControllerFailures {
      */
     static Verdict verdict(Throwable e, String who) {
         if (e instanceof OutOfMemoryError) {
-            return new Verdict(ControllerStatus.EXCEEDED_MEMORY, who + " allocated without bound: the Java heap ran out ("
+            return new Verdict(ControllerStatus.EXCEEDED_MEMORY,
+                    who + " allocated without bound: the Java heap ran out ("
                     + e.getMessage() + "); the controller was stopped and the robot's motors set to 0. Does it keep"
                     + " adding to a list or map it never empties?");
         }
@@ -77,7 +81,8 @@ final class ControllerFailures {
         try {
             return verdict(e, who);
         } catch (RuntimeException | Error unreadable) {
-            return new Verdict(ControllerStatus.FAILED, "threw " + unreadable(e, unreadable) + "; the robot was stopped.");
+            return new Verdict(ControllerStatus.FAILED,
+                    "threw " + unreadable(e, unreadable) + "; the robot was stopped.");
         }
     }
 
@@ -167,10 +172,10 @@ final class ControllerFailures {
         if (returnsAtOnce) {
             return String.format(java.util.Locale.ROOT,
                     "controller %s stopped making API calls at simulated time %.3f s: its doWork() returns without"
-                            + " reading a sensor, setting a motor or sleeping, and is called again at once, so no simulated"
-                            + " time can pass (an empty doWork() does this; it went on for %.1f s of real time). Give"
-                            + " doWork() its work, or end it with sleepMillis(100) to wait. The controller was stopped and"
-                            + " the robot's motors set to 0.",
+                            + " reading a sensor, setting a motor or sleeping, and is called again at once,"
+                            + " so no simulated time can pass (an empty doWork() does this; it went on for %.1f s of"
+                            + " real time). Give doWork() its work, or end it with sleepMillis(100) to wait. The"
+                            + " controller was stopped and the robot's motors set to 0.",
                     who, nowNanos / 1e9, realSeconds);
         }
         return String.format(java.util.Locale.ROOT,

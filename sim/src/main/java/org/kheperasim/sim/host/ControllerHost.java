@@ -80,7 +80,10 @@ public final class ControllerHost implements HostedController {
         }
     }
 
-    /** @return the controller's name in messages: its simple class name, with its robot's index when there are several (Name#3) */
+    /**
+     * @return the controller's name in messages: its simple class name, with its robot's index when there are several
+     *     (Name#3)
+     */
     public String name() {
         return name;
     }
@@ -300,7 +303,8 @@ public final class ControllerHost implements HostedController {
         for (Participant p : threads.all()) {
             // The controller's own thread was left behind, or has ended: past its uncaught-exception
             // handler it only unwinds its last frames, and may still look alive for a moment.
-            if (p.done || (p.index == 0 && (life.state().abandoned() || life.isOwnThreadOver() || !p.runner.isAlive()))) {
+            if (p.done || (p.index == 0
+                    && (life.state().abandoned() || life.isOwnThreadOver() || !p.runner.isAlive()))) {
                 continue;
             }
             if (!p.started || !p.runner.isAlive()) {
@@ -365,7 +369,8 @@ public final class ControllerHost implements HostedController {
         if (before < 0) {
             return false;
         }
-        long deadline = System.nanoTime() + (long) (StrictMath.min(1.0, StrictMath.max(0.05, stalledSeconds / 2)) * 1e9);
+        long deadline = System.nanoTime()
+                + (long) (StrictMath.min(1.0, StrictMath.max(0.05, stalledSeconds / 2)) * 1e9);
         while (System.nanoTime() < deadline) {
             java.util.concurrent.locks.LockSupport.parkNanos(2_000_000L);
             if (Controllers.doWorkRounds(controller) != before) {
@@ -375,7 +380,10 @@ public final class ControllerHost implements HostedController {
         return false;
     }
 
-    /** The run is being stopped while this controller holds the turn without progress: it unwinds at its next loop or call. */
+    /**
+     * The run is being stopped while this controller holds the turn without progress: it unwinds at its next loop or
+     * call.
+     */
     void stopSoon() {
         // Its own thread calls its killControl() when it sees the stop, at its next loop or call; asked
         // again (every watch period while it makes no progress), it is not asked twice.
@@ -406,7 +414,8 @@ public final class ControllerHost implements HostedController {
             if (e instanceof OutOfMemoryError) {
                 HeapWatch.ranOut(); // before the message is made
             }
-            ControllerFailures.Verdict v = ControllerFailures.verdictOrUnreadable(e, "controller " + name + " (" + type.getName() + ")");
+            ControllerFailures.Verdict v =
+                    ControllerFailures.verdictOrUnreadable(e, "controller " + name + " (" + type.getName() + ")");
             if (v.message() != null) {
                 life.failedWith(e);
                 say(ConsoleLine.Kind.ERROR, v.message());

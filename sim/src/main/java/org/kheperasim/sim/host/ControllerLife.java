@@ -97,7 +97,8 @@ final class ControllerLife {
             return s;
         }
         return switch (e) {
-            case START -> s.phase() == Phase.NOT_STARTED ? new State(Phase.RUNNING, null, ControllerStatus.RUNNING, false) : s;
+            case START -> s.phase() == Phase.NOT_STARTED
+                    ? new State(Phase.RUNNING, null, ControllerStatus.RUNNING, false) : s;
             // Before it ever ran there is nothing to unwind.
             case STOP -> switch (s.phase()) {
                 case NOT_STARTED -> s.ended(ControllerStatus.STOPPED, false);
@@ -260,7 +261,9 @@ final class ControllerLife {
         killPending = true;
     }
 
-    /** @return true once after {@link #wantKill}: the caller, the controller's own thread, calls {@code killControl()} */
+    /**
+     * @return true once after {@link #wantKill}: the caller, the controller's own thread, calls {@code killControl()}
+     */
     synchronized boolean takeKill() {
         boolean k = killPending;
         killPending = false;
@@ -280,7 +283,8 @@ final class ControllerLife {
         try {
             failure = ReportedFailure.of(e);
         } catch (VirtualMachineError full) {
-            // No room for the copy (the heap just ran out): a JDK throwable is kept as it is, its methods are the JDK's.
+            // No room for the copy (the heap just ran out): a JDK throwable is kept as it is, its methods are the
+            // JDK's.
             failure = e.getClass().getClassLoader() == null ? e : null;
         }
     }

@@ -98,7 +98,8 @@ public final class ControllerOutput {
         private final boolean error;
         private final ThreadLocal<ByteArrayOutputStream> pending = ThreadLocal.withInitial(ByteArrayOutputStream::new);
         /** Threads with part of a line pending: while there is none, a whole line needs no look at its thread's. */
-        private final java.util.concurrent.atomic.AtomicInteger partial = new java.util.concurrent.atomic.AtomicInteger();
+        private final java.util.concurrent.atomic.AtomicInteger partial =
+                new java.util.concurrent.atomic.AtomicInteger();
 
         LineRouter(boolean error) {
             this.error = error;

@@ -73,7 +73,10 @@ final class ControllerThreads {
         running = p;
     }
 
-    /** @return {@code p}'s interrupt flag as the thread holding the turn may see it: the same however the threads were scheduled */
+    /**
+     * @return {@code p}'s interrupt flag as the thread holding the turn may see it: the same however the threads were
+     *     scheduled
+     */
     boolean interrupted(Participant p) {
         return p == running || p.done ? p.runner.isInterrupted() : p.interruptPending;
     }

@@ -41,7 +41,8 @@ final class CpuAffinity {
     /** {@code cpu_set_t}: 1,024 bits, as unsigned longs (so the bits are right on either byte order). */
     private static final int MASK_LONGS = 16;
     /** Set once {@link #prepare} has started the loading: later runs find it done or under way. */
-    private static final java.util.concurrent.atomic.AtomicBoolean PREPARED = new java.util.concurrent.atomic.AtomicBoolean();
+    private static final java.util.concurrent.atomic.AtomicBoolean PREPARED =
+            new java.util.concurrent.atomic.AtomicBoolean();
 
     private CpuAffinity() {
     }
@@ -188,7 +189,10 @@ final class CpuAffinity {
         return -1;
     }
 
-    /** The core's lock file, locked; a claim without a file where none can be written; null when another process holds it. */
+    /**
+     * The core's lock file, locked; a claim without a file where none can be written; null when another process holds
+     * it.
+     */
     private static Claim lock(int cpu) {
         String user = System.getProperty("user.name", "user").replaceAll("[^A-Za-z0-9._-]", "_");
         Path dir = Path.of("/dev/shm");

@@ -15,7 +15,9 @@ public record HostOptions(long hangTimeoutNanos, int jitterMaxMicros, int engine
     /** The system property that sets the default of {@link #engineThreads()}. */
     public static final String ENGINE_THREADS_PROPERTY = "kheperasim.engineThreads";
 
-    /** Defaults: a controller is hung after 5 s of real time without an API call; no jitter; the default engine threads. */
+    /**
+     * Defaults: a controller is hung after 5 s of real time without an API call; no jitter; the default engine threads.
+     */
     public static HostOptions defaults() {
         return new HostOptions(TimeUnit.SECONDS.toNanos(5), 0, 0);
     }

@@ -4,7 +4,10 @@ import org.kheperasim.sim.engine.RobotDriver;
 
 /** A robot's controller as the run sees it, whichever way it runs: in a thread of its own, or stepped inline. */
 public interface HostedController extends RobotDriver {
-    /** @return the controller's name in messages: its simple class name, with its robot's index when there are several (Name#3) */
+    /**
+     * @return the controller's name in messages: its simple class name, with its robot's index when there are several
+     *     (Name#3)
+     */
     String name();
 
     /** @return the controller class */

@@ -76,7 +76,8 @@ final class Participant {
      */
     void start() {
         Thread r = runner;
-        if (r != thread && (interruptPending || !ThreadRunners.overrides(thread.getClass()) && thread.isInterrupted())) {
+        if (r != thread && (interruptPending
+                || !ThreadRunners.overrides(thread.getClass()) && thread.isInterrupted())) {
             r.interrupt();
         }
         started = true;

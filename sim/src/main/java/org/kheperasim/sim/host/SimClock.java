@@ -184,7 +184,9 @@ public final class SimClock {
         }
     }
 
-    /** Threads whose construction of a controller overran (see {@link ConstructionWatch}): their next checkpoint throws. */
+    /**
+     * Threads whose construction of a controller overran (see {@link ConstructionWatch}): their next checkpoint throws.
+     */
     private static final java.util.Set<Thread> STOP_CONSTRUCTING = java.util.concurrent.ConcurrentHashMap.newKeySet();
 
     /** The construction of a controller on {@code thread} overran: stop it at its next checkpoint. */

@@ -22,7 +22,10 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
     private final Class<?> type;
     private final String name;
     private final ConsoleSink console;
-    /** The controller; let go (null) once it has been stopped for filling the heap, so that what it holds can be collected. */
+    /**
+     * The controller; let go (null) once it has been stopped for filling the heap, so that what it holds can be
+     * collected.
+     */
     private StepController controller;
     /** What runs now, for messages. */
     private volatile Part part = Part.STEP;
@@ -146,8 +149,8 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
             String full = (++steps & 15) == 0 ? HeapWatch.pressed() : null;
             if (full != null) {
                 say(ConsoleLine.Kind.ERROR, "controller " + name + " allocated without bound (" + full + "); the"
-                        + " controller was stopped and the robot's motors set to 0. Does it keep adding to a list or map"
-                        + " it never empties?");
+                        + " controller was stopped and the robot's motors set to 0. Does it keep adding"
+                        + " to a list or map it never empties?");
                 end(ControllerStatus.EXCEEDED_MEMORY);
             }
         } catch (ControllerStoppedError e) {
@@ -161,7 +164,8 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
             end(ControllerStatus.EXCEEDED_MEMORY);
         } catch (RuntimeException | Error e) {
             life.failedWith(e);
-            say(ConsoleLine.Kind.ERROR, "threw " + e + " in " + part + "; the robot was stopped.\n" + ControllerFailures.studentTrace(e));
+            say(ConsoleLine.Kind.ERROR,
+                    "threw " + e + " in " + part + "; the robot was stopped.\n" + ControllerFailures.studentTrace(e));
             end(ControllerStatus.FAILED);
         } finally {
             stepRunning = NOT_STEPPING;
@@ -195,8 +199,9 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
         if (nowNanos - started > hangTimeoutNanos) {
             // Told before the step is stopped, so the message comes before the run's end.
             say(ConsoleLine.Kind.ERROR, String.format(java.util.Locale.ROOT, "controller %s (%s): %s did not return"
-                    + " for %.1f s of real time at simulated time %.3f s; a step must read the sensors, set the motors and"
-                    + " return (no loops that wait). The controller was stopped and the robot's motors set to 0.",
+                    + " for %.1f s of real time at simulated time %.3f s; a step must read the sensors, set"
+                    + " the motors and return (no loops that wait). The controller was stopped and the robot's"
+                    + " motors set to 0.",
                     name, type.getName(), part, (nowNanos - started) / 1e9, now / 1e9));
             return life.on(ControllerLife.Event.FAULT, ControllerStatus.HUNG);
         }
@@ -236,7 +241,9 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
         life.ownThreadOver();
     }
 
-    /** The run is over: the controller stops where it is (as a thread-style one does at its next call; no cleanup runs). */
+    /**
+     * The run is over: the controller stops where it is (as a thread-style one does at its next call; no cleanup runs).
+     */
     void stop() {
         if (life.state().phase() == ControllerLife.Phase.NOT_STARTED) {
             life.on(ControllerLife.Event.STOP);
@@ -259,7 +266,8 @@ public final class StepHost implements HostedController, PortClock, StepWatchdog
         }
         if (!stepping) {
             throw new IllegalStateException("the robot API of step controller " + name + " was called outside step()"
-                    + " (from thread '" + Thread.currentThread().getName() + "'); use it only in setup(), step() and cleanup()");
+                    + " (from thread '" + Thread.currentThread().getName()
+                    + "'); use it only in setup(), step() and cleanup()");
         }
         checkpoint();
     }

@@ -18,11 +18,14 @@ import java.util.WeakHashMap;
 final class StepWatchdog {
     /** Something the watchdog looks at. */
     interface Watched {
-        /** @param nowNanos {@link System#nanoTime()} now @return true when it was found overdue (and is being stopped) */
+        /**
+         * @param nowNanos {@link System#nanoTime()} now @return true when it was found overdue (and is being stopped)
+         */
         boolean overdue(long nowNanos);
     }
 
-    private static final Set<Watched> RUNNING = Collections.synchronizedSet(Collections.newSetFromMap(new WeakHashMap<>()));
+    private static final Set<Watched> RUNNING =
+            Collections.synchronizedSet(Collections.newSetFromMap(new WeakHashMap<>()));
     private static final long PERIOD_MILLIS = 100;
     private static Thread watcher;
 

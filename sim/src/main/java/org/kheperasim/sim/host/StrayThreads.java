@@ -84,7 +84,8 @@ final class StrayThreads {
                     return;
                 }
                 if (s.runner().isAlive()) {
-                    host.say(ConsoleLine.Kind.ERROR, "a thread the controller started (" + s.object().getName() + ") did not end"
+                    host.say(ConsoleLine.Kind.ERROR,
+                            "a thread the controller started (" + s.object().getName() + ") did not end"
                             + " with the run; it was left behind");
                 }
             }

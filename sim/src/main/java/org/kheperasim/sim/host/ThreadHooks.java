@@ -79,7 +79,8 @@ public final class ThreadHooks {
         if (ThreadRunners.started(thread)) {
             throw new IllegalThreadStateException("thread '" + thread.getName() + "' was already started");
         }
-        ThreadRunners.strayRunner(thread, true, (t, e) -> thread.getUncaughtExceptionHandler().uncaughtException(thread, e))
+        ThreadRunners.strayRunner(thread, true,
+                (t, e) -> thread.getUncaughtExceptionHandler().uncaughtException(thread, e))
                 .start();
     }
 
@@ -116,7 +117,9 @@ public final class ThreadHooks {
         }
     }
 
-    /** Replaces {@link Thread#isInterrupted()}: for a thread of the controller, the flag of the thread running its code. */
+    /**
+     * Replaces {@link Thread#isInterrupted()}: for a thread of the controller, the flag of the thread running its code.
+     */
     public static boolean isInterrupted(Thread thread) {
         ControllerClock c = onTurn();
         Participant p = c == null ? null : c.participant(thread);

@@ -13,8 +13,8 @@ import java.lang.reflect.Method;
  * the turn to each other. Between platform threads each hand-over wakes a parked thread through
  * the operating system: 2 to 4 µs on a 2-core virtual machine when the run's threads keep to one
  * core ({@link CpuAffinity}, Linux), 20 to 60 µs when the woken thread's idle core must be woken
- * too; between virtual threads it is a switch on the same carrier (under 1 µs). From Java 24 on a virtual thread that waits inside
- * {@code synchronized} code no longer holds its carrier (JEP 491), so student code that sleeps in a
+ * too; between virtual threads it is a switch on the same carrier (under 1 µs). From Java 24 on a virtual thread that
+ * waits inside {@code synchronized} code no longer holds its carrier (JEP 491), so student code that sleeps in a
  * synchronized method is as safe there as on a platform thread; before 24 it is not, and the
  * option is ignored.
  *
@@ -227,7 +227,8 @@ final class ThreadRunners {
                     Method base = c.getDeclaredMethod(m.getName(), m.getParameterTypes());
                     int mod = base.getModifiers();
                     return !java.lang.reflect.Modifier.isFinal(mod) && !java.lang.reflect.Modifier.isStatic(mod)
-                            && (java.lang.reflect.Modifier.isPublic(mod) || java.lang.reflect.Modifier.isProtected(mod));
+                            && (java.lang.reflect.Modifier.isPublic(mod)
+                                    || java.lang.reflect.Modifier.isProtected(mod));
                 } catch (NoSuchMethodException e) {
                     // not declared there; look in its superclass
                 }
@@ -255,7 +256,9 @@ final class ThreadRunners {
         return overrides(t.getClass()) ? of(t) != t || t.isAlive() : t.getState() != Thread.State.NEW;
     }
 
-    /** @return the {@code Thread} object whose code {@code running} runs: the object of a {@link Runner}, else itself */
+    /**
+     * @return the {@code Thread} object whose code {@code running} runs: the object of a {@link Runner}, else itself
+     */
     static Thread objectOf(Thread running) {
         return running instanceof Runner r ? r.object : running;
     }

@@ -23,7 +23,8 @@ final class Turn {
     /** Threads may spin while they leave a core for the holder: cores − 1 at most. */
     private static final int MAX_SPINNERS = Runtime.getRuntime().availableProcessors() - 1;
     /** Threads spinning now, across every run in this JVM. */
-    private static final java.util.concurrent.atomic.AtomicInteger SPINNERS = new java.util.concurrent.atomic.AtomicInteger();
+    private static final java.util.concurrent.atomic.AtomicInteger SPINNERS =
+            new java.util.concurrent.atomic.AtomicInteger();
 
     /** One thread that takes turns, and whether it is parked waiting for one. */
     static final class Seat {

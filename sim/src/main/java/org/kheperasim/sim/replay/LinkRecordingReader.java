@@ -52,7 +52,8 @@ final class LinkRecordingReader {
             }
             String[] f = line.split(" +");
             if (f.length != COLUMNS) {
-                throw new TraceFormatException(source, i + 1, "a recording line has " + COLUMNS + " columns (t_s, prox0..7,"
+                throw new TraceFormatException(source, i + 1,
+                        "a recording line has " + COLUMNS + " columns (t_s, prox0..7,"
                         + " light0..7, posL posR speedL speedR); this one has " + f.length);
             }
             try {
@@ -78,7 +79,8 @@ final class LinkRecordingReader {
                 first = false;
                 prevL = posL;
                 prevR = posR;
-                series.add(t, x, y, StrictMath.toDegrees(heading), ch, Contact.NONE, GripperTurret.ARM_UP, GripperState.OPEN,
+                series.add(t, x, y, StrictMath.toDegrees(heading), ch, Contact.NONE, GripperTurret.ARM_UP,
+                        GripperState.OPEN,
                         false, -1);
             } catch (IllegalArgumentException e) {
                 throw new TraceFormatException(source, i + 1, "cannot read this line: " + e.getMessage()
@@ -86,7 +88,8 @@ final class LinkRecordingReader {
             }
         }
         if (series.size() == 0) {
-            throw new TraceFormatException(source, 0, "the recording has no sample (the run ended before its first poll)");
+            throw new TraceFormatException(source, 0,
+                    "the recording has no sample (the run ended before its first poll)");
         }
         return series;
     }

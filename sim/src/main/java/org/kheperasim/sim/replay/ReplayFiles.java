@@ -16,7 +16,8 @@ import org.kheperasim.sim.trace.TraceFormatException;
  * Opens what can be replayed, recognised by its content: a run recording folder (the window's
  * "Save run recording": {@code start.arena}, {@code run.edits}, {@code run.trace}), a trace file
  * ({@code run --trace}; its arena is the {@code start.arena} or the arena file of the same name
- * beside it, or the bundled arena it names), or a robot-link recording of a real robot (drawn in an empty 4 × 4 ft arena).
+ * beside it, or the bundled arena it names), or a robot-link recording of a real robot (drawn in an empty 4 × 4 ft
+ * arena).
  */
 public final class ReplayFiles {
     /**
@@ -74,7 +75,8 @@ public final class ReplayFiles {
         if (!Files.isRegularFile(start) || !Files.isRegularFile(trace)) {
             throw new TraceFormatException(dir.toString(), 0, "a run recording folder holds start.arena and run.trace;"
                     + (Files.isRegularFile(start) ? " run.trace is missing (recordings saved before this version have"
-                    + " none: replay them with 'run' as replay.txt says, adding --trace run.trace)" : " start.arena is missing"));
+                    + " none: replay them with 'run' as replay.txt says, adding --trace"
+                    + " run.trace)" : " start.arena is missing"));
         }
         Arena arena = ArenaFormat.load(start);
         Path editsFile = dir.resolve("run.edits");
@@ -83,7 +85,10 @@ public final class ReplayFiles {
         return new Replay(Replay.Kind.RECORDING, dir.toString(), arena, edits, r.robots(), r.caps(), notes);
     }
 
-    /** The arena of a bare trace: an arena file beside it ({@link #arenaBeside}), else the bundled arena its header names. */
+    /**
+     * The arena of a bare trace: an arena file beside it ({@link #arenaBeside}), else the bundled arena its header
+     * names.
+     */
     private static Arena traceArena(Path trace, String text, List<String> notes) {
         String name = null;
         String sha = null;
@@ -145,7 +150,10 @@ public final class ReplayFiles {
     public record Beside(Path file, Arena arena) {
     }
 
-    /** @return {@code file} and its arena when it is a readable arena whose SHA-256 is {@code sha256} (any, when null), else null */
+    /**
+     * @return {@code file} and its arena when it is a readable arena whose SHA-256 is {@code sha256} (any, when null),
+     *     else null
+     */
     private static Beside recorded(Path file, String sha256) {
         if (!Files.isRegularFile(file)) {
             return null;

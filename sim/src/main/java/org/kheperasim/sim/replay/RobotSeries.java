@@ -64,7 +64,8 @@ public final class RobotSeries {
         ch[ENCODER] = r.encoderLeft();
         ch[ENCODER + 1] = r.encoderRight();
         GripperView g = r.gripper();
-        add(t, r.x(), r.y(), r.headingDeg(), ch, r.contact(), g.armPosition(), g.fingers(), g.objectPresent(), g.heldCap());
+        add(t, r.x(), r.y(), r.headingDeg(), ch, r.contact(), g.armPosition(), g.fingers(),
+                g.objectPresent(), g.heldCap());
     }
 
     /**
@@ -82,7 +83,8 @@ public final class RobotSeries {
     public synchronized void add(double t, double x, double y, double headingDeg, int[] channels, Contact contact,
             int arm, GripperState fingers, boolean object, int heldCap) {
         if (size > 0 && t < times[size - 1]) {
-            throw new IllegalArgumentException("sample at " + t + " s comes before the last one at " + times[size - 1] + " s");
+            throw new IllegalArgumentException("sample at " + t + " s comes before the last one at "
+                    + times[size - 1] + " s");
         }
         if (size == times.length) {
             int n = size * 2;
@@ -148,8 +150,10 @@ public final class RobotSeries {
         long s = states[k];
         GripperView g = new GripperView((int) (s >> 8 & 0xFF), false, FINGERS[(int) (s >> 4 & 0x7)], (s >> 7 & 1) == 1,
                 0, (int) (s >> 16) - 1);
-        return new RobotView(id, name, xs[k], ys[k], headings[k], values[k * CHANNELS + SPEED], values[k * CHANNELS + SPEED + 1],
-                values[k * CHANNELS + ENCODER], values[k * CHANNELS + ENCODER + 1], CONTACTS[(int) (s & 0xF)], prox, light,
+        return new RobotView(id, name, xs[k], ys[k], headings[k], values[k * CHANNELS + SPEED],
+                values[k * CHANNELS + SPEED + 1],
+                values[k * CHANNELS + ENCODER], values[k * CHANNELS + ENCODER + 1],
+                CONTACTS[(int) (s & 0xF)], prox, light,
                 0, 0, controller, g, 0);
     }
 

@@ -38,7 +38,8 @@ final class TraceReplayReader {
         int end = text.length();
         if (!text.endsWith("\n")) {
             end = text.lastIndexOf('\n') + 1;
-            notes.add(source + " ends in the middle of a line (its writer stopped); replaying what was written in whole lines");
+            notes.add(source + " ends in the middle of a line (its writer stopped); replaying what was written"
+                    + " in whole lines");
         }
         double[] radii = new double[arena.caps().size()];
         for (int i = 0; i < radii.length; i++) {
@@ -76,7 +77,8 @@ final class TraceReplayReader {
                 }
                 int id = Integer.parseInt(f[1]);
                 if (id < 0 || id > robots.size()) {
-                    throw new TraceFormatException(source, lineNo, "robot " + id + " appears before robot " + robots.size());
+                    throw new TraceFormatException(source, lineNo,
+                            "robot " + id + " appears before robot " + robots.size());
                 }
                 if (id == robots.size()) {
                     robots.add(new RobotSeries());
@@ -95,18 +97,21 @@ final class TraceReplayReader {
                 if (e instanceof TraceFormatException t) {
                     throw t;
                 }
-                throw new TraceFormatException(source, lineNo, "cannot read '" + shorten(line) + "': " + e.getMessage());
+                throw new TraceFormatException(source, lineNo,
+                        "cannot read '" + shorten(line) + "': " + e.getMessage());
             }
         }
         if (robots.isEmpty()) {
-            throw new TraceFormatException(source, 0, "the trace has a header but no sample; the run wrote nothing to replay");
+            throw new TraceFormatException(source, 0,
+                    "the trace has a header but no sample; the run wrote nothing to replay");
         }
         double last = robots.get(0).lastTime();
         for (RobotSeries r : robots) {
             last = StrictMath.min(last, r.lastTime());
         }
         if (robots.get(0).lastTime() > last) {
-            notes.add(String.format(Locale.ROOT, "%s: replaying up to %.3f s, the last sample every robot reached", source, last));
+            notes.add(String.format(Locale.ROOT,
+                    "%s: replaying up to %.3f s, the last sample every robot reached", source, last));
         }
         return new Result(robots, caps);
     }

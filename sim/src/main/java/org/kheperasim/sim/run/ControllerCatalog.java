@@ -25,7 +25,8 @@ public final class ControllerCatalog {
      * reading the index each time (a jar entry inflated under the jar's lock) was a point where an
      * evaluation's threads waited on each other.
      */
-    private static final List<String> BUNDLED = List.copyOf(ControllerNames.bundled(ControllerCatalog.class.getClassLoader()));
+    private static final List<String> BUNDLED =
+            List.copyOf(ControllerNames.bundled(ControllerCatalog.class.getClassLoader()));
     /** The shared (stateless) controllers this catalog has served, by name: checked once per catalog (a run's). */
     private final java.util.Map<String, Class<?>> loaded = new java.util.concurrent.ConcurrentHashMap<>();
 
@@ -70,7 +71,8 @@ public final class ControllerCatalog {
         if (known != null) {
             return known;
         }
-        ControllerClassLoader loader = new ControllerClassLoader(classpath, ControllerCatalog.class.getClassLoader(), !trusted);
+        ControllerClassLoader loader =
+                new ControllerClassLoader(classpath, ControllerCatalog.class.getClassLoader(), !trusted);
         // A stateless controller's classes are defined once in the process (the JIT compiles them once).
         Class<?> shared = SharedControllers.lookUp(classpath, name, loader);
         if (shared != null) {
@@ -92,7 +94,8 @@ public final class ControllerCatalog {
                 if (both == null || e instanceof ControllerPolicyError) {
                     throw e;
                 }
-                throw new ControllerException("controller " + name + " cannot be loaded: " + e.getMessage() + "; " + both, e);
+                throw new ControllerException("controller " + name + " cannot be loaded: " + e.getMessage()
+                        + "; " + both, e);
             }
             if (SharedControllers.offer(classpath, name, type, loader)) {
                 loaded.put(name, type);
@@ -114,9 +117,10 @@ public final class ControllerCatalog {
         if (both.isEmpty()) {
             return null;
         }
-        return both.get(0) + (both.size() > 1 ? " (and " + (both.size() - 1) + " more)" : "") + " is defined by both the"
-                + " simulator and the classpath: the simulator's own class is used, the classpath's ignored; remove it from"
-                + " the classpath, or name your class otherwise";
+        return both.get(0) + (both.size() > 1 ? " (and " + (both.size() - 1) + " more)" : "")
+                + " is defined by both the"
+                + " simulator and the classpath: the simulator's own class is used, the classpath's ignored;"
+                + " remove it from the classpath, or name your class otherwise";
     }
 
     /** @return true when some class the name may mean can be found (loaded, not initialised) */

@@ -55,7 +55,9 @@ public final class ControllerCompiler {
             this(error, line, column, message, null);
         }
 
-        /** @param file the source's name (used when the problem names none) @return {@code Robot.java:12:5: error: ...} */
+        /**
+         * @param file the source's name (used when the problem names none) @return {@code Robot.java:12:5: error: ...}
+         */
         public String format(String file) {
             return (source != null ? source : file) + ":" + line + (column > 0 ? ":" + column : "") + ": "
                     + (error ? "error" : "warning") + ": " + message;
@@ -125,7 +127,8 @@ public final class ControllerCompiler {
         List<String> sourcepath = root == null ? List.of() : List.of("-sourcepath", root.toString());
         Result r = compileAll(javac, together, classes, false, sourcepath);
         if (!r.success() && together.size() > 1 && r.problems().stream()
-                .noneMatch(p -> p.error() && (p.source() == null || p.source().equals(source.getFileName().toString())))) {
+                .noneMatch(p -> p.error()
+                        && (p.source() == null || p.source().equals(source.getFileName().toString())))) {
             // Only files it does not use failed: the controller alone, with what it names from the folder.
             r = compileAll(javac, List.of(source), classes, false, sourcepath);
         }
@@ -133,7 +136,8 @@ public final class ControllerCompiler {
             Result imported = compileWithApiImport(javac, source, text, together, classes, sourcepath);
             if (imported.success()) {
                 List<Problem> problems = new ArrayList<>(List.of(new Problem(false, 1, 0, "it names the API's classes ("
-                        + String.join(", ", MissingImports.apiClasses(r.problems())) + ") without importing them: compiled as"
+                        + String.join(", ", MissingImports.apiClasses(r.problems()))
+                        + ") without importing them: compiled as"
                         + " if its first line were `" + MissingImports.API_IMPORT + "`; add that line")));
                 problems.addAll(imported.problems());
                 return new Result(true, className, classes, problems);
@@ -175,7 +179,8 @@ public final class ControllerCompiler {
     public static Result compileAll(List<Path> sources, Path classes) throws IOException {
         JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
         if (javac == null) {
-            throw new IllegalStateException("this Java runtime has no compiler (it is a JRE, not a JDK); grade with a JDK 17+");
+            throw new IllegalStateException(
+                    "this Java runtime has no compiler (it is a JRE, not a JDK); grade with a JDK 17+");
         }
         return compileAll(javac, sources, classes, true, List.of());
     }
@@ -189,7 +194,8 @@ public final class ControllerCompiler {
         options.addAll(extraOptions);
         boolean ok;
         StringWriter out = new StringWriter();
-        try (StandardJavaFileManager files = javac.getStandardFileManager(diagnostics, Locale.ROOT, StandardCharsets.UTF_8)) {
+        try (StandardJavaFileManager files = javac.getStandardFileManager(diagnostics, Locale.ROOT,
+                StandardCharsets.UTF_8)) {
             ok = javac.getTask(out, files, diagnostics, options, null,
                     files.getJavaFileObjects(sources.stream().map(Path::toFile).toArray(File[]::new))).call();
         }
@@ -200,7 +206,8 @@ public final class ControllerCompiler {
             }
             String named = d.getSource() != null ? Path.of(d.getSource().toUri()).getFileName().toString() : null;
             // Naming files only when asked, or when the problem is in another file than the first given.
-            String file = nameFiles || named != null && !named.equals(sources.get(0).getFileName().toString()) ? named : null;
+            String file = nameFiles
+                    || named != null && !named.equals(sources.get(0).getFileName().toString()) ? named : null;
             problems.add(new Problem(d.getKind() == Diagnostic.Kind.ERROR, StrictMath.max(0, d.getLineNumber()),
                     StrictMath.max(0, d.getColumnNumber()), d.getMessage(Locale.ROOT), file));
         }
@@ -214,7 +221,8 @@ public final class ControllerCompiler {
     static String classpath() {
         Set<String> entries = new LinkedHashSet<>();
         try {
-            entries.add(Path.of(Controller.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString());
+            entries.add(Path.of(
+                    Controller.class.getProtectionDomain().getCodeSource().getLocation().toURI()).toString());
         } catch (URISyntaxException | RuntimeException e) {
             // Fall back to java.class.path below.
             LOG.log(System.Logger.Level.DEBUG, "cannot locate the API classes' jar, using java.class.path: " + e);

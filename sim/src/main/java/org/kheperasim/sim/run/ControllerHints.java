@@ -54,10 +54,12 @@ final class ControllerHints {
             Path dir = entry.toAbsolutePath().getParent();
             return "classpath entry " + entry + " is a class file; give the folder the classes are in, --classpath "
                     + dir + " --controller " + file.substring(0, file.length() - ".class".length())
-                    + " (for a class in a package, the folder its package folders start in, and the name with its package)";
+                    + " (for a class in a package, the folder its package folders start in, and the name"
+                    + " with its package)";
         }
         if (!looksLikeZip(entry)) {
-            return "classpath entry " + entry + " is neither a folder nor a jar; give the folder your compiled .class files"
+            return "classpath entry " + entry
+                    + " is neither a folder nor a jar; give the folder your compiled .class files"
                     + " are in (the -d folder of javac) or a jar";
         }
         return null;
@@ -105,7 +107,8 @@ final class ControllerHints {
                 }
             }
             if (!inPackages.isEmpty()) {
-                return "did you mean " + String.join(" or ", inPackages) + "? A class in a package is named with its package:"
+                return "did you mean " + String.join(" or ", inPackages)
+                        + "? A class in a package is named with its package:"
                         + " type --controller " + inPackages.get(0);
             }
         }
@@ -113,7 +116,8 @@ final class ControllerHints {
         String best = null;
         int bestDistance = 3;
         for (String k : known) {
-            int d = StrictMath.min(distance(lower, k.toLowerCase(Locale.ROOT)), distance(lower, simple(k).toLowerCase(Locale.ROOT)));
+            int d = StrictMath.min(distance(lower, k.toLowerCase(Locale.ROOT)),
+                    distance(lower, simple(k).toLowerCase(Locale.ROOT)));
             if (d < bestDistance) {
                 bestDistance = d;
                 best = k;
@@ -140,14 +144,16 @@ final class ControllerHints {
             }
         }
         if (file.toLowerCase(Locale.ROOT).endsWith(".java") && known == null) {
-            return "'" + name + "' is a source file; a controller is named by its compiled class. Compile it first, javac -cp "
+            return "'" + name + "' is a source file; a controller is named by its compiled class. Compile it"
+                    + " first, javac -cp "
                     + JAR + " -d out " + name + ", then type --classpath out --controller " + cls
                     + " (in the window, Controller > Open .java compiles it for you)";
         }
         if (known != null) {
             return "a controller is named by its class, not by a file: type --controller " + known;
         }
-        return "a controller is named by its class, not by a file: type " + (dir == null ? "" : "--classpath " + dir + " ")
+        return "a controller is named by its class, not by a file: type "
+                + (dir == null ? "" : "--classpath " + dir + " ")
                 + "--controller " + cls + " (with its package, if it has one)";
     }
 
@@ -185,9 +191,13 @@ final class ControllerHints {
         return new ArrayList<>(out);
     }
 
-    /** @param path a class file's path in a folder or jar, with / @return its class name, or null for inner classes and others */
+    /**
+     * @param path a class file's path in a folder or jar, with / @return its class name, or null for inner classes and
+     *     others
+     */
     private static String className(String path) {
-        if (!path.endsWith(".class") || path.contains("$") || path.startsWith("META-INF/") || path.endsWith("module-info.class")
+        if (!path.endsWith(".class") || path.contains("$") || path.startsWith("META-INF/")
+                || path.endsWith("module-info.class")
                 || path.endsWith("package-info.class")) {
             return null;
         }

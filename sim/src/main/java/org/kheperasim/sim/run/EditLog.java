@@ -107,7 +107,8 @@ public final class EditLog {
             long t = edits.get(i).timeNanos();
             if (t > endNanos) {
                 throw new EditLogException(source, lines.get(i), "the edit at " + seconds(t)
-                        + " comes after the end of the run at " + seconds(endNanos) + "; run at least that long (--seconds "
+                        + " comes after the end of the run at " + seconds(endNanos)
+                        + "; run at least that long (--seconds "
                         + String.format(Locale.ROOT, "%.3f", t / 1e9) + ") or remove the edit");
             }
         }

@@ -197,7 +197,9 @@ public final class PacedRunner implements AutoCloseable {
         commands.add(() -> stopRequested = true);
     }
 
-    /** Set by {@link #stop} at once: the chunk being run ends at its next tick (a looping controller is asked to stop). */
+    /**
+     * Set by {@link #stop} at once: the chunk being run ends at its next tick (a looping controller is asked to stop).
+     */
     private volatile boolean stopAsked;
 
     /**
@@ -280,7 +282,8 @@ public final class PacedRunner implements AutoCloseable {
                     continue;
                 }
                 long chunk = speed == MAX_SPEED ? fullSpeedChunk()
-                        : StrictMath.max(Engine.TICK_NANOS, (long) (CHUNK_WALL_NANOS * speed) / Engine.TICK_NANOS * Engine.TICK_NANOS);
+                        : StrictMath.max(Engine.TICK_NANOS,
+                                (long) (CHUNK_WALL_NANOS * speed) / Engine.TICK_NANOS * Engine.TICK_NANOS);
                 long target = StrictMath.min(StrictMath.min(session.timeNanos() + chunk, limitNanos),
                         StrictMath.max(endNanos, session.timeNanos()));
                 if (target <= session.timeNanos()) {

@@ -43,19 +43,23 @@ public final class RunRecording {
      * @param dir the folder to write to
      * @throws UncheckedIOException naming the folder when it cannot be written
      */
-    public static void save(RunSession session, double reachedSeconds, List<Path> classpath, Settings settings, Path dir) {
+    public static void save(RunSession session, double reachedSeconds, List<Path> classpath,
+            Settings settings, Path dir) {
         try {
             Files.createDirectories(dir);
             ArenaFormat.save(session.arena(), dir.resolve("start.arena"));
             session.edits().save(dir.resolve("run.edits"));
             SettingsFile.save(settings, dir.resolve("run.settings"));
             StringBuilder cmd = new StringBuilder("java -jar khepera-sim.jar run --arena start.arena --controller ")
-                    .append(session.controllerClass()).append(" --seed ").append(session.seed()).append(" --edits run.edits");
+                    .append(session.controllerClass()).append(" --seed ").append(session.seed())
+                    .append(" --edits run.edits");
             if (!classpath.isEmpty()) {
-                cmd.append(" --classpath ").append(quoted(String.join(File.pathSeparator, copyClasses(classpath, dir))));
+                cmd.append(" --classpath ")
+                        .append(quoted(String.join(File.pathSeparator, copyClasses(classpath, dir))));
             }
             settings.overrides().forEach((k, v) -> cmd.append(" --set ").append(k).append('=').append(v));
-            AtomicFiles.write(dir.resolve(REPLAY), "# Replays the run exactly, from this folder; add --seconds T for how long"
+            AtomicFiles.write(dir.resolve(REPLAY),
+                    "# Replays the run exactly, from this folder; add --seconds T for how long"
                     + " (the window ran to " + String.format(Locale.ROOT, "%.3f", reachedSeconds)
                     + " s) and --trace FILE for the trace:\n" + cmd + "\n");
         } catch (IOException e) {

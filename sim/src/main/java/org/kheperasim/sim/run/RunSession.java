@@ -204,7 +204,8 @@ public final class RunSession implements AutoCloseable {
                     throw e;
                 }
                 // A robot's own controller (--robot N:controller=..., or chosen in the window): say whose.
-                throw new org.kheperasim.api.spi.ControllerException("robot " + i + "'s controller: " + e.getMessage(), e);
+                throw new org.kheperasim.api.spi.ControllerException("robot " + i + "'s controller: "
+                        + e.getMessage(), e);
             }
         }
         return types;
@@ -246,7 +247,8 @@ public final class RunSession implements AutoCloseable {
         if (setups.stream().distinct().count() > 1) {
             // Robots with controllers or settings of their own: each is named (one robot's run keeps the old header).
             for (int i = 0; i < setups.size(); i++) {
-                header.put("robot-" + i, hosts.get(i).type().getName() + " settings " + setups.get(i).settings().describe());
+                header.put("robot-" + i,
+                        hosts.get(i).type().getName() + " settings " + setups.get(i).settings().describe());
             }
         }
         trace = new TraceWriter(out, header);
@@ -369,10 +371,13 @@ public final class RunSession implements AutoCloseable {
     public String modeLine() {
         String mode = mode();
         return switch (mode) {
-            case SimRobot.TETHERED -> "mode tethered: the controller runs on the host, as robot-link runs it; it sees the"
-                    + " values of the serial link's poll cycle (" + settings.raw("link.baud") + " baud) and its commands act"
+            case SimRobot.TETHERED ->
+                    "mode tethered: the controller runs on the host, as robot-link runs it; it sees the"
+                    + " values of the serial link's poll cycle (" + settings.raw("link.baud")
+                    + " baud) and its commands act"
                     + " after their wire time";
-            case SimRobot.ON_BOARD_STEPS, SimRobot.ON_BOARD -> "mode " + mode + ": the controller runs on the robot's own"
+            case SimRobot.ON_BOARD_STEPS, SimRobot.ON_BOARD ->
+                    "mode " + mode + ": the controller runs on the robot's own"
                     + " processor; it reads the latest 20 ms sensor scan and its commands act at once (no serial link)";
             default -> "mode, robot by robot: " + mode + " (tethered: through the serial link; onboard: on the robot,"
                     + " reading the latest 20 ms scan)";
@@ -440,7 +445,10 @@ public final class RunSession implements AutoCloseable {
         return hosts.isEmpty() ? ControllerStatus.NOT_STARTED : hosts.get(0).status();
     }
 
-    /** What a robot's controller threw or, when it failed otherwise (hung, broke a rule, ran out of heap), why; null when fine. */
+    /**
+     * What a robot's controller threw or, when it failed otherwise (hung, broke a rule, ran out of heap), why; null
+     * when fine.
+     */
     private static String failure(HostedController h) {
         if (h.failure() != null) {
             return h.failure().toString();

@@ -39,7 +39,9 @@ public final class SettingsFile {
 
     /** @param settings settings @return the file's text */
     public static String write(Settings settings) {
-        StringBuilder sb = new StringBuilder("# khepera-sim settings: only what differs from the defaults; list every key with 'khepera-sim settings'\n");
+        StringBuilder sb = new StringBuilder(
+                "# khepera-sim settings: only what differs from the defaults; list every key with"
+                        + " 'khepera-sim settings'\n");
         for (Map.Entry<String, String> e : settings.overrides().entrySet()) {
             sb.append(e.getKey()).append('=').append(e.getValue()).append('\n');
         }

@@ -77,7 +77,8 @@ public final class Simulation {
             int n = arena.robots().size();
             for (int i : robotOverrides.keySet()) {
                 if (i < 0 || i >= n) {
-                    throw new IllegalArgumentException("robot " + i + " was given a controller or settings, but the arena "
+                    throw new IllegalArgumentException("robot " + i
+                            + " was given a controller or settings, but the arena "
                             + arena.name() + " has robots 0.." + (n - 1));
                 }
             }
@@ -153,7 +154,8 @@ public final class Simulation {
         /** @param seconds simulated seconds to run @return this */
         public Builder seconds(double seconds) {
             if (!(seconds > 0) || Double.isInfinite(seconds)) {
-                throw new IllegalArgumentException("--seconds " + seconds + ": give a positive number of simulated seconds");
+                throw new IllegalArgumentException("--seconds " + seconds
+                        + ": give a positive number of simulated seconds");
             }
             this.seconds = seconds;
             return this;
@@ -219,7 +221,8 @@ public final class Simulation {
          */
         public Builder listener(SnapshotListener listener, long periodMillis) {
             if (periodMillis < 1) {
-                throw new IllegalArgumentException("a listener's period of " + periodMillis + " ms must be at least 1 ms");
+                throw new IllegalArgumentException("a listener's period of " + periodMillis
+                        + " ms must be at least 1 ms");
             }
             this.listeners.add(new Subscription(listener, periodMillis * Engine.TICK_NANOS));
             return this;

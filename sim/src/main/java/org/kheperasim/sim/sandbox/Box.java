@@ -53,7 +53,8 @@ public final class Box {
         }
 
         /** A box without a folder of channels. */
-        public Spec(List<Path> readOnly, List<Path> writable, Path channel, boolean network, BoxLimits limits, int slot) {
+        public Spec(List<Path> readOnly, List<Path> writable, Path channel, boolean network,
+                BoxLimits limits, int slot) {
             this(readOnly, writable, channel, null, network, limits, slot);
         }
     }
@@ -72,7 +73,8 @@ public final class Box {
         boolean root = isRoot();
         List<String> cmd = new ArrayList<>(List.of(RuntimeFiles.onPath("bwrap").toString(),
                 "--unshare-ipc", "--unshare-pid", "--unshare-uts", "--unshare-cgroup-try", "--hostname", "khepera-box",
-                "--die-with-parent", "--new-session", "--clearenv", "--setenv", "LANG", "C.UTF-8", "--setenv", "HOME", "/tmp",
+                "--die-with-parent", "--new-session", "--clearenv", "--setenv", "LANG", "C.UTF-8",
+                "--setenv", "HOME", "/tmp",
                 "--setenv", "MALLOC_ARENA_MAX", "2", "--chdir", "/tmp"));
         if (!spec.network()) {
             cmd.add("--unshare-net");
@@ -85,7 +87,8 @@ public final class Box {
             cmd.addAll(List.of("--unshare-user", "--disable-userns"));
         }
         MountPlan plan = new MountPlan();
-        plan.first("--proc", "/proc", "--dev", "/dev", "--perms", "1777", "--size", Long.toString(spec.limits().scratchBytes()),
+        plan.first("--proc", "/proc", "--dev", "/dev", "--perms", "1777", "--size",
+                Long.toString(spec.limits().scratchBytes()),
                 "--tmpfs", "/tmp");
         rt.files().forEach(plan::readOnly);
         spec.readOnly().forEach(plan::readOnly);
@@ -104,7 +107,8 @@ public final class Box {
         cmd.add(rt.setpriv().toString());
         if (root) {
             long uid = uid(spec.slot());
-            cmd.addAll(List.of("--reuid=" + uid, "--regid=" + uid, "--clear-groups", "--inh-caps=-all", "--bounding-set=-all"));
+            cmd.addAll(List.of("--reuid=" + uid, "--regid=" + uid, "--clear-groups", "--inh-caps=-all",
+                    "--bounding-set=-all"));
         } else {
             cmd.add("--inh-caps=-all");
         }

@@ -17,7 +17,8 @@ import java.util.List;
  * @param fileBytes    the largest file the box may write, bytes (RLIMIT_FSIZE)
  * @param scratchBytes the size of the box's private scratch folder {@code /tmp}, bytes
  */
-public record BoxLimits(int processes, int openFiles, long cpuSeconds, long memoryBytes, long fileBytes, long scratchBytes) {
+public record BoxLimits(int processes, int openFiles, long cpuSeconds, long memoryBytes, long fileBytes,
+        long scratchBytes) {
     /** A JVM's own threads and the tools that start it, with room for a few controller threads each robot. */
     static final int BASE_PROCESSES = 48;
     /** The threads a warm worker JVM has besides a run's own JVM's. */
@@ -34,7 +35,8 @@ public record BoxLimits(int processes, int openFiles, long cpuSeconds, long memo
      * @return the limits
      */
     public static BoxLimits forRun(int heapMb, int robots, double wallSeconds) {
-        return new BoxLimits(BASE_PROCESSES + 4 * StrictMath.max(1, robots), 256, (long) StrictMath.ceil(2 * wallSeconds) + 30,
+        return new BoxLimits(BASE_PROCESSES + 4 * StrictMath.max(1, robots), 256,
+                (long) StrictMath.ceil(2 * wallSeconds) + 30,
                 (heapMb + 768L) * MIB, 64 * MIB, 64 * MIB);
     }
 
@@ -52,8 +54,10 @@ public record BoxLimits(int processes, int openFiles, long cpuSeconds, long memo
      */
     public static BoxLimits forWorker(int heapMb, int robots, double wallSeconds, int runs) {
         BoxLimits one = forRun(heapMb, robots, wallSeconds);
-        long cpu = (long) StrictMath.min(Long.MAX_VALUE / 4, StrictMath.ceil(2 * wallSeconds) * (double) StrictMath.max(1, runs) + 30);
-        // The worker's own two threads (its requests, its wall-clock watch): a run has as many threads to spare as in its own JVM.
+        long cpu = (long) StrictMath.min(Long.MAX_VALUE / 4,
+                StrictMath.ceil(2 * wallSeconds) * (double) StrictMath.max(1, runs) + 30);
+        // The worker's own two threads (its requests, its wall-clock watch): a run has as many threads to spare as in
+        // its own JVM.
         return new BoxLimits(one.processes() + WORKER_THREADS, one.openFiles(), cpu, one.memoryBytes(), one.fileBytes(),
                 one.scratchBytes());
     }
@@ -66,7 +70,8 @@ public record BoxLimits(int processes, int openFiles, long cpuSeconds, long memo
      * @return the limits
      */
     public static BoxLimits forCommand(int robots) {
-        return new BoxLimits(BASE_PROCESSES + 4 * StrictMath.max(1, robots), 256, 0, (1024 + 768L) * MIB, 256 * MIB, 256 * MIB);
+        return new BoxLimits(BASE_PROCESSES + 4 * StrictMath.max(1, robots), 256, 0, (1024 + 768L) * MIB,
+                256 * MIB, 256 * MIB);
     }
 
     /**
@@ -77,7 +82,8 @@ public record BoxLimits(int processes, int openFiles, long cpuSeconds, long memo
      * @return the options
      */
     static List<String> javaOptions() {
-        return List.of("-XX:CompressedClassSpaceSize=128m", "-XX:ReservedCodeCacheSize=64m", "-XX:MaxMetaspaceSize=160m",
+        return List.of("-XX:CompressedClassSpaceSize=128m", "-XX:ReservedCodeCacheSize=64m",
+                "-XX:MaxMetaspaceSize=160m",
                 "-Xss1m");
     }
 

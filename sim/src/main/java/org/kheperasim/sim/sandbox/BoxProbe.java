@@ -61,7 +61,8 @@ public final class BoxProbe {
         }
         List<String> cmd;
         try {
-            cmd = Box.command(new Box.Spec(List.of(), List.of(), null, false, BoxLimits.forCommand(1), 0), List.of("-version"));
+            cmd = Box.command(new Box.Spec(List.of(), List.of(), null, false, BoxLimits.forCommand(1), 0),
+                    List.of("-version"));
         } catch (IllegalStateException e) {
             return e.getMessage();
         }
@@ -91,10 +92,12 @@ public final class BoxProbe {
         String o = output.toLowerCase(Locale.ROOT);
         if (o.contains("namespace") || o.contains("uid map") || o.contains("operation not permitted")
                 || o.contains("permission denied")) {
-            return "bubblewrap could not make its namespaces (\"" + first + "\"): unprivileged user namespaces are switched"
-                    + " off. Allow them (Ubuntu 23.10 and later: sysctl -w kernel.apparmor_restrict_unprivileged_userns=0,"
-                    + " or an AppArmor profile for bwrap; Debian 11 and older: sysctl -w kernel.unprivileged_userns_clone=1;"
-                    + " RHEL 7: sysctl -w user.max_user_namespaces=15000), or run grade as root";
+            return "bubblewrap could not make its namespaces (\"" + first
+                    + "\"): unprivileged user namespaces are switched"
+                    + " off. Allow them (Ubuntu 23.10 and later: sysctl -w"
+                    + " kernel.apparmor_restrict_unprivileged_userns=0, or an AppArmor profile for bwrap; Debian 11 and"
+                    + " older: sysctl -w kernel.unprivileged_userns_clone=1; RHEL 7: sysctl -w"
+                    + " user.max_user_namespaces=15000), or run grade as root";
         }
         List<String> lines = new ArrayList<>(output.lines().limit(3).toList());
         return "java -version failed in the sandbox: " + String.join(" | ", lines);

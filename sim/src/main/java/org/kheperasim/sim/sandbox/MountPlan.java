@@ -49,7 +49,8 @@ final class MountPlan {
         try {
             real = hostPath.toRealPath();
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot find " + hostPath + " to put it in the sandbox: " + e.getMessage(), e);
+            throw new UncheckedIOException("cannot find " + hostPath + " to put it in the sandbox: "
+                    + e.getMessage(), e);
         }
         folders(dest.getParent());
         binds.put(dest, new Bind(real, dest, writable));

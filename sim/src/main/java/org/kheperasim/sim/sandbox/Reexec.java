@@ -35,7 +35,8 @@ public final class Reexec {
             BoxLimits limits, double stopSeconds) {
         BoxProbe.unavailable().ifPresent(reason -> {
             throw new IllegalArgumentException(command + " --sandbox runs the controller in a bubblewrap sandbox, but "
-                    + reason + "; or leave --sandbox out (only for code you trust). See docs/grading.md, \"The sandbox\".");
+                    + reason + "; or leave --sandbox out (only for code you trust). See docs/grading.md,"
+                    + " \"The sandbox\".");
         });
         List<Path> read = new ArrayList<>(readOnly);
         read.addAll(OwnClasspath.entries()); // at their real paths: the box runs in a folder of its own

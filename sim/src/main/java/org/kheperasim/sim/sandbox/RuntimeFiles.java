@@ -58,7 +58,8 @@ record RuntimeFiles(Path javaHome, List<Path> files, Path setpriv, Path prlimit)
             for (Path p : s.toList()) {
                 String name = p.getFileName().toString();
                 if (Files.isSymbolicLink(p) && !p.toString().contains("/legal/")) {
-                    // conf files, cacerts, jvm.cfg on Debian: the link is in the home, its target outside (src.zip's may be gone)
+                    // conf files, cacerts, jvm.cfg on Debian: the link is in the home, its target outside (src.zip's
+                    // may be gone)
                     if (Files.exists(p)) {
                         Path target = p.toRealPath();
                         if (!target.startsWith(home) && Files.isRegularFile(target)) {
@@ -103,21 +104,27 @@ record RuntimeFiles(Path javaHome, List<Path> files, Path setpriv, Path prlimit)
                 }
             }
         } catch (IOException e) {
-            throw new IllegalStateException("cannot run ldd to find the Java runtime's libraries (" + e.getMessage() + ")", e);
+            throw new IllegalStateException("cannot run ldd to find the Java runtime's libraries ("
+                    + e.getMessage() + ")", e);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new IllegalStateException("interrupted while finding the Java runtime's libraries", e);
         }
         if (out.isEmpty()) {
-            throw new IllegalStateException("ldd found no library of " + elf.get(0) + "; the sandbox cannot start Java");
+            throw new IllegalStateException("ldd found no library of " + elf.get(0)
+                    + "; the sandbox cannot start Java");
         }
         return new ArrayList<>(out);
     }
 
-    /** @return the program on the PATH (or in /usr/bin, /bin), or in {@link BoxProbe#PATH_PROPERTY}'s folders when it is set */
+    /**
+     * @return the program on the PATH (or in /usr/bin, /bin), or in {@link BoxProbe#PATH_PROPERTY}'s folders when it is
+     *     set
+     */
     static Path onPath(String program) {
         String given = System.getProperty(BoxProbe.PATH_PROPERTY);
-        String path = given != null ? given : System.getenv().getOrDefault("PATH", "") + ":/usr/bin:/bin:/usr/sbin:/sbin";
+        String path = given != null ? given
+                : System.getenv().getOrDefault("PATH", "") + ":/usr/bin:/bin:/usr/sbin:/sbin";
         for (String dir : path.split(":")) {
             Path p = dir.isEmpty() ? null : Path.of(dir, program);
             if (p != null && Files.isExecutable(p)) {

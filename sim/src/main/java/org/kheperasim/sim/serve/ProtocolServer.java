@@ -327,7 +327,8 @@ public final class ProtocolServer implements AutoCloseable {
             why = "sent nothing for " + idle / 1000.0 + " s and was let go (serve --idle-timeout)";
             try {
                 s.getOutputStream().write(("z,Idle: no command for " + idle / 1000.0 + " s; the robot stopped and"
-                        + " the connection is closed" + KheperaProtocol.REPLY_END).getBytes(StandardCharsets.ISO_8859_1));
+                        + " the connection is closed" + KheperaProtocol.REPLY_END)
+                                .getBytes(StandardCharsets.ISO_8859_1));
             } catch (IOException gone) {
                 // The client has gone too.
             }

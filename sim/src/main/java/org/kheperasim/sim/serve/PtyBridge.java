@@ -34,7 +34,9 @@ import java.util.function.Consumer;
 public final class PtyBridge implements AutoCloseable {
     /** How often the bridge looks whether a program has opened the pty, ms. */
     private static final int LOOK_MILLIS = 2;
-    /** How long a read of the pty waits for input while a client is there, ms (also how soon it sees the client leave). */
+    /**
+     * How long a read of the pty waits for input while a client is there, ms (also how soon it sees the client leave).
+     */
     private static final int READ_WAIT_MILLIS = 20;
 
     private final Path link;
@@ -252,7 +254,10 @@ public final class PtyBridge implements AutoCloseable {
         }
     }
 
-    /** Close the pty (a program on it sees a hang-up), end its client's connection (the robot stops) and remove the link. */
+    /**
+     * Close the pty (a program on it sees a hang-up), end its client's connection (the robot stops) and remove the
+     * link.
+     */
     @Override
     public void close() {
         closeQuietly();

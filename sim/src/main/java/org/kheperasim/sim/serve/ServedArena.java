@@ -56,14 +56,16 @@ public final class ServedArena implements AutoCloseable {
             throw new IllegalArgumentException("speed " + speed + " must lie in 0.1..100 (1 = real time)");
         }
         if (arena.robots().isEmpty()) {
-            throw new IllegalArgumentException("arena " + arena.name() + " has no robot start pose; add a 'robot' line");
+            throw new IllegalArgumentException("arena " + arena.name()
+                    + " has no robot start pose; add a 'robot' line");
         }
         this.arena = arena;
         this.settings = settings;
         this.speed = speed;
         this.engine = new Engine(new World(arena), seed);
         for (int i = 0; i < count; i++) {
-            SimRobot robot = engine.addRobot(count == 1 ? "served" : "served#" + i, arena.robots().get(i), settings, arena.robotType(i));
+            SimRobot robot = engine.addRobot(count == 1 ? "served" : "served#" + i, arena.robots().get(i), settings,
+                    arena.robotType(i));
             robot.onBoard().servedDirectly();
             simRobots.add(robot);
         }

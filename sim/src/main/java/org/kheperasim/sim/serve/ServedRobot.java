@@ -143,7 +143,8 @@ public final class ServedRobot implements AutoCloseable {
             robot.onBoard().moveToPositions(world.timeHeld(), c.left(), c.right());
             return c.reply().encode();
         } else if (command instanceof Command.SetPositionProfile c) {
-            robot.onBoard().positionProfile(c.maxSpeedLeft(), c.accelerationLeft(), c.maxSpeedRight(), c.accelerationRight());
+            robot.onBoard().positionProfile(c.maxSpeedLeft(), c.accelerationLeft(), c.maxSpeedRight(),
+                    c.accelerationRight());
             return c.reply().encode();
         } else if (command instanceof Command.ReadMotionStatus c) {
             return c.reply(robot.onBoard().motionStatus()).encode();

@@ -29,7 +29,7 @@ public final class Shown {
     public static boolean isControl(char c) {
         return c < 0x20 || (c >= 0x7f && c <= 0x9f)
                 || c == 0x061c || c == 0x200e || c == 0x200f           // Arabic letter mark, LRM, RLM
-                || (c >= 0x2028 && c <= 0x202e)                        // line/paragraph separators, embeddings, overrides
+                || (c >= 0x2028 && c <= 0x202e)                      // line/paragraph separators, embeddings, overrides
                 || (c >= 0x2066 && c <= 0x2069);                       // isolates
     }
 

@@ -46,7 +46,8 @@ public final class TraceDiff {
             String key = key(line);
             String other = hb.stream().filter(l -> key(l).equals(key)).findFirst().orElse(null);
             if (!line.equals(other)) {
-                header.add(key + ": recorded '" + value(line) + "', now " + (other == null ? "missing" : "'" + value(other) + "'"));
+                header.add(key + ": recorded '" + value(line) + "', now "
+                        + (other == null ? "missing" : "'" + value(other) + "'"));
             }
         }
         List<String> sa = a.stream().filter(l -> !isHeader(l)).toList();
@@ -54,13 +55,15 @@ public final class TraceDiff {
         String first = null;
         for (int i = 0; i < sa.size() && first == null; i++) {
             if (i >= sb.size()) {
-                first = "the run made again ends before sample line " + (i + 1) + " (" + sa.get(i).split(" ")[0] + " s)";
+                first = "the run made again ends before sample line " + (i + 1) + " ("
+                        + sa.get(i).split(" ")[0] + " s)";
             } else if (!sa.get(i).equals(sb.get(i))) {
                 first = describe(i + 1, sa.get(i), sb.get(i));
             }
         }
         if (first == null && sb.size() > sa.size()) {
-            first = "the run made again has " + (sb.size() - sa.size()) + " more sample lines after the recorded ones end";
+            first = "the run made again has " + (sb.size() - sa.size())
+                    + " more sample lines after the recorded ones end";
         }
         return new Result(header, first, sa.size());
     }

@@ -88,7 +88,8 @@ public final class TraceReader {
             int space = field.indexOf(' ');
             String key = space < 0 ? field : field.substring(0, space);
             if (key.isEmpty() || header.putIfAbsent(key, space < 0 ? "" : field.substring(space + 1)) != null) {
-                throw new TraceFormatException(source, i + 1, "header field '" + shorten(key) + "' is empty or repeated");
+                throw new TraceFormatException(source, i + 1,
+                        "header field '" + shorten(key) + "' is empty or repeated");
             }
         }
         for (String key : REQUIRED) {
@@ -119,7 +120,8 @@ public final class TraceReader {
                 robotLine(source, i + 1, t);
                 robots++;
             } else {
-                throw new TraceFormatException(source, i + 1, "a sample line has " + t.length + " columns; a robot line has "
+                throw new TraceFormatException(source, i + 1,
+                        "a sample line has " + t.length + " columns; a robot line has "
                         + ROBOT_COLUMNS + " and a cap line " + CAP_COLUMNS + " (see the header's columns)");
             }
             last = time;
@@ -132,7 +134,8 @@ public final class TraceReader {
         String[] t = text.substring(TraceWriter.VISION_PREFIX.length()).split(" ", -1);
         if (t.length != 3 + VISION_PIXELS) {
             throw new TraceFormatException(source, line, "a vision line has " + t.length + " columns after '"
-                    + TraceWriter.VISION_PREFIX.strip() + "'; it has t_s, robot, taken_s and " + VISION_PIXELS + " pixels");
+                    + TraceWriter.VISION_PREFIX.strip() + "'; it has t_s, robot, taken_s and "
+                    + VISION_PIXELS + " pixels");
         }
         double time = time(source, line, t[0], previous);
         check(source, line, t[1], INT, "robot");
@@ -141,7 +144,8 @@ public final class TraceReader {
             check(source, line, t[c], GREY, "pixel " + (c - 3));
             int grey = Integer.parseInt(t[c]);
             if (grey > 255) {
-                throw new TraceFormatException(source, line, "pixel " + (c - 3) + " is " + grey + "; a grey level is 0..255");
+                throw new TraceFormatException(source, line,
+                        "pixel " + (c - 3) + " is " + grey + "; a grey level is 0..255");
             }
         }
         return time;
@@ -158,13 +162,15 @@ public final class TraceReader {
             check(source, line, t[c], INT, "speed_l speed_r enc_l enc_r".split(" ")[c - 5]);
         }
         if (!CONTACTS.contains(t[9])) {
-            throw new TraceFormatException(source, line, "contact is '" + shorten(t[9]) + "'; expected one of " + CONTACTS);
+            throw new TraceFormatException(source, line,
+                    "contact is '" + shorten(t[9]) + "'; expected one of " + CONTACTS);
         }
         for (int c = 10; c <= 26; c++) {
             check(source, line, t[c], INT, c <= 17 ? "prox" + (c - 10) : c <= 25 ? "light" + (c - 18) : "arm");
         }
         if (!FINGERS.contains(t[27])) {
-            throw new TraceFormatException(source, line, "fingers is '" + shorten(t[27]) + "'; expected one of " + FINGERS);
+            throw new TraceFormatException(source, line,
+                    "fingers is '" + shorten(t[27]) + "'; expected one of " + FINGERS);
         }
         if (!t[28].equals("0") && !t[28].equals("1")) {
             throw new TraceFormatException(source, line, "object is '" + shorten(t[28]) + "'; expected 0 or 1");
@@ -180,7 +186,8 @@ public final class TraceReader {
                     + (long) MAX_SECONDS + " s); is it the right file?");
         }
         if (t < previous) {
-            throw new TraceFormatException(source, line, "time " + token + " s comes before the previous line's; a trace's"
+            throw new TraceFormatException(source, line,
+                    "time " + token + " s comes before the previous line's; a trace's"
                     + " lines are in time order");
         }
         return t;
@@ -189,7 +196,8 @@ public final class TraceReader {
     private static void check(String source, int line, String token, Pattern form, String column) {
         if (!form.matcher(token).matches()) {
             throw new TraceFormatException(source, line, column + " is '" + shorten(token) + "'; expected "
-                    + (form == INT ? "a whole number" : form == GREY ? "a grey level, 0..255" : "a number with 3 decimals"));
+                    + (form == INT ? "a whole number" : form == GREY
+                            ? "a grey level, 0..255" : "a number with 3 decimals"));
         }
     }
 

@@ -89,7 +89,8 @@ public final class TraceWriter implements SnapshotListener, AutoCloseable {
             line.append(r.speedLeft()).append(' ').append(r.speedRight()).append(' ')
                     .append(r.encoderLeft()).append(' ').append(r.encoderRight()).append(' ')
                     .append(r.contact().name());
-            // Eight sensor columns whatever the robot: one with fewer writes 0 in the rest, one with more its first eight.
+            // Eight sensor columns whatever the robot: one with fewer writes 0 in the rest, one with more its first
+            // eight.
             int n = r.sensorCount();
             for (int i = 0; i < 8; i++) {
                 line.append(' ').append(i < n ? r.proximity(i) : 0);

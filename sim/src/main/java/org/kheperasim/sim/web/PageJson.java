@@ -130,7 +130,7 @@ final class PageJson {
                 case '\r' -> out.append("\\r");
                 case '\t' -> out.append("\\t");
                 default -> {
-                    if (Shown.isControl(c) || c == '<' || c == '>' || c == '&') {   // isControl: also U+2028/9, bidi, C1
+                    if (Shown.isControl(c) || c == '<' || c == '>' || c == '&') {  // isControl: also U+2028/9, bidi, C1
                         out.append(String.format(Locale.ROOT, "\\u%04x", (int) c));
                     } else {
                         out.append(c);

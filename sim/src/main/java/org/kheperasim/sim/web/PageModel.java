@@ -48,7 +48,8 @@ final class PageModel {
                 .put("robotsInRun", tape.robotsInRun()).put("capMoves", tape.caps().size());
         j.array("robots");
         for (int i = 0; i < robots.size(); i++) {
-            j.begin().put("name", robots.get(i).name).put("n", packed.kept()[i]).put("sensors", robots.get(i).sensors != null);
+            j.begin().put("name", robots.get(i).name).put("n", packed.kept()[i])
+                    .put("sensors", robots.get(i).sensors != null);
             RobotType type = robots.get(i).type;
             if (!type.equals(RobotTypes.KHEPERA1)) {
                 // Another robot than the model's: its own body and sensors (a Khepera's page is as it was).
@@ -101,7 +102,8 @@ final class PageModel {
         for (int i = 1; i < StrictMath.min(t.size(), 2000); i++) {
             gaps.merge(t.get(i) - t.get(i - 1), 1, Integer::sum);
         }
-        return gaps.entrySet().stream().max(java.util.Map.Entry.comparingByValue()).map(java.util.Map.Entry::getKey).orElse(0);
+        return gaps.entrySet().stream().max(java.util.Map.Entry.comparingByValue())
+                .map(java.util.Map.Entry::getKey).orElse(0);
     }
 
     private static void arena(PageJson j, long ms, Arena a) {

@@ -130,10 +130,12 @@ public final class RunPage {
         RunTape tape = recorder.tape();
         synchronized (recorder) {
             if (tape.robots().isEmpty()) {
-                throw new IllegalStateException("the run recorded no sample: attach the recorder to the run before it starts");
+                throw new IllegalStateException(
+                        "the run recorded no sample: attach the recorder to the run before it starts");
             }
             String title = outcome.title().isEmpty() ? tape.arenas().get(0).arena().name() : outcome.title();
-            PageModel.About about = new PageModel.About(title, source, List.of(), failures(tape, outcome, recorder.errors()));
+            PageModel.About about =
+                    new PageModel.About(title, source, List.of(), failures(tape, outcome, recorder.errors()));
             return save(out, tape, about, outcome);
         }
     }
@@ -153,14 +155,16 @@ public final class RunPage {
         TapeEncoder.Encoded packed = TapeEncoder.encode(tape, StrictMath.max(20_000, BUDGET_BYTES - fixed), whole);
         String json = packed == whole ? wholeJson : PageModel.json(about, tape, packed, scores, coverageAtEnd);
         // The run first: a title cannot then be mistaken for the placeholder of the run.
-        String html = Template.TEXT.replace("/*RUN*/", "var RUN = " + json + ";\nvar SAMPLES = \"" + packed.base64() + "\";")
+        String html = Template.TEXT.replace("/*RUN*/",
+                "var RUN = " + json + ";\nvar SAMPLES = \"" + packed.base64() + "\";")
                 .replace("<!--TITLE-->", escape(about.title()));
         return new Page(html, packed);
     }
 
     private static Written save(Path out, RunTape tape, PageModel.About about, RunOutcome outcome) {
         if (Files.isDirectory(out)) {
-            throw new IllegalArgumentException("cannot write the page " + out + ": it is a folder; give a file name such as "
+            throw new IllegalArgumentException("cannot write the page " + out
+                    + ": it is a folder; give a file name such as "
                     + out.resolve("run.html"));
         }
         Path parent = out.toAbsolutePath().getParent();
@@ -190,7 +194,8 @@ public final class RunPage {
         java.util.Set<Integer> named = new java.util.HashSet<>();
         for (RunOutcome.Failure f : outcome.failures()) {
             ConsoleLine line = firstError(tape, errors, f.robot());
-            // The console's error line is the most precise: its time is the failure's, its text names the student's line.
+            // The console's error line is the most precise: its time is the failure's, its text names the student's
+            // line.
             double t = f.seconds();
             if (Double.isNaN(t) && line != null) {
                 t = line.timeNanos() / 1e9;
@@ -198,7 +203,8 @@ public final class RunPage {
             if (Double.isNaN(t) && f.robot() < tape.robots().size() && tape.robots().get(f.robot()).failedMs >= 0) {
                 t = tape.robots().get(f.robot()).failedMs / 1000.0;
             }
-            String message = line != null && (f.message().isEmpty() || line.text().contains(f.message())) ? line.text() : f.message();
+            String message = line != null && (f.message().isEmpty() || line.text().contains(f.message()))
+                    ? line.text() : f.message();
             out.add(new RunOutcome.Failure(f.robot(), t, f.status(), message));
             named.add(f.robot());
         }
@@ -206,7 +212,8 @@ public final class RunPage {
             RunTape.Track r = tape.robots().get(i);
             if (r.failedMs >= 0 && !named.contains(i)) {
                 ConsoleLine line = firstError(tape, errors, i);
-                out.add(new RunOutcome.Failure(i, line == null ? r.failedMs / 1000.0 : line.timeNanos() / 1e9, r.failedStatus,
+                out.add(new RunOutcome.Failure(i,
+                        line == null ? r.failedMs / 1000.0 : line.timeNanos() / 1e9, r.failedStatus,
                         line == null ? "" : line.text()));
             }
         }

@@ -99,7 +99,10 @@ final class ScoreTimeline {
         return m.pending() == pending && m.score().summary().equals(s.summary());
     }
 
-    /** Regions some robot's centre lies in at sample {@code k}, entered now unless entered before. @return true when one was */
+    /**
+     * Regions some robot's centre lies in at sample {@code k}, entered now unless entered before. @return true when one
+     * was
+     */
     private static boolean enter(Map<String, Double> entered, Arena arena, List<RunTape.Track> robots, int k, long ms) {
         boolean any = false;
         for (RunTape.Track r : robots) {

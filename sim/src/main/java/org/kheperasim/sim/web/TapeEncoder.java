@@ -72,7 +72,8 @@ final class TapeEncoder {
             pose = (int) StrictMath.ceil(poseOnly / (budget * 0.6));
             left = budget - poseOnly / pose;
         }
-        int sensor = (int) StrictMath.min(MAX_SENSOR_STRIDE, StrictMath.max(2, StrictMath.ceil(sensorsAll / (double) (left * pose))));
+        int sensor = (int) StrictMath.min(MAX_SENSOR_STRIDE,
+                StrictMath.max(2, StrictMath.ceil(sensorsAll / (double) (left * pose))));
         int longest = tape.robots().stream().mapToInt(RunTape.Track::size).max().orElse(1);
         while (true) {
             Encoded e = pack(tape, pose, sensor);

@@ -39,7 +39,9 @@ public final class KheperaDialect implements Dialect {
     @Override public Command parseCommand(String line) { return KheperaProtocol.parseCommand(line); }
     @Override public String errorReply(ProtocolException e) { return KheperaProtocol.errorReply(e); }
     @Override public String overlongReply() { return KheperaProtocol.PROTOCOL_ERROR; }
-    @Override public Reply parseReply(Command command, String line) { return KheperaProtocol.parseReply(command, line); }
+    @Override public Reply parseReply(Command command, String line) {
+        return KheperaProtocol.parseReply(command, line);
+    }
 
     /** The Khepera's boot banner names its BIOS and protocol versions ("Khepera BIOS version 5.02"). */
     @Override

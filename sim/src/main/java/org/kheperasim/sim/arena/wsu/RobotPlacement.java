@@ -31,7 +31,8 @@ final class RobotPlacement {
      *     centre, mm), or null when it fits nowhere
      */
     static double[] nearestFree(Arena arena, double x, double y) {
-        RobotPlacement p = new RobotPlacement(OccupancyGrid.of(arena), RobotTypes.KHEPERA1.body().radiusMm() + MARGIN_MM);
+        RobotPlacement p = new RobotPlacement(OccupancyGrid.of(arena),
+                RobotTypes.KHEPERA1.body().radiusMm() + MARGIN_MM);
         return p.search(x, y);
     }
 

@@ -224,7 +224,8 @@ final class SerialStreamParser {
             return new FieldDesc(type, name, null);
         }
         if (type != 'L' && type != '[') {
-            throw in.error(at, String.format("field %s of %s has type code 0x%02X, which is none of B C D F I J S Z L [:"
+            throw in.error(at, String.format(
+                    "field %s of %s has type code 0x%02X, which is none of B C D F I J S Z L [:"
                     + " the stream is damaged", name, owner, (int) type));
         }
         long typeAt = in.offset();
@@ -336,12 +337,14 @@ final class SerialStreamParser {
     private JavaArray newArray(long at) {
         ClassDesc desc = nonNullClassDesc("the class of an array");
         if (desc.name.length() < 2 || desc.name.charAt(0) != '[') {
-            throw in.error(at, "an array of class " + desc.name + ", which is not an array class: the stream is damaged");
+            throw in.error(at, "an array of class " + desc.name
+                    + ", which is not an array class: the stream is damaged");
         }
         char element = desc.name.charAt(1);
         boolean primitive = PRIMITIVE_CODES.indexOf(element) >= 0;
         if (!primitive && element != 'L' && element != '[') {
-            throw in.error(at, "an array of class " + desc.name + ", which names no element type: the stream is damaged");
+            throw in.error(at, "an array of class " + desc.name
+                    + ", which names no element type: the stream is damaged");
         }
         List<Object> elements = new ArrayList<>();
         JavaArray array = assign(new JavaArray(desc, at, elements));

@@ -53,8 +53,10 @@ final class WallRuns {
         for (Bar b : sorted) {
             if (run != null && continues(run, b, horizontal)) {
                 run = horizontal
-                        ? new Bar(run.x0(), run.y0(), Math.max(run.x1(), b.x1()), run.y1(), Math.min(run.order(), b.order()))
-                        : new Bar(run.x0(), run.y0(), run.x1(), Math.max(run.y1(), b.y1()), Math.min(run.order(), b.order()));
+                        ? new Bar(run.x0(), run.y0(), Math.max(run.x1(), b.x1()), run.y1(),
+                                Math.min(run.order(), b.order()))
+                        : new Bar(run.x0(), run.y0(), run.x1(), Math.max(run.y1(), b.y1()),
+                                Math.min(run.order(), b.order()));
             } else {
                 if (run != null) {
                     runs.add(run);
@@ -68,7 +70,9 @@ final class WallRuns {
         return runs;
     }
 
-    /** Whether {@code b} (sorted after {@code run}) has the same cross extent and starts where the run has not ended. */
+    /**
+     * Whether {@code b} (sorted after {@code run}) has the same cross extent and starts where the run has not ended.
+     */
     private static boolean continues(Bar run, Bar b, boolean horizontal) {
         return horizontal
                 ? run.y0() == b.y0() && run.y1() == b.y1() && b.x0() <= run.x1()

@@ -129,7 +129,9 @@ final class WsuArenaBuilder {
         return new Arena(name, side, side, List.of(start), walls, lights, caps, List.of());
     }
 
-    /** A wall bar of the file, px edges {@code [x0, x1) x [y0, y1)} (y down), clipped to the panel, kept for joining. */
+    /**
+     * A wall bar of the file, px edges {@code [x0, x1) x [y0, y1)} (y down), clipped to the panel, kept for joining.
+     */
     private void bar(double x0, double y0, double x1, double y1, WsuObject o) {
         double cx0 = Math.max(0, x0);
         double cy0 = Math.max(0, y0);
@@ -160,7 +162,10 @@ final class WsuArenaBuilder {
         }
     }
 
-    /** The centre line's ends along the long side {@code [a, b)}: drawn in by half the thickness unless at the panel's edge. */
+    /**
+     * The centre line's ends along the long side {@code [a, b)}: drawn in by half the thickness unless at the panel's
+     * edge.
+     */
     private static double[] line(double a, double b, double thickness) {
         double start = a > 0 ? a + thickness / 2 : a;
         double end = b < PANEL_PX ? b - thickness / 2 : b;
@@ -172,7 +177,10 @@ final class WsuArenaBuilder {
         return new double[] {start, end};
     }
 
-    /** The centre of a disc anchored at its bounding square's top-left, clipped into the panel; null when wholly outside. */
+    /**
+     * The centre of a disc anchored at its bounding square's top-left, clipped into the panel; null when wholly
+     * outside.
+     */
     private double[] disc(WsuObject o, double radius) {
         double x = o.x() + radius;
         double y = o.y() + radius;

@@ -88,7 +88,8 @@ final class WsuWorldObjects {
         for (int i = 0; i < count; i++) {
             Object element = array.elements().get(i);
             if (!(element instanceof JavaObject vertex) || !vertex.desc.name.equals(VERTEX)) {
-                throw error(array.offset(), "element " + i + " of the world's Vector is " + describe(element) + ", not a "
+                throw error(array.offset(),
+                        "element " + i + " of the world's Vector is " + describe(element) + ", not a "
                         + VERTEX + ": it is not a WSU world file, or it is damaged");
             }
             if (vertex.desc.serialVersionUid != VERTEX_UID && !uidWarned) {

@@ -124,7 +124,8 @@ public final class CapContacts {
                 continue;
             }
             for (int part = 0; part < parts; part++) {
-                if (overlap(part, px, py, pc, ps, i) > 0 && caps.reach(i, push[0], push[1], Caps.CHAIN - 1, robot) < 1) {
+                if (overlap(part, px, py, pc, ps, i) > 0
+                        && caps.reach(i, push[0], push[1], Caps.CHAIN - 1, robot) < 1) {
                     blocking = i;
                     return false;
                 }

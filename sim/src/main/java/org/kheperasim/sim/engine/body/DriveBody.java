@@ -42,7 +42,9 @@ public final class DriveBody {
     private final BodyClearance room;
     private double encoderLeft;
     private double encoderRight;
-    /** The side of the present contact; null while it is still to be worked out from {@link #touchX}, {@link #touchY}. */
+    /**
+     * The side of the present contact; null while it is still to be worked out from {@link #touchX}, {@link #touchY}.
+     */
     private Contact contact = Contact.NONE;
     private double touchX;
     private double touchY;
@@ -56,15 +58,18 @@ public final class DriveBody {
     /** The last arc's trigonometry, reused while the turn per move does not change. */
     private final ArcTrig trig = new ArcTrig();
 
-    public DriveBody(World world, int self, double x, double y, double headingDeg, RobotType type, RobotModel.Motors motors,
-            double readingNoise, double calibrationLeft, double calibrationRight, CounterNoise noiseLeft, CounterNoise noiseRight) {
+    public DriveBody(World world, int self, double x, double y, double headingDeg, RobotType type,
+            RobotModel.Motors motors,
+            double readingNoise, double calibrationLeft, double calibrationRight, CounterNoise noiseLeft,
+            CounterNoise noiseRight) {
         this.field = world.field();
         this.bodies = world.bodies();
         this.self = self;
         this.mmPerPulse = motors.mmPerPulse();
         this.radius = type.body().radiusMm();
         this.wheelBase = type.drive().wheelBaseMm();
-        this.wheels = new Wheels(type.drive(), motors, readingNoise, calibrationLeft, calibrationRight, noiseLeft, noiseRight);
+        this.wheels = new Wheels(type.drive(), motors, readingNoise, calibrationLeft, calibrationRight,
+                noiseLeft, noiseRight);
         this.x = x;
         this.y = y;
         double h = StrictMath.toRadians(headingDeg);

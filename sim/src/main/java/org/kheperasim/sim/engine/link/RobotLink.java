@@ -334,7 +334,10 @@ public final class RobotLink {
         return pending[k] && deliverAt[k] <= now - Math.floorMod(now, Ticks.NANOS);
     }
 
-    /** The values of step k as the controller sees them at {@code now}: delivered once the reply is in by the tick's start. */
+    /**
+     * The values of step k as the controller sees them at {@code now}: delivered once the reply is in by the tick's
+     * start.
+     */
     private int[] seen(int k, long now) {
         if (pending[k] && deliverAt[k] <= now - Math.floorMod(now, Ticks.NANOS)) {
             deliver(k);

@@ -21,7 +21,8 @@ import org.kheperasim.sim.engine.robot.RobotTypes;
  * @param motors the wheels and encoders
  * @param gripper the gripper turret
  */
-public record RobotModel(RobotType type, Stepping stepping, Link link, Noise noise, Proximity proximity, Light light, Motors motors,
+public record RobotModel(RobotType type, Stepping stepping, Link link, Noise noise, Proximity proximity,
+        Light light, Motors motors,
         Gripper gripper) {
 
     /** How the engine advances time: the two give the same run (see {@code docs/simulation-model.md}). */
@@ -155,13 +156,16 @@ public record RobotModel(RobotType type, Stepping stepping, Link link, Noise noi
                 new Link(timing, StrictMath.max(1, (long) (s.number("api.callCostUs") * 1000))),
                 new Noise(s.number("noise.reading"), s.number("noise.robot")),
                 new Proximity(response, or(s, "prox.offset", tp.offset()), spread(s, "prox.offsetSpread", m),
-                        spread(s, "prox.gainSpread", m), or(s, "prox.noiseAbs", tp.noiseAbs()), or(s, "prox.noiseRel", tp.noiseRel()),
+                        spread(s, "prox.gainSpread", m), or(s, "prox.noiseAbs", tp.noiseAbs()),
+                        or(s, "prox.noiseRel", tp.noiseRel()),
                         s.number("prox.spikeRate"),
                         new double[] {0, s.number("prox.reflect.wall"), s.number("prox.reflect.light"),
                             s.number("prox.reflect.cap"), s.number("prox.reflect.robot")},
                         proxGain, proxNoise, proxDead),
-                new Light(or(s, "light.dark", tl.dark()), or(s, "light.bright", tl.bright()), s.number("light.darkSpread"),
-                        s.number("light.flickerRate"), s.number("light.flickerDepth"), or(s, "light.noiseRel", tl.noiseRel()),
+                new Light(or(s, "light.dark", tl.dark()), or(s, "light.bright", tl.bright()),
+                        s.number("light.darkSpread"),
+                        s.number("light.flickerRate"), s.number("light.flickerDepth"),
+                        or(s, "light.noiseRel", tl.noiseRel()),
                         lightGain, lightDead),
                 new Motors(s.number("motor.left.calibration") * (m == null ? 1 : m.leftCalibration()),
                         s.number("motor.right.calibration") * (m == null ? 1 : m.rightCalibration()),

@@ -32,12 +32,18 @@ public final class Settings {
     static {
         DEFS.put("engine.stepping", new Def("events", Kind.STEPPING, 0, 0, "how the engine advances time: events"
                 + " (from event to event along exact arcs, the default) or tick (every millisecond, the reference)"));
-        num("link.baud", "38400", 300, 1_000_000, "serial line speed, bits/s: sets how often sensor values refresh and how late commands take effect");
-        num("link.turnaroundUs", "500", 0, 100_000, "robot's time from the end of a command to the start of its reply, microseconds");
-        num("api.callCostUs", "20", 0.001, 1_000_000, "simulated cost of each API call a controller makes, microseconds");
+        num("link.baud", "38400", 300, 1_000_000,
+                "serial line speed, bits/s: sets how often sensor values refresh and how late commands take effect");
+        num("link.turnaroundUs", "500", 0, 100_000,
+                "robot's time from the end of a command to the start of its reply, microseconds");
+        num("api.callCostUs", "20", 0.001, 1_000_000,
+                "simulated cost of each API call a controller makes, microseconds");
         num("noise.reading", "1", 0, 100, "scale of every per-reading noise (0 switches it off)");
         num("noise.robot", "1", 0, 100, "scale of every per-robot miscalibration drawn once a run (0 switches it off)");
-        DEFS.put("prox.profile", new Def("khepera1", Kind.PROFILE, 0, 0, "proximity response table: khepera1 (default), khepera2, or sample:PATH (a table fitted to a sampled .sample wall file, docs/calibration.md)"));
+        DEFS.put("prox.profile",
+                new Def("khepera1", Kind.PROFILE, 0, 0,
+                        "proximity response table: khepera1 (default), khepera2, or sample:PATH (a table fitted to a"
+                                + " sampled .sample wall file, docs/calibration.md)"));
         num("prox.offset", "15", 0, 1023, "proximity reading with nothing in range (the noise floor), counts");
         num("prox.offsetSpread", "10", 0, 1023, "per-robot spread of each sensor's offset, +/- counts");
         num("prox.gainSpread", "0.05", 0, 1, "per-robot spread of each sensor's gain, standard deviation (relative)");
@@ -47,11 +53,13 @@ public final class Settings {
         num("prox.reflect.wall", "1", 0, 10, "reflectance of walls relative to the white reference wall");
         num("prox.reflect.light", "1", 0, 10, "reflectance of light sources");
         num("prox.reflect.cap", "1", 0, 10, "reflectance of bottle caps");
-        num("prox.reflect.robot", "0.8", 0, 10, "reflectance of another robot's body (its dark plastic reflects less than"
+        num("prox.reflect.robot", "0.8", 0, 10,
+                "reflectance of another robot's body (its dark plastic reflects less than"
                 + " the white reference wall)");
         num("light.dark", "480", 0, 1023, "ambient-light reading in darkness, counts (lower = brighter)");
         num("light.bright", "20", 0, 1023, "ambient-light reading right next to a lamp, counts");
-        num("light.darkSpread", "10", 0, 1023, "per-robot spread of each sensor's darkness value, standard deviation, counts");
+        num("light.darkSpread", "10", 0, 1023,
+                "per-robot spread of each sensor's darkness value, standard deviation, counts");
         num("light.flickerRate", "0.02", 0, 1, "probability that a reading in darkness deviates (the paper: 2%)");
         num("light.flickerDepth", "0.005", 0, 1, "largest relative deviation of such a reading (the paper: 0.005)");
         num("light.noiseRel", "0.01", 0, 1, "per-reading noise of the light signal, standard deviation (relative)");
@@ -63,39 +71,51 @@ public final class Settings {
             flag("light." + i + ".dead", "dead light sensor " + i + " (reads as darkness)");
         }
         for (String w : new String[] {"left", "right"}) {
-            num("motor." + w + ".calibration", "1", 0, 10, "actual over commanded speed of the " + w + " wheel (worn motor < 1)");
-            num("motor." + w + ".noise", "0.009", 0, 10, "speed noise of the " + w + " wheel, standard deviation (relative), redrawn every 50 ms");
+            num("motor." + w + ".calibration", "1", 0, 10,
+                    "actual over commanded speed of the " + w + " wheel (worn motor < 1)");
+            num("motor." + w + ".noise", "0.009", 0, 10,
+                    "speed noise of the " + w + " wheel, standard deviation (relative), redrawn every 50 ms");
         }
-        num("motor.spread", "0.02", 0, 1, "per-robot spread of each wheel's calibration, standard deviation (relative)");
-        num("gripper.armTravelMs", "1000", 1, 60_000, "time the gripper arm takes between up and down, ms (an estimate: the turret's manual was not found)");
+        num("motor.spread", "0.02", 0, 1,
+                "per-robot spread of each wheel's calibration, standard deviation (relative)");
+        num("gripper.armTravelMs", "1000", 1, 60_000,
+                "time the gripper arm takes between up and down, ms (an estimate: the turret's manual was not found)");
         num("gripper.fingerMs", "400", 1, 10_000, "time the gripper fingers take to open or close, ms (an estimate)");
-        num("gripper.capResistivity", "120", 0, 255, "resistivity reading of a held bottle cap, 0..255 (empty fingers read 0)");
-        num("encoder.mmPerPulse", "0.08", 0.001, 10, "wheel travel per encoder pulse, mm (the manual also gives 1/12 mm)");
+        num("gripper.capResistivity", "120", 0, 255,
+                "resistivity reading of a held bottle cap, 0..255 (empty fingers read 0)");
+        num("encoder.mmPerPulse", "0.08", 0.001, 10,
+                "wheel travel per encoder pulse, mm (the manual also gives 1/12 mm)");
         choice("gripper.armInView", "what the lowered gripper arm does to the proximity sensors: none (the default: it"
-                + " stays out of their beams), front (sensors 2 and 3 read as touching it) or wsu (sensors 0 to 5 read as"
-                + " touching it, as in the WSU simulator)", "none", "front", "wsu");
+                + " stays out of their beams), front (sensors 2 and 3 read as touching it) or wsu (sensors"
+                + " 0 to 5 read as touching it, as in the WSU simulator)", "none", "front", "wsu");
         num("vision.refreshMs", "50", 1, 10_000, "time between two images of the K213 vision turret, ms (an estimate:"
                 + " its manual says its light detector adapts the scan speed to the light)");
         num("vision.noise", "0.5", 0, 255, "per-pixel noise of the vision turret, standard deviation, grey levels");
-        num("vision.grey.wall", "10", 0, 255, "grey level the vision turret sees on a wall in the room's light (0 black, 255 white)");
+        num("vision.grey.wall", "10", 0, 255,
+                "grey level the vision turret sees on a wall in the room's light (0 black, 255 white)");
         num("vision.grey.cap", "200", 0, 255, "grey level of a cap or ball in the room's light");
         num("vision.grey.robot", "60", 0, 255, "grey level of another robot's body in the room's light");
         num("vision.grey.background", "0", 0, 255, "grey level of a pixel that sees nothing (beyond the arena)");
         num("vision.lampGain", "0.25", 0, 10, "how much brighter a surface looks lit by a lamp at full exposure (the"
                 + " light sensors' exposure model); a lamp itself is always 255");
         num("vision.fieldOfViewDeg", "36", 1, 180, "the vision turret's field of view, degrees (its manual: about 36)");
-        num("vision.lensMm", "20", -100, 100, "where the vision turret's lens is, mm ahead of the robot's centre (an estimate"
+        num("vision.lensMm", "20", -100, 100,
+                "where the vision turret's lens is, mm ahead of the robot's centre (an estimate"
                 + " from the turret's layout)");
         choice("controller.mode", "where the controller runs: auto (the default: a step controller on the robot, any"
-                + " other through the serial link), onboard (on the robot's own processor: it reads the latest 20 ms scan and"
-                + " its commands act at once, as swarms and evolutionary robotics run it) or tethered (on the host, through"
-                + " the serial link: values refresh at the poll rate the baud allows, commands act after their wire time)",
+                + " other through the serial link), onboard (on the robot's own processor: it reads the latest"
+                + " 20 ms scan and its commands act at once, as swarms and evolutionary robotics run it) or tethered"
+                + " (on the host, through the serial link: values refresh at the poll rate the baud allows, commands"
+                + " act after their wire time)",
                 "auto", "onboard", "tethered");
         choice("wsu.positionUnits", "unit of a WSU controller's wheel positions: pulses (the Khepera's 0.08 mm encoder"
-                + " pulses, the default) or legacy (the original simulator's counts, 3 per degree of a turn on the spot)",
+                + " pulses, the default) or legacy (the original simulator's counts, 3 per degree of a"
+                + " turn on the spot)",
                 "pulses", "legacy");
-        choice("wsu.speedUnits", "unit of a WSU controller's wheel speeds: khepera (one Khepera speed unit, about 8 mm/s,"
-                + " the default) or legacy (as fast as the original simulator drew it, about 30 mm/s: 3.78 Khepera units)",
+        choice("wsu.speedUnits",
+                "unit of a WSU controller's wheel speeds: khepera (one Khepera speed unit, about 8 mm/s,"
+                + " the default) or legacy (as fast as the original simulator drew it, about 30 mm/s: 3.78"
+                + " Khepera units)",
                 "khepera", "legacy");
         choice(WsuProfile.KEY, "behaviour profile: robot (the default: the real Khepera) or wsu (the original WSU"
                 + " simulator: the robot file wsu and the settings docs/wsu-migration.md lists; a setting given"
@@ -192,12 +212,16 @@ public final class Settings {
     public Settings with(String assignment) {
         int eq = assignment.indexOf('=');
         if (eq <= 0) {
-            throw new IllegalArgumentException("setting '" + assignment + "' must look like key=value, e.g. prox.3.gain=0.5");
+            throw new IllegalArgumentException("setting '" + assignment
+                    + "' must look like key=value, e.g. prox.3.gain=0.5");
         }
         return with(assignment.substring(0, eq).trim(), assignment.substring(eq + 1));
     }
 
-    /** @param scale new scale for both noise channels @return settings with {@code noise.reading} and {@code noise.robot} set */
+    /**
+     * @param scale new scale for both noise channels @return settings with {@code noise.reading} and
+     *     {@code noise.robot} set
+     */
     public Settings withNoise(double scale) {
         return with("noise.reading", fmt(scale)).with("noise.robot", fmt(scale));
     }

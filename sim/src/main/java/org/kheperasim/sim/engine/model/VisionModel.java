@@ -17,7 +17,8 @@ package org.kheperasim.sim.engine.model;
  * @param robotGrey grey level of another robot's body
  * @param backgroundGrey grey level of a pixel that sees nothing
  * @param lampGain how much brighter a lamp makes what it lights, at full exposure
- * @param fieldOfViewDeg the field of view, degrees ({@code vision.fieldOfViewDeg}; the manual's "about 36 degrees" by default)
+ * @param fieldOfViewDeg the field of view, degrees ({@code vision.fieldOfViewDeg}; the manual's "about 36 degrees" by
+ *     default)
  * @param lensMm where the lens is, mm ahead of the robot's centre ({@code vision.lensMm}; 20 by default, on the
  *     front of the turret, an estimate from its layout)
  */
@@ -37,7 +38,9 @@ public record VisionModel(long refreshNanos, double noise, double wallGrey, doub
                 s.number("vision.lampGain"), s.number("vision.fieldOfViewDeg"), s.number("vision.lensMm"));
     }
 
-    /** @param pixel 0..63 @return the direction pixel {@code pixel} looks in, radians from straight ahead, left positive */
+    /**
+     * @param pixel 0..63 @return the direction pixel {@code pixel} looks in, radians from straight ahead, left positive
+     */
     public double bearing(int pixel) {
         return StrictMath.toRadians(fieldOfViewDeg / 2 - (pixel + 0.5) * fieldOfViewDeg / PIXELS);
     }

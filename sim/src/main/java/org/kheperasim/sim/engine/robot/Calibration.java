@@ -67,7 +67,8 @@ public record Calibration(String robot, String date, RobotType type, SampleFit.R
                 case "wall" -> wall = v;
                 case "base" -> {
                     if (!v.equals("khepera1")) {
-                        throw new RobotFileException(source, n + 1, "base " + v + ": only khepera1 calibrations are read"
+                        throw new RobotFileException(source, n + 1,
+                                "base " + v + ": only khepera1 calibrations are read"
                                 + " in this version");
                     }
                 }

@@ -4,7 +4,8 @@ import java.util.Arrays;
 
 /**
  * A proximity sensor's response along one beam: reading against distance to a white wall, as a
- * table interpolated linearly (the robots' own tables are in their {@link RobotType}). Beyond the last distance the response is zero (the sensor's offset and noise remain).
+ * table interpolated linearly (the robots' own tables are in their {@link RobotType}). Beyond the last distance the
+ * response is zero (the sensor's offset and noise remain).
  *
  * @param name the profile's name, used in settings
  * @param distancesMm increasing distances from the sensor, mm
@@ -26,7 +27,8 @@ public record ProximityProfile(String name, double[] distancesMm, double[] value
             // Crowd joins robots that may touch within a stretch into one unit, and a sample of each
             // sees the others only because they are then within its sight: that takes a range of a
             // fraction of a millimetre at least; 1 mm leaves room.
-            throw new IllegalArgumentException("profile " + name + ": the last distance, the sensors' range, must be at least "
+            throw new IllegalArgumentException("profile " + name
+                    + ": the last distance, the sensors' range, must be at least "
                     + MIN_RANGE_MM + " mm, not " + distancesMm[distancesMm.length - 1]);
         }
         distancesMm = distancesMm.clone();

@@ -180,7 +180,8 @@ public sealed interface Response permits Response.Curve, Response.Table {
 
         @Override
         public boolean equals(Object o) {
-            return o instanceof Table t && Arrays.equals(t.distancesMm, distancesMm) && Arrays.equals(t.anglesDeg, anglesDeg)
+            return o instanceof Table t && Arrays.equals(t.distancesMm, distancesMm)
+                    && Arrays.equals(t.anglesDeg, anglesDeg)
                     && Arrays.deepEquals(t.values, values);
         }
 

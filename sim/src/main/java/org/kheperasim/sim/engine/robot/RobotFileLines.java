@@ -97,7 +97,8 @@ final class RobotFileLines {
             } else if (indent == 4 && item != null) {
                 put(item, keyValue(body, lineNo));
             } else {
-                throw error(lineNo, "indented " + indent + " spaces here; top-level keys start the line, a section's keys"
+                throw error(lineNo, "indented " + indent
+                        + " spaces here; top-level keys start the line, a section's keys"
                         + " take 2 spaces, a list item's further keys 4");
             }
         }

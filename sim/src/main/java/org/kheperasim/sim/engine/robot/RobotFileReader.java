@@ -14,13 +14,15 @@ import java.util.Set;
 public final class RobotFileReader {
     /** The most sensors a robot may have. */
     public static final int MAX_SENSORS = 32;
-    private static final Set<String> TOP = Set.of("name", "source", "dialect", "turrets", "footprint", "drive", "sensors",
+    private static final Set<String> TOP =
+            Set.of("name", "source", "dialect", "turrets", "footprint", "drive", "sensors",
             "proximity", "light", "measured");
     private static final Set<String> FOOTPRINT = Set.of("type", "radius");
     private static final Set<String> DRIVE = Set.of("wheel_base", "speed_unit", "max_speed", "encoder_resolution",
             "motor_period", "noise_period", "move_speed", "acceleration");
     private static final Set<String> SENSOR = Set.of("name", "channel", "origin");
-    private static final Set<String> PROXIMITY = Set.of("response", "angles", "weights", "distances", "values", "offset",
+    private static final Set<String> PROXIMITY =
+            Set.of("response", "angles", "weights", "distances", "values", "offset",
             "noise_std_dev", "noise_relative", "max_reading");
     private static final Set<String> LIGHT = Set.of("dark", "bright", "noise_relative");
     private static final Set<String> MEASURED = Set.of("robot", "date", "gains", "wheel_calibration");
@@ -45,12 +47,14 @@ public final class RobotFileReader {
         known(root, TOP, "the file's top level");
         String name = text(need(root, "name"));
         if (!name.matches("[A-Za-z0-9_-]{1,40}")) {
-            throw error(need(root, "name"), "name '" + name + "' is not allowed; use 1 to 40 letters, digits, '_' or '-'");
+            throw error(need(root, "name"),
+                    "name '" + name + "' is not allowed; use 1 to 40 letters, digits, '_' or '-'");
         }
         String src = root.keys.containsKey("source") ? text(root.keys.get("source")) : "";
         String dialect = text(need(root, "dialect"));
         if (!dialect.matches("[a-z0-9]+")) {
-            throw error(need(root, "dialect"), "dialect '" + dialect + "' is not a name; use e.g. khepera1, khepera2 or epuck");
+            throw error(need(root, "dialect"),
+                    "dialect '" + dialect + "' is not a name; use e.g. khepera1, khepera2 or epuck");
         }
         Set<RobotType.Turret> turrets = EnumSet.noneOf(RobotType.Turret.class);
         if (root.keys.containsKey("turrets")) {
@@ -87,12 +91,15 @@ public final class RobotFileReader {
         }
         List<RobotType.Sensor> sensors = sensors(need(root, "sensors"), body);
         RobotFileLines.Entry p = section(root, "proximity", PROXIMITY);
-        RobotType.Proximity proximity = new RobotType.Proximity(response(p, name), number(need(p, "offset"), 0, 100_000, "counts"),
-                number(need(p, "noise_std_dev"), 0, 100_000, "counts"), number(need(p, "noise_relative"), 0, 10, "(relative)"),
+        RobotType.Proximity proximity =
+                new RobotType.Proximity(response(p, name), number(need(p, "offset"), 0, 100_000, "counts"),
+                number(need(p, "noise_std_dev"), 0, 100_000, "counts"),
+                number(need(p, "noise_relative"), 0, 10, "(relative)"),
                 integer(need(p, "max_reading"), 1, 100_000, "counts"));
         RobotFileLines.Entry l = section(root, "light", LIGHT);
         RobotType.Light light = new RobotType.Light(number(need(l, "dark"), 0, 100_000, "counts"),
-                number(need(l, "bright"), 0, 100_000, "counts"), number(need(l, "noise_relative"), 0, 10, "(relative)"));
+                number(need(l, "bright"), 0, 100_000, "counts"),
+                number(need(l, "noise_relative"), 0, 10, "(relative)"));
         RobotType.Measured measured = root.keys.containsKey("measured") ? measured(section(root, "measured", MEASURED),
                 sensors.size()) : null;
         return new RobotType(name, src, body, drive, sensors, proximity, light, turrets, dialect, measured);
@@ -102,7 +109,8 @@ public final class RobotFileReader {
     private RobotType.Measured measured(RobotFileLines.Entry m, int sensorCount) {
         String robot = text(need(m, "robot"));
         if (!robot.matches("[A-Za-z0-9_.-]{1,40}")) {
-            throw error(need(m, "robot"), "robot '" + robot + "' is not a label; use 1 to 40 letters, digits, '_' or '-'");
+            throw error(need(m, "robot"),
+                    "robot '" + robot + "' is not a label; use 1 to 40 letters, digits, '_' or '-'");
         }
         String date = text(need(m, "date"));
         if (!date.matches("\\d{4}-\\d{2}-\\d{2}")) {
@@ -113,7 +121,8 @@ public final class RobotFileReader {
         List<Double> list = new ArrayList<>();
         for (double v : gains) {
             if (!(v > 0 && v <= 10)) {
-                throw error(g, "gain " + fmt(v) + " is out of range; give each sensor's gain in 0..10 (1: the type's response)");
+                throw error(g, "gain " + fmt(v)
+                        + " is out of range; give each sensor's gain in 0..10 (1: the type's response)");
             }
             list.add(v);
         }
@@ -132,7 +141,8 @@ public final class RobotFileReader {
             throw error(s, "sensors must be a list of '  - name: ...' items, one per sensor, 1 to " + MAX_SENSORS);
         }
         if (s.items.size() > MAX_SENSORS) {
-            throw error(s.items.get(MAX_SENSORS), "more than " + MAX_SENSORS + " sensors; a robot has " + MAX_SENSORS + " at most");
+            throw error(s.items.get(MAX_SENSORS),
+                    "more than " + MAX_SENSORS + " sensors; a robot has " + MAX_SENSORS + " at most");
         }
         List<RobotType.Sensor> out = new ArrayList<>();
         Set<String> names = new HashSet<>();
@@ -144,23 +154,28 @@ public final class RobotFileReader {
             known(item, SENSOR, "a sensor");
             String name = text(need(item, "name"));
             if (!name.matches("[A-Za-z0-9_]{1,20}") || !names.add(name)) {
-                throw error(need(item, "name"), "sensor name '" + name + "' is " + (names.contains(name) ? "used twice" : "not allowed")
+                throw error(need(item, "name"),
+                        "sensor name '" + name + "' is " + (names.contains(name) ? "used twice" : "not allowed")
                         + "; give each sensor its own name of letters, digits and '_'");
             }
-            int channel = integer(need(item, "channel"), 0, s.items.size() - 1, "(the index in the protocol's replies)");
+            int channel = integer(need(item, "channel"), 0, s.items.size() - 1,
+                    "(the index in the protocol's replies)");
             if (!channels.add(channel)) {
-                throw error(need(item, "channel"), "channel " + channel + " is used twice; number the sensors' channels 0 to "
+                throw error(need(item, "channel"),
+                        "channel " + channel + " is used twice; number the sensors' channels 0 to "
                         + (s.items.size() - 1) + ", each once");
             }
             RobotFileLines.Entry o = need(item, "origin");
             double[] xyh = numbers(o, 3, 3);
             double reach = StrictMath.hypot(xyh[0], xyh[1]);
             if (reach > body.radiusMm() + 10) {
-                throw error(o, "origin [" + fmt(xyh[0]) + ", " + fmt(xyh[1]) + "] is " + String.format(Locale.ROOT, "%.1f", reach) + " mm from the centre,"
+                throw error(o, "origin [" + fmt(xyh[0]) + ", " + fmt(xyh[1]) + "] is "
+                        + String.format(Locale.ROOT, "%.1f", reach) + " mm from the centre,"
                         + " beyond the body (radius " + fmt(body.radiusMm()) + " mm); mount the sensor on the body");
             }
             if (xyh[2] <= -360 || xyh[2] >= 360) {
-                throw error(o, "heading " + fmt(xyh[2]) + " is not an angle; use degrees in -360..360, 0 ahead, 90 left");
+                throw error(o, "heading " + fmt(xyh[2])
+                        + " is not an angle; use degrees in -360..360, 0 ahead, 90 left");
             }
             out.add(new RobotType.Sensor(name, channel, xyh[0], xyh[1], xyh[2]));
         }
@@ -176,7 +191,8 @@ public final class RobotFileReader {
             switch (text(kind)) {
                 case "curve" -> {
                     if (!v.items.isEmpty()) {
-                        throw error(v, "a curve's values are one list '[...]' on this line; use 'response: table' for rows");
+                        throw error(v, "a curve's values are one list '[...]' on this line; use 'response:"
+                                + " table' for rows");
                     }
                     double[] weights = numbers(need(p, "weights"), angles.length, angles.length);
                     double[] values = numbers(v, distances.length, distances.length);
@@ -184,7 +200,8 @@ public final class RobotFileReader {
                 }
                 case "table" -> {
                     if (p.keys.containsKey("weights")) {
-                        throw error(p.keys.get("weights"), "a table has no weights (each angle has its own row); remove the line");
+                        throw error(p.keys.get("weights"),
+                                "a table has no weights (each angle has its own row); remove the line");
                     }
                     if (!v.value.isEmpty() || v.items.size() != angles.length) {
                         throw error(v, "a table's values are one row '    - [...]' per angle (" + angles.length
@@ -219,7 +236,8 @@ public final class RobotFileReader {
     private void known(RobotFileLines.Entry e, Set<String> keys, String where) {
         for (RobotFileLines.Entry k : e.keys.values()) {
             if (!keys.contains(k.key)) {
-                throw error(k, "'" + k.key + "' is not a key of " + where + "; use " + String.join(", ", keys.stream().sorted().toList()));
+                throw error(k, "'" + k.key + "' is not a key of " + where + "; use "
+                        + String.join(", ", keys.stream().sorted().toList()));
             }
         }
     }
@@ -243,7 +261,8 @@ public final class RobotFileReader {
     private double number(RobotFileLines.Entry e, double min, double max, String unit) {
         double v = parse(e, text(e));
         if (!(v >= min && v <= max)) {
-            throw error(e, e.key + " " + text(e) + " is out of range; use " + fmt(min) + " to " + fmt(max) + " " + unit);
+            throw error(e, e.key + " " + text(e) + " is out of range; use " + fmt(min) + " to "
+                    + fmt(max) + " " + unit);
         }
         return v;
     }
@@ -295,7 +314,8 @@ public final class RobotFileReader {
         List<String> parts = flow(e);
         String what = e.key.equals("-") ? "the row" : e.key;
         if (parts.size() < min || parts.size() > max) {
-            throw error(e, what + " has " + parts.size() + " values; give " + (min == max ? "" + min : min + " to " + max));
+            throw error(e, what + " has " + parts.size() + " values; give "
+                    + (min == max ? "" + min : min + " to " + max));
         }
         double[] out = new double[parts.size()];
         for (int i = 0; i < out.length; i++) {

@@ -46,7 +46,8 @@ public record RobotType(String name, String source, Body body, Drive drive, List
             throw new IllegalArgumentException("robot " + name + " has no sensors: give one at least");
         }
         if (measured != null && measured.proxGains().size() != sensors.size()) {
-            throw new IllegalArgumentException("robot " + name + " has " + sensors.size() + " sensors but its calibration "
+            throw new IllegalArgumentException("robot " + name + " has " + sensors.size()
+                    + " sensors but its calibration "
                     + measured.proxGains().size() + " gains: give one gain a sensor");
         }
     }
@@ -154,7 +155,8 @@ public record RobotType(String name, String source, Body body, Drive drive, List
      * @param moveSpeed the default top speed of a position move, speed units
      * @param acceleration the default acceleration of a position move, 1/256 speed unit per motor period
      */
-    public record Drive(double wheelBaseMm, double mmPerSecondPerUnit, int maxSpeed, double mmPerPulse, long motorPeriodNanos,
+    public record Drive(double wheelBaseMm, double mmPerSecondPerUnit, int maxSpeed, double mmPerPulse,
+            long motorPeriodNanos,
             long noisePeriodNanos, int moveSpeed, int acceleration) {
     }
 

@@ -46,7 +46,8 @@ public final class RobotTypes {
                 return t;
             }
         }
-        throw new IllegalArgumentException("robot '" + name + "' is not bundled; use one of " + String.join(", ", BUNDLED)
+        throw new IllegalArgumentException("robot '" + name + "' is not bundled; use one of "
+                + String.join(", ", BUNDLED)
                 + ", or a robot file's path");
     }
 
@@ -77,12 +78,15 @@ public final class RobotTypes {
     public static RobotType load(Path file) {
         String source = file.toString();
         if (!java.nio.file.Files.isRegularFile(file)) {
-            throw new RobotFileException(source, 0, "no such robot file; give a bundled robot (" + String.join(", ", BUNDLED)
+            throw new RobotFileException(source, 0,
+                    "no such robot file; give a bundled robot (" + String.join(", ", BUNDLED)
                     + ") or the path of a robot file");
         }
-        String text = TextFiles.readUtf8(file, MAX_BYTES, "robot file", (line, what) -> new RobotFileException(source, line, what));
+        String text = TextFiles.readUtf8(file, MAX_BYTES, "robot file",
+                (line, what) -> new RobotFileException(source, line, what));
         // A calibration (khepera-link calibrate) is the robot it measured.
-        return Calibration.is(text) ? Calibration.parse(source, file, text).type() : RobotFileReader.parse(source, text);
+        return Calibration.is(text) ? Calibration.parse(source, file, text).type()
+                : RobotFileReader.parse(source, text);
     }
 
     /**

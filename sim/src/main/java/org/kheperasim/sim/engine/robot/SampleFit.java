@@ -35,7 +35,9 @@ public final class SampleFit {
      * @param noiseRel the remaining spread relative to the signal (fit error included)
      */
     public record Result(Response.Table table, double[] gains, double offset, double noiseAbs, double noiseRel) {
-        /** @param i a sensor @param gapMm wall gap, mm @param objectRightDeg wall direction @return the fit's reading */
+        /**
+         * @param i a sensor @param gapMm wall gap, mm @param objectRightDeg wall direction @return the fit's reading
+         */
         public double predict(RobotType type, int i, double gapMm, double objectRightDeg) {
             return WallReading.reading(type, table, i, gains[i], offset, gapMm, objectRightDeg);
         }
@@ -285,7 +287,8 @@ public final class SampleFit {
 
     private static double at(double[] row, double d) {
         int c = cell(d);
-        double w = StrictMath.max(0, StrictMath.min(1, (d - DISTANCES_MM[c]) / (DISTANCES_MM[c + 1] - DISTANCES_MM[c])));
+        double w = StrictMath.max(0,
+                StrictMath.min(1, (d - DISTANCES_MM[c]) / (DISTANCES_MM[c + 1] - DISTANCES_MM[c])));
         return row[c] + w * (row[c + 1] - row[c]);
     }
 

@@ -53,7 +53,8 @@ public final class SampleResponses {
     public static List<SampleFit.Sample> samples(SampleTable table, RobotType type) {
         if (table.sensors() != type.sensorCount()) {
             throw new IllegalArgumentException("sample table " + table.source() + " has " + table.sensors()
-                    + " sensors but robot " + type.name() + " has " + type.sensorCount() + ": use a table of that robot");
+                    + " sensors but robot " + type.name() + " has " + type.sensorCount()
+                    + ": use a table of that robot");
         }
         List<SampleFit.Sample> out = new ArrayList<>();
         for (int t = 0; t < table.blocks(); t++) {

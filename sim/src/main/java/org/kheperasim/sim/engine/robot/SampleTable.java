@@ -31,7 +31,8 @@ public final class SampleTable {
     /** {@code counts[block][angle][sensor]}. */
     private final int[][][] counts;
 
-    private SampleTable(String source, int sensors, int angles, int blocks, double initMm, double stepMm, int[][][] counts) {
+    private SampleTable(String source, int sensors, int angles, int blocks, double initMm, double stepMm,
+            int[][][] counts) {
         this.source = source;
         this.sensors = sensors;
         this.angles = angles;
@@ -58,7 +59,8 @@ public final class SampleTable {
      */
     public static SampleTable parse(List<String> lines, String source) {
         if (lines.isEmpty()) {
-            throw bad(source, 1, "is empty", "the first line must be 'nsensors nangles ndistances initdist distinterval'");
+            throw bad(source, 1, "is empty",
+                    "the first line must be 'nsensors nangles ndistances initdist distinterval'");
         }
         String[] head = lines.get(0).trim().split("\\s+");
         if (head.length != 5) {
@@ -79,14 +81,16 @@ public final class SampleTable {
         for (int t = 0; t < nd; t++) {
             String turn = line < lines.size() ? lines.get(line).trim() : "";
             if (!turn.equals("TURN " + t)) {
-                throw bad(source, line + 1, "has '" + turn + "'", "expected 'TURN " + t + "' (" + nd + " blocks of " + na + " lines)");
+                throw bad(source, line + 1, "has '" + turn + "'",
+                        "expected 'TURN " + t + "' (" + nd + " blocks of " + na + " lines)");
             }
             line++;
             for (int k = 0; k < na; k++) {
                 String row = line < lines.size() ? lines.get(line).trim() : "";
                 String[] v = row.isEmpty() ? new String[0] : row.split("\\s+");
                 if (v.length != ns) {
-                    throw bad(source, line + 1, "has " + v.length + " values", "give " + ns + " activations 0..1 per line");
+                    throw bad(source, line + 1, "has " + v.length + " values",
+                            "give " + ns + " activations 0..1 per line");
                 }
                 for (int s = 0; s < ns; s++) {
                     double a = number(v[s], source, line + 1);
@@ -179,6 +183,7 @@ public final class SampleTable {
     }
 
     private static IllegalArgumentException bad(String source, int line, String what, String fix) {
-        return new IllegalArgumentException(String.format(Locale.ROOT, "sample table %s line %d %s: %s", source, line, what, fix));
+        return new IllegalArgumentException(
+                String.format(Locale.ROOT, "sample table %s line %d %s: %s", source, line, what, fix));
     }
 }

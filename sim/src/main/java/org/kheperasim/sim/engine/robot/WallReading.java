@@ -22,7 +22,8 @@ public final class WallReading {
      * @param beamDeg a beam's angle off the sensor's axis, degrees counter-clockwise
      * @return the distance along that beam to the wall, mm; infinity if the beam runs away from it
      */
-    public static double beamDistanceMm(RobotType type, int sensor, double gapMm, double objectRightDeg, double beamDeg) {
+    public static double beamDistanceMm(RobotType type, int sensor, double gapMm, double objectRightDeg,
+            double beamDeg) {
         RobotType.Sensor s = type.sensor(sensor);
         double th = StrictMath.toRadians(objectRightDeg);
         double ux = StrictMath.cos(th);
@@ -68,7 +69,8 @@ public final class WallReading {
      * @param gapMm the wall's distance from the body's surface, mm
      * @param objectRightDeg where the wall lies, degrees to the right of ahead
      */
-    public static double reading(RobotType type, Response response, int sensor, double gain, double offset, double gapMm,
+    public static double reading(RobotType type, Response response, int sensor, double gain,
+            double offset, double gapMm,
             double objectRightDeg) {
         double v = gain * raw(type, response, sensor, gapMm, objectRightDeg) + offset;
         return StrictMath.max(0, StrictMath.min(SampleTable.FULL_SCALE, v));

@@ -125,7 +125,8 @@ public final class LightSensing {
             double exposure = 0;
             if (!dead[i]) {
                 for (int k = 0; k < lights.size(); k++) {
-                    exposure += exposure(lights.get(k), placement.x[i], placement.y[i], placement.dx[i], placement.dy[i]);
+                    exposure += exposure(lights.get(k), placement.x[i], placement.y[i], placement.dx[i],
+                            placement.dy[i]);
                 }
             }
             CounterNoise n = noise[i];

@@ -72,7 +72,10 @@ public final class LinearCamera {
         return take(now).clone();
     }
 
-    /** @param now simulated time, ns @return the index of the brightest pixel of the present image, the leftmost of equals */
+    /**
+     * @param now simulated time, ns @return the index of the brightest pixel of the present image, the leftmost of
+     *     equals
+     */
     public int brightest(long now) {
         int[] img = take(now);
         int best = 0;
@@ -84,7 +87,9 @@ public final class LinearCamera {
         return best;
     }
 
-    /** @param now simulated time, ns @return the index of the darkest pixel of the present image, the leftmost of equals */
+    /**
+     * @param now simulated time, ns @return the index of the darkest pixel of the present image, the leftmost of equals
+     */
     public int darkest(long now) {
         int[] img = take(now);
         int best = 0;
@@ -96,7 +101,10 @@ public final class LinearCamera {
         return best;
     }
 
-    /** @param recorder hears each image the turret takes from now on (see {@link org.kheperasim.sim.engine.Engine#record}) */
+    /**
+     * @param recorder hears each image the turret takes from now on (see
+     *     {@link org.kheperasim.sim.engine.Engine#record})
+     */
     public void record(DriverRecorder recorder) {
         this.recorder = recorder;
     }
@@ -162,7 +170,8 @@ public final class LinearCamera {
         for (int j = 0; j < lights.size(); j++) {
             Light light = lights.get(j);
             double r = StrictMath.hypot(light.x() - px, light.y() - py);
-            if (r >= light.range() || !light.shinesOn(px, py) || !world.grid().lightReaches(px, py, light.x(), light.y())) {
+            if (r >= light.range() || !light.shinesOn(px, py)
+                    || !world.grid().lightReaches(px, py, light.x(), light.y())) {
                 continue;
             }
             double falloff = 1 - r / light.range();

@@ -93,7 +93,8 @@ public final class ProximitySensing {
      */
     private double capFree;
 
-    public ProximitySensing(World world, int self, SensorPlacement placement, RobotModel model, Miscalibration calibration,
+    public ProximitySensing(World world, int self, SensorPlacement placement, RobotModel model,
+            Miscalibration calibration,
             CounterNoise[] noise) {
         this.grid = world.grid();
         this.field = world.field();
@@ -130,7 +131,8 @@ public final class ProximitySensing {
         this.noiseScale = new double[count];
         this.armBlinds = new boolean[count];
         this.reflectance = p.reflectance();
-        this.maxReflectance = StrictMath.max(StrictMath.max(reflectance[1], reflectance[4]), StrictMath.max(reflectance[2], reflectance[3]));
+        this.maxReflectance = StrictMath.max(StrictMath.max(reflectance[1], reflectance[4]),
+                StrictMath.max(reflectance[2], reflectance[3]));
         this.gain = calibration.proxGain;
         this.offset = calibration.proxOffset;
         for (int i = 0; i < count; i++) {
@@ -291,7 +293,8 @@ public final class ProximitySensing {
                 value = n.uniform(k + 2) * 1023;
             }
         }
-        return dead[i] ? 0 : maxReading == 1023 ? SensorPlacement.reading(value) : SensorPlacement.reading(value, maxReading);
+        return dead[i] ? 0 : maxReading == 1023 ? SensorPlacement.reading(value)
+                : SensorPlacement.reading(value, maxReading);
     }
 
     /**
@@ -395,7 +398,9 @@ public final class ProximitySensing {
     /** Index of another robot's body in the reflectance table. */
     private static final int ROBOT = 4;
 
-    /** The samples to come may see only robots {@code ids[from .. to)}, or any (null); see {@link RobotsInReach#scope}. */
+    /**
+     * The samples to come may see only robots {@code ids[from .. to)}, or any (null); see {@link RobotsInReach#scope}.
+     */
     public void scope(int[] ids, int from, int to) {
         robots.scope(ids, from, to);
     }

@@ -55,7 +55,8 @@ public final class Scans {
     private boolean luxDone;
     private final int[] ids = {};
 
-    public Scans(SamplePose sense, ProximitySensing proximity, LightSensing light, Coverage coverage, boolean lamps, int count) {
+    public Scans(SamplePose sense, ProximitySensing proximity, LightSensing light, Coverage coverage,
+            boolean lamps, int count) {
         this.count = count;
         this.prox = new int[count];
         this.lux = new int[count];
@@ -173,7 +174,9 @@ public final class Scans {
         System.arraycopy(lux, 0, out, 0, count);
     }
 
-    /** @return sensor {@code i}'s proximity value in the latest scan at {@code now} (a program on the robot reads it) */
+    /**
+     * @return sensor {@code i}'s proximity value in the latest scan at {@code now} (a program on the robot reads it)
+     */
     public int proximityOf(long now, int i) {
         check(now);
         if (!proxDone) {

@@ -227,7 +227,10 @@ public final class Bodies {
         return which;
     }
 
-    /** @return {@code k} if it touches (px, py) within {@code within} and is lower than {@code which} (or that is -1), else {@code which} */
+    /**
+     * @return {@code k} if it touches (px, py) within {@code within} and is lower than {@code which} (or that is -1),
+     *     else {@code which}
+     */
     private int touching(int k, int self, double px, double py, double within, double far, int which) {
         if (k == self || which >= 0 && k > which) {
             return which;
@@ -252,7 +255,8 @@ public final class Bodies {
      *     in a crowd) names them, which gives the same answer without scanning the buckets
      * @param amongCount how many of {@code among} count
      */
-    public double freeFraction(int exclude, double px, double py, double own, double dx, double dy, int[] among, int amongCount) {
+    public double freeFraction(int exclude, double px, double py, double own, double dx, double dy, int[] among,
+            int amongCount) {
         if (count == 0 || count == 1 && exclude == 0) {
             return 1;
         }
@@ -283,8 +287,12 @@ public final class Bodies {
         return t;
     }
 
-    /** @return the free fraction {@code t} so far, cut short where the move meets robot {@code k} (0: it may not move nearer it at all) */
-    private double approach(int k, int exclude, double px, double py, double own, double dx, double dy, double a, double step,
+    /**
+     * @return the free fraction {@code t} so far, cut short where the move meets robot {@code k} (0: it may not move
+     *     nearer it at all)
+     */
+    private double approach(int k, int exclude, double px, double py, double own, double dx, double dy,
+            double a, double step,
             double t) {
         if (k == exclude) {
             return t;

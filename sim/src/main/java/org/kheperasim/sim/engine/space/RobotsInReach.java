@@ -27,7 +27,9 @@ public final class RobotsInReach {
     private int inCone;
     private double gatherX;
     private double gatherY;
-    /** Notes the robots within {@link #reachable} of ({@link #gatherX}, {@link #gatherY}); made once, not per sample. */
+    /**
+     * Notes the robots within {@link #reachable} of ({@link #gatherX}, {@link #gatherY}); made once, not per sample.
+     */
     private final Bodies.Visitor gather = this::note;
     /** The only robots the samples may see, {@code scope[scopeFrom .. scopeTo)}, or null: any ({@link #scope}). */
     private int[] scope;

@@ -6,7 +6,8 @@ import org.kheperasim.api.GripperState;
  * The gripper turret of one robot at one instant.
  *
  * @param armPosition the arm's position in the turret's 8-bit units, larger = lower
- *     ({@link org.kheperasim.sim.engine.robot.GripperTurret#ARM_UP} raised, {@link org.kheperasim.sim.engine.robot.GripperTurret#ARM_DOWN} at the floor)
+ *     ({@link org.kheperasim.sim.engine.robot.GripperTurret#ARM_UP} raised,
+ *     {@link org.kheperasim.sim.engine.robot.GripperTurret#ARM_DOWN} at the floor)
  * @param armMoving true while the arm travels
  * @param fingers the fingers' state
  * @param objectPresent true when something breaks the optical barrier between the fingers

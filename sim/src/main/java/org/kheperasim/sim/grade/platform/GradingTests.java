@@ -30,7 +30,8 @@ public final class GradingTests {
     public static List<PlatformResult> of(ReportFiles.Report report, Set<String> hidden) {
         for (String h : hidden) {
             if (!report.plan().arenas().contains(h)) {
-                throw new IllegalArgumentException("--hidden " + h + ": not one of the arenas graded (" + String.join(", ",
+                throw new IllegalArgumentException("--hidden " + h + ": not one of the arenas graded ("
+                        + String.join(", ",
                         report.plan().arenas()) + "); give each hidden arena in --arenas too, written the same way");
             }
         }
@@ -53,8 +54,10 @@ public final class GradingTests {
         for (RunRecord r : runs) {
             boolean isHidden = hidden.contains(r.arena());
             String label = ReportFiles.arenaLabel(r.arena());
-            tests.add(new PlatformTest(label + ", seed " + r.seed(), (arenas.indexOf(r.arena()) + 1) + "." + r.seed(), r.points(),
-                    r.max(), r.status() == RunStatus.OK, r.status().word(), output(r), isHidden, r.picture(), r.arena()));
+            tests.add(new PlatformTest(label + ", seed " + r.seed(),
+                    (arenas.indexOf(r.arena()) + 1) + "." + r.seed(), r.points(),
+                    r.max(), r.status() == RunStatus.OK, r.status().word(), output(r), isHidden,
+                    r.picture(), r.arena()));
             if (problem.isEmpty() && notGradable(r)) {
                 problem = r.status().label() + ": " + Shown.line(r.detail());
             }
@@ -65,7 +68,8 @@ public final class GradingTests {
         for (String a : arenas) {
             if (!hidden.contains(a)) {
                 runs.stream().filter(r -> r.arena().equals(a)).mapToDouble(RunRecord::percent).average().ifPresent(m ->
-                        board.add(new PlatformResult.Leader(ReportFiles.arenaLabel(a) + " mean %", ReportFiles.round2(m))));
+                        board.add(new PlatformResult.Leader(ReportFiles.arenaLabel(a) + " mean %",
+                                ReportFiles.round2(m))));
             }
         }
         double score = runs.stream().mapToDouble(RunRecord::points).sum();
@@ -75,7 +79,8 @@ public final class GradingTests {
                         ReportFiles.num(score), ReportFiles.num(max), runs.size(), ok, runs.size() - ok)
                 : "not gradable: " + problem;
         if (notMade > 0) {
-            summary += String.format(Locale.ROOT, "; the grading's deadline passed before %d of the %d runs were made: they"
+            summary += String.format(Locale.ROOT,
+                    "; the grading's deadline passed before %d of the %d runs were made: they"
                     + " count 0, the others keep their points", notMade, runs.size());
         }
         return new PlatformResult(student, tests, problem.isEmpty(), problem, board, summary);
@@ -90,7 +95,8 @@ public final class GradingTests {
     /** The run's points and how it ended, its student text escaped ({@link Shown#line}). */
     static String output(RunRecord r) {
         String head = String.format(Locale.ROOT, "%s: %s of %s points (%s%%) in %.3f simulated s", r.status().label(),
-                ReportFiles.num(r.points()), ReportFiles.num(r.max()), ReportFiles.num(r.percent()), r.simulatedSeconds());
+                ReportFiles.num(r.points()), ReportFiles.num(r.max()), ReportFiles.num(r.percent()),
+                r.simulatedSeconds());
         StringBuilder sb = new StringBuilder(head);
         if (!r.controller().isEmpty()) {
             sb.append("\ncontroller: ").append(Shown.line(r.controller()));

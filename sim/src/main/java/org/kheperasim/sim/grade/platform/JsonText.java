@@ -14,7 +14,9 @@ final class JsonText {
     private JsonText() {
     }
 
-    /** @param value a map, list, string, number, boolean or null @return it as JSON, an entry of a list or map per line */
+    /**
+     * @param value a map, list, string, number, boolean or null @return it as JSON, an entry of a list or map per line
+     */
     static String of(Object value) {
         StringBuilder sb = new StringBuilder();
         write(value, "", sb);

@@ -39,7 +39,8 @@ public final class JunitCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         if (!(points > 0) || Double.isInfinite(points)) {
-            throw new IllegalArgumentException("--points " + points + ": give each test case's points, above 0, e.g. --points 2");
+            throw new IllegalArgumentException("--points " + points
+                    + ": give each test case's points, above 0, e.g. --points 2");
         }
         PlatformResult r = JunitReports.read(reports, student, points, hidden);
         for (Path p : PlatformFormat.writeAll(List.of(r), PlatformFormat.parse(formats), out, 0)) {

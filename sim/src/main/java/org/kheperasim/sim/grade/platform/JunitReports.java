@@ -57,13 +57,16 @@ public final class JunitReports {
             tests.addAll(cases(f, points, hidden, tests.size()));
         }
         if (tests.isEmpty()) {
-            String problem = "no JUnit test case in " + Shown.visible(dir.toString()) + ": the tests did not run (the build"
+            String problem = "no JUnit test case in " + Shown.visible(dir.toString())
+                    + ": the tests did not run (the build"
                     + " failed first; most often the code does not compile: see the build's log)";
             return new PlatformResult(student, List.of(), false, problem, List.of(), "not gradable: " + problem);
         }
         long passed = tests.stream().filter(PlatformTest::passed).count();
-        String summary = String.format(Locale.ROOT, "%s: %d of %d tests passed, %s of %s points", Shown.line(student), passed,
-                tests.size(), org.kheperasim.sim.grade.ReportFiles.num(tests.stream().mapToDouble(PlatformTest::score).sum()),
+        String summary = String.format(Locale.ROOT, "%s: %d of %d tests passed, %s of %s points",
+                Shown.line(student), passed,
+                tests.size(), org.kheperasim.sim.grade.ReportFiles.num(
+                        tests.stream().mapToDouble(PlatformTest::score).sum()),
                 org.kheperasim.sim.grade.ReportFiles.num(points * tests.size()));
         return new PlatformResult(student, tests, true, "", List.of(), summary);
     }
@@ -89,11 +92,13 @@ public final class JunitReports {
             Element failure = first(c, "failure");
             Element error = first(c, "error");
             Element skipped = first(c, "skipped");
-            String status = failure != null ? "failed" : error != null ? "error" : skipped != null ? "skipped" : "passed";
+            String status = failure != null ? "failed" : error != null ? "error" : skipped != null
+                    ? "skipped" : "passed";
             boolean passed = "passed".equals(status);
             Element why = failure != null ? failure : error != null ? error : skipped;
             String output = passed ? "passed" : status + ": " + text(why);
-            out.add(new PlatformTest(Shown.line(name), "1." + (before + out.size() + 1), passed ? points : 0, points, passed,
+            out.add(new PlatformTest(Shown.line(name), "1." + (before + out.size() + 1),
+                    passed ? points : 0, points, passed,
                     status, output, hidden, "", Shown.line(cls)));
         }
         return out;

@@ -57,7 +57,8 @@ public enum PlatformFormat {
                     continue;
                 }
                 out.add(Arrays.stream(values()).filter(f -> f.word().equals(s)).findFirst().orElseThrow(() ->
-                        new IllegalArgumentException("--format " + one.strip() + ": not a platform; give one or more of "
+                        new IllegalArgumentException("--format " + one.strip()
+                                + ": not a platform; give one or more of "
                                 + String.join(", ", Arrays.stream(values()).map(PlatformFormat::word).toList())
                                 + ", e.g. --format gradescope,prairielearn")));
             }
@@ -93,7 +94,8 @@ public enum PlatformFormat {
                 }
             }
         } catch (IOException e) {
-            throw new UncheckedIOException("cannot write the platforms' results in " + reportDir + ": " + e.getMessage(), e);
+            throw new UncheckedIOException("cannot write the platforms' results in " + reportDir + ": "
+                    + e.getMessage(), e);
         }
         return written;
     }

@@ -15,8 +15,9 @@ import picocli.CommandLine.Option;
  */
 public final class PlatformOptions {
     @Option(names = "--format", paramLabel = "PLATFORM", split = ",",
-            description = "also write each submission's result for these platforms: gradescope, prairielearn, classroom,"
-                    + " codegrade (comma separated or repeated), in DIR/PLATFORM/STUDENT/; see docs/autograding.md")
+            description = "also write each submission's result for these platforms: gradescope,"
+                    + " prairielearn, classroom, codegrade (comma separated or repeated), in DIR/PLATFORM/STUDENT/; see"
+                    + " docs/autograding.md")
     List<String> formats = new ArrayList<>();
 
     @Option(names = "--hidden", arity = "1..*", paramLabel = "ARENA",
@@ -25,8 +26,9 @@ public final class PlatformOptions {
     List<String> hidden = new ArrayList<>();
 
     @Option(names = "--deadline", paramLabel = "DURATION",
-            description = "the grading's own real-time limit (e.g. 9m, 540s): when it passes the runs going are stopped and"
-                    + " the report holds the runs made before it, each with its points; keep it below the platform's timeout")
+            description = "the grading's own real-time limit (e.g. 9m, 540s): when it passes the runs going"
+                    + " are stopped and the report holds the runs made before it, each with its points; keep it below"
+                    + " the platform's timeout")
     String deadline;
 
     /** @return the deadline in seconds, or null for none @throws IllegalArgumentException for a bad one */
@@ -38,7 +40,8 @@ public final class PlatformOptions {
     public Set<PlatformFormat> formats() {
         Set<PlatformFormat> f = PlatformFormat.parse(formats);
         if (!hidden.isEmpty() && f.isEmpty()) {
-            throw new IllegalArgumentException("--hidden " + String.join(" ", hidden) + ": hidden from what? give --format"
+            throw new IllegalArgumentException("--hidden " + String.join(" ", hidden)
+                    + ": hidden from what? give --format"
                     + " gradescope (or prairielearn, classroom, codegrade) too");
         }
         return f;
@@ -48,7 +51,8 @@ public final class PlatformOptions {
     public void check(List<String> arenas) {
         for (String h : hidden) {
             if (!arenas.contains(h)) {
-                throw new IllegalArgumentException("--hidden " + h + ": not one of --arenas (" + String.join(", ", arenas)
+                throw new IllegalArgumentException("--hidden " + h + ": not one of --arenas ("
+                        + String.join(", ", arenas)
                         + "); give each hidden arena in --arenas too, written the same way");
             }
         }

@@ -16,7 +16,8 @@ package org.kheperasim.sim.grade.platform;
  * @param picture the trajectory picture, relative to the report folder, or empty
  * @param group   the arena (or the JUnit class) it belongs to, for a leaderboard
  */
-public record PlatformTest(String name, String number, double score, double max, boolean passed, String status, String output,
+public record PlatformTest(String name, String number, double score, double max, boolean passed,
+        String status, String output,
         boolean hidden, String picture, String group) {
     /** Replaces nulls by empty text. */
     public PlatformTest {

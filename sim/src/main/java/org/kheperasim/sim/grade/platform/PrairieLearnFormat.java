@@ -78,7 +78,8 @@ final class PrairieLearnFormat {
             tests.get(i).put("images", List.of(Map.of("label", "trajectory, " + p.name(), "url", url)));
         }
         if (left > 0) {
-            top.put("message", r.summary() + String.format(Locale.ROOT, "; %d trajectory pictures left out to keep the result"
+            top.put("message", r.summary()
+                    + String.format(Locale.ROOT, "; %d trajectory pictures left out to keep the result"
                     + " within PrairieLearn's 1 MB", left));
         }
         return JsonText.of(top);

@@ -24,7 +24,8 @@ final class ThreadNumbering {
 
     /** @return the counter of this JVM, or null when it cannot be read and set here */
     static ThreadNumbering at() {
-        for (String[] where : new String[][] {{"java.lang.Thread$ThreadNumbering", "next"}, {"java.lang.Thread", "threadInitNumber"}}) {
+        for (String[] where : new String[][] {{"java.lang.Thread$ThreadNumbering", "next"},
+                {"java.lang.Thread", "threadInitNumber"}}) {
             try {
                 Field f = Class.forName(where[0]).getDeclaredField(where[1]);
                 f.setAccessible(true);

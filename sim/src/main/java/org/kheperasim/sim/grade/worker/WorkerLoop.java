@@ -44,7 +44,9 @@ public final class WorkerLoop {
     /** How long a run's threads may take to end after it, ms. */
     private static final long THREAD_GRACE_MILLIS = 2000;
 
-    /** Makes one run: a graded run with these arguments, in this JVM; returns the exit status its JVM would end with. */
+    /**
+     * Makes one run: a graded run with these arguments, in this JVM; returns the exit status its JVM would end with.
+     */
     @FunctionalInterface
     public interface Launcher {
         /**
@@ -119,7 +121,8 @@ public final class WorkerLoop {
             WorkerRun run = make(req);
             String why = run.restartReason() != null ? run.restartReason()
                     : numbering == null ? "this JDK's numbering of unnamed threads cannot be put back" : leftovers();
-            WorkerProtocol.Mark next = why == null ? new WorkerProtocol.Mark(WorkerProtocol.Kind.READY, req.token(), -1, 0, "")
+            WorkerProtocol.Mark next =
+                    why == null ? new WorkerProtocol.Mark(WorkerProtocol.Kind.READY, req.token(), -1, 0, "")
                     : new WorkerProtocol.Mark(WorkerProtocol.Kind.RESTART, req.token(), -1, 0, why);
             err.println(next.line());
             err.flush();
@@ -201,7 +204,8 @@ public final class WorkerLoop {
         long used = collectedHeap();
         long max = Runtime.getRuntime().maxMemory();
         if (used - heapAfterWarmUp > max / 8) {
-            return String.format(Locale.ROOT, "the heap holds %d MiB after a full collection, %d MiB more than after the"
+            return String.format(Locale.ROOT,
+                    "the heap holds %d MiB after a full collection, %d MiB more than after the"
                     + " warm-up", used >> 20, (used - heapAfterWarmUp) >> 20);
         }
         return null;
@@ -252,7 +256,8 @@ public final class WorkerLoop {
             sleep(100);
             WorkerRun run = WorkerRun.current();
             if (run != null && System.nanoTime() > run.deadlineNanos()) {
-                err.println(String.format(Locale.ROOT, "khepera-sim: error: the run passed its wall-clock limit of %.0f s"
+                err.println(String.format(Locale.ROOT,
+                        "khepera-sim: error: the run passed its wall-clock limit of %.0f s"
                         + " and ends itself (exit status %d)", run.wallSeconds(), WALL_LIMIT_EXIT));
                 err.flush();
                 Runtime.getRuntime().halt(WALL_LIMIT_EXIT);

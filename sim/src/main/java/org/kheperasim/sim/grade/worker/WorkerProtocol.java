@@ -125,7 +125,8 @@ public final class WorkerProtocol {
                     case "start" -> new Mark(Kind.START, token, Integer.parseInt(rest.strip()), 0, "");
                     case "done" -> {
                         String[] n = rest.strip().split(" ");
-                        yield n.length == 2 ? new Mark(Kind.DONE, token, Integer.parseInt(n[0]), Integer.parseInt(n[1]), "") : null;
+                        yield n.length == 2 ? new Mark(Kind.DONE, token, Integer.parseInt(n[0]),
+                                Integer.parseInt(n[1]), "") : null;
                     }
                     case "ready" -> rest.isBlank() ? new Mark(Kind.READY, token, -1, 0, "") : null;
                     case "restart" -> new Mark(Kind.RESTART, token, -1, 0, rest.strip());

@@ -73,7 +73,8 @@ public final class WorkerRun {
             }
         }
         System.out.flush();
-        err.println(new WorkerProtocol.Mark(WorkerProtocol.Kind.DONE, request.token(), request.index(), exit, "").line());
+        err.println(new WorkerProtocol.Mark(WorkerProtocol.Kind.DONE, request.token(), request.index(),
+                exit, "").line());
         err.flush();
     }
 
@@ -98,7 +99,9 @@ public final class WorkerRun {
         }
     }
 
-    /** @return when the run passes its wall-clock limit, {@link System#nanoTime()} ns; {@link Long#MAX_VALUE} for never */
+    /**
+     * @return when the run passes its wall-clock limit, {@link System#nanoTime()} ns; {@link Long#MAX_VALUE} for never
+     */
     long deadlineNanos() {
         return deadlineNanos;
     }

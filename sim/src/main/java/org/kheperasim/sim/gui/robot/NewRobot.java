@@ -36,7 +36,8 @@ final class NewRobot {
      * @param like the robot whose response, drive periods and light it takes
      * @return the new robot (unchecked: the draft checks it)
      */
-    static RobotType design(String name, double radiusMm, double wheelBaseMm, double speedUnit, int sensors, RobotType like) {
+    static RobotType design(String name, double radiusMm, double wheelBaseMm, double speedUnit, int sensors,
+            RobotType like) {
         int back = sensors / 4;
         int front = sensors - back;
         List<RobotType.Sensor> list = new ArrayList<>();
@@ -88,7 +89,8 @@ final class NewRobot {
         p.add(unit);
         p.add(new JLabel("Sensors"));
         p.add(count);
-        if (JOptionPane.showConfirmDialog(owner, p, "New robot", JOptionPane.OK_CANCEL_OPTION) != JOptionPane.OK_OPTION) {
+        if (JOptionPane.showConfirmDialog(owner, p, "New robot",
+                JOptionPane.OK_CANCEL_OPTION) != JOptionPane.OK_OPTION) {
             return null;
         }
         RobotType t = design(name.getText().strip(), ((Number) radius.getValue()).doubleValue(),

@@ -65,7 +65,8 @@ final class ResponsePanel extends JPanel {
         for (double x : r.anglesDeg()) {
             angles.append(angles.length() == 0 ? "" : ", ").append(RobotChecks.num(x));
         }
-        String form = r instanceof Response.Curve ? "a curve, weighted per beam angle" : "a table over distance and angle";
+        String form = r instanceof Response.Curve ? "a curve, weighted per beam angle"
+                : "a table over distance and angle";
         kind.setText("<html>Sensor " + draft.selected() + " (" + t.sensor(draft.selected()).name() + "): " + form
                 + "; beams at " + angles + " degrees; range " + RobotChecks.num(r.rangeMm()) + " mm; offset "
                 + RobotChecks.num(t.proximity().offset()) + " and noise come on top</html>");

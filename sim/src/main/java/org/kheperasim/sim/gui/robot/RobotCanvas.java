@@ -177,12 +177,16 @@ final class RobotCanvas extends JComponent {
         }
         g.setColor(Color.DARK_GRAY);
         g.setFont(getFont().deriveFont(Font.PLAIN, 11f));
-        g.drawString(String.format(java.util.Locale.ROOT, "%s: body radius %s mm, wheel base %s mm; grid %s mm; front up",
-                t.name(), RobotChecks.num(r), RobotChecks.num(t.drive().wheelBaseMm()), RobotChecks.num(GRID_MM)), 6, 14);
+        g.drawString(String.format(java.util.Locale.ROOT,
+                "%s: body radius %s mm, wheel base %s mm; grid %s mm; front up",
+                t.name(), RobotChecks.num(r), RobotChecks.num(t.drive().wheelBaseMm()),
+                RobotChecks.num(GRID_MM)), 6, 14);
         RobotType.Sensor c0 = t.sensor(draft.selected());
         g.setColor(new Color(200, 40, 10));
-        g.drawString(String.format(java.util.Locale.ROOT, "sensor %d %s at (%s, %s) mm, heading %s deg", draft.selected(),
-                c0.name(), RobotChecks.num(c0.xMm()), RobotChecks.num(c0.yMm()), RobotChecks.num(c0.headingDeg())), 6, 28);
+        g.drawString(String.format(java.util.Locale.ROOT, "sensor %d %s at (%s, %s) mm, heading %s deg",
+                draft.selected(),
+                c0.name(), RobotChecks.num(c0.xMm()), RobotChecks.num(c0.yMm()),
+                RobotChecks.num(c0.headingDeg())), 6, 28);
         g.dispose();
     }
 
@@ -236,6 +240,7 @@ final class RobotCanvas extends JComponent {
         double h = StrictMath.toRadians(sensor.headingDeg());
         String label = Integer.toString(i);
         int w = g.getFontMetrics().stringWidth(label);
-        g.drawString(label, (float) (tip.getX() - 12 * StrictMath.sin(h) - w / 2.0), (float) (tip.getY() - 12 * StrictMath.cos(h) + 4));
+        g.drawString(label, (float) (tip.getX() - 12 * StrictMath.sin(h) - w / 2.0),
+                (float) (tip.getY() - 12 * StrictMath.cos(h) + 4));
     }
 }

@@ -68,7 +68,8 @@ final class RobotChecks {
                         + "); give each sensor its own name";
             }
             if (!Double.isFinite(s.xMm()) || !Double.isFinite(s.yMm()) || !Double.isFinite(s.headingDeg())) {
-                return "sensor " + i + " (" + s.name() + ") has a position or heading that is not a number; give mm and degrees";
+                return "sensor " + i + " (" + s.name()
+                        + ") has a position or heading that is not a number; give mm and degrees";
             }
             double at = StrictMath.hypot(s.xMm(), s.yMm());
             if (at > r + MOUNT_SLACK_MM) {
@@ -82,7 +83,8 @@ final class RobotChecks {
 
     private static String range(String field, double v, double lo, double hi, String unit) {
         if (!(v >= lo && v <= hi)) {
-            return field + " " + num(v) + " " + unit + " is out of range; give " + num(lo) + " to " + num(hi) + " " + unit;
+            return field + " " + num(v) + " " + unit + " is out of range; give " + num(lo) + " to "
+                    + num(hi) + " " + unit;
         }
         return null;
     }

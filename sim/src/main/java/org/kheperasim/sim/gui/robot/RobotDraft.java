@@ -22,7 +22,10 @@ final class RobotDraft {
     private boolean dirty;
     private int selected;
 
-    /** @param store the robot files' reader, for its checks @param type the robot to start from @param file its file, or null */
+    /**
+     * @param store the robot files' reader, for its checks @param type the robot to start from @param file its file, or
+     *     null
+     */
     RobotDraft(RobotFileStore store, RobotType type, Path file) {
         this.store = store;
         this.type = type;
@@ -99,7 +102,8 @@ final class RobotDraft {
     }
 
     String setName(String name) {
-        return apply(new RobotType(name, type.source(), type.body(), type.drive(), type.sensors(), named(type.proximity(), name),
+        return apply(new RobotType(name, type.source(), type.body(), type.drive(), type.sensors(),
+                named(type.proximity(), name),
                 type.light(), type.turrets(), type.dialect(), type.measured()));
     }
 
@@ -131,13 +135,15 @@ final class RobotDraft {
 
     String setSpeedUnit(double mmPerSecond) {
         RobotType.Drive d = type.drive();
-        return drive(new RobotType.Drive(d.wheelBaseMm(), mmPerSecond, d.maxSpeed(), d.mmPerPulse(), d.motorPeriodNanos(),
+        return drive(new RobotType.Drive(d.wheelBaseMm(), mmPerSecond, d.maxSpeed(), d.mmPerPulse(),
+                d.motorPeriodNanos(),
                 d.noisePeriodNanos(), d.moveSpeed(), d.acceleration()));
     }
 
     String setMaxSpeed(int units) {
         RobotType.Drive d = type.drive();
-        return drive(new RobotType.Drive(d.wheelBaseMm(), d.mmPerSecondPerUnit(), units, d.mmPerPulse(), d.motorPeriodNanos(),
+        return drive(new RobotType.Drive(d.wheelBaseMm(), d.mmPerSecondPerUnit(), units, d.mmPerPulse(),
+                d.motorPeriodNanos(),
                 d.noisePeriodNanos(), d.moveSpeed(), d.acceleration()));
     }
 

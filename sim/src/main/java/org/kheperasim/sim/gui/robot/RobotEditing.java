@@ -143,7 +143,8 @@ public final class RobotEditing {
         }
         List<RobotKind> kinds = new ArrayList<>(a.robotKinds());
         kinds.set(i, kind);
-        Arena next = new Arena(a.name(), a.width(), a.height(), a.robots(), a.walls(), a.lights(), a.caps(), a.regions(),
+        Arena next = new Arena(a.name(), a.width(), a.height(), a.robots(), a.walls(), a.lights(),
+                a.caps(), a.regions(),
                 a.assignment(), kinds);
         // A run's robots keep their types: the run ends, the arena takes the type, and a new run starts with it.
         discardRun.run();

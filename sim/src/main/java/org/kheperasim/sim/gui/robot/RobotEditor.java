@@ -210,7 +210,8 @@ public final class RobotEditor {
         if (!draft.dirty()) {
             return true;
         }
-        return JOptionPane.showConfirmDialog(frame, "The robot " + draft.type().name() + " has unsaved changes. Drop them"
+        return JOptionPane.showConfirmDialog(frame,
+                "The robot " + draft.type().name() + " has unsaved changes. Drop them"
                 + " before " + doing + "?", "Unsaved changes", JOptionPane.OK_CANCEL_OPTION) == JOptionPane.OK_OPTION;
     }
 

@@ -47,7 +47,10 @@ final class RobotSheet extends AbstractTableModel {
         return t;
     }
 
-    /** @param label a row's label, e.g. {@code wheel base, mm} or {@code sensor 3 heading, degrees} @return its row, or -1 */
+    /**
+     * @param label a row's label, e.g. {@code wheel base, mm} or {@code sensor 3 heading, degrees} @return its row, or
+     *     -1
+     */
     int row(String label) {
         for (int r = 0; r < getRowCount(); r++) {
             if (getValueAt(r, 0).equals(label)) {

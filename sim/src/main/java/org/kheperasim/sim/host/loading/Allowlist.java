@@ -47,7 +47,8 @@ final class Allowlist {
             if (in == null) {
                 throw new IllegalStateException("the controller allowlist " + RESOURCE + " is missing from the build");
             }
-            return new Allowlist(AllowlistParser.parse(RESOURCE, new String(in.readAllBytes(), StandardCharsets.UTF_8)));
+            return new Allowlist(
+                    AllowlistParser.parse(RESOURCE, new String(in.readAllBytes(), StandardCharsets.UTF_8)));
         } catch (IOException e) {
             throw new UncheckedIOException("cannot read the controller allowlist " + RESOURCE, e);
         }
@@ -79,7 +80,8 @@ final class Allowlist {
      */
     boolean allowsMember(String binaryName, String member, List<String> parameters, boolean asBootstrap,
             BiPredicate<String, String> isSubclass) {
-        String key = binaryName + (asBootstrap ? "#" : ".") + member + (parameters == null ? "" : parameters.toString());
+        String key = binaryName + (asBootstrap ? "#" : ".") + member
+                + (parameters == null ? "" : parameters.toString());
         return answers.computeIfAbsent(key, k -> decide(binaryName, member, parameters, asBootstrap, isSubclass));
     }
 

@@ -104,7 +104,8 @@ final class AllowlistParser {
         }
         List<AllowlistEntry> entries = new ArrayList<>();
         for (String c : expand(file, line, classes)) {
-            entries.add(new AllowlistEntry(pattern(file, line, c, mustExtend), List.copyOf(members), reason, group, line));
+            entries.add(new AllowlistEntry(pattern(file, line, c, mustExtend), List.copyOf(members),
+                    reason, group, line));
         }
         return entries;
     }

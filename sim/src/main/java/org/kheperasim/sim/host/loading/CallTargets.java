@@ -9,7 +9,8 @@ import org.objectweb.asm.Type;
  * Where a call in controller code goes instead: the time calls to {@link SimClock}, and for
  * contained code the escapes to {@link org.kheperasim.sim.host.Containment}, the thread calls to
  * {@link org.kheperasim.sim.host.ThreadHooks}, {@code wait}, {@code notify}, {@code notifyAll} and
- * {@code Thread.holdsLock} to {@link MonitorHooks} (each robot's own monitors), the resource reads to {@link ResourceHooks},
+ * {@code Thread.holdsLock} to {@link MonitorHooks} (each robot's own monitors), the resource reads to
+ * {@link ResourceHooks},
  * {@code printStackTrace()} and {@code Logger.getLogger} to {@link ConsoleHooks}, and the parallel
  * stream methods to their sequential twins (see {@link TimeCallRewriter} for what is rewritten and
  * why).
@@ -32,7 +33,8 @@ final class CallTargets {
     static final String CALENDAR_HOOKS = Type.getInternalName(CalendarHooks.class);
     private static final String CALENDAR = "java/util/Calendar";
     private static final Set<String> CALENDAR_STATICS = Set.of("getInstance()Ljava/util/Calendar;",
-            "getInstance(Ljava/util/TimeZone;)Ljava/util/Calendar;", "getInstance(Ljava/util/Locale;)Ljava/util/Calendar;",
+            "getInstance(Ljava/util/TimeZone;)Ljava/util/Calendar;",
+            "getInstance(Ljava/util/Locale;)Ljava/util/Calendar;",
             "getInstance(Ljava/util/TimeZone;Ljava/util/Locale;)Ljava/util/Calendar;");
 
     /** The replacement of the instance method {@code TimeUnit.sleep(long)}: the unit comes first. */
@@ -48,7 +50,8 @@ final class CallTargets {
     private static final java.util.Map<String, String> THREAD_VIRTUALS = java.util.Map.of(
             "start()V", "start", "join()V", "join", "join(J)V", "join", "join(JI)V", "join",
             "isAlive()Z", "isAlive", "interrupt()V", "interrupt", "isInterrupted()Z", "isInterrupted",
-            "getState()Ljava/lang/Thread$State;", "getState", "getStackTrace()[Ljava/lang/StackTraceElement;", "getStackTrace");
+            "getState()Ljava/lang/Thread$State;", "getState", "getStackTrace()[Ljava/lang/StackTraceElement;",
+            "getStackTrace");
 
     /**
      * The methods of {@code Thread} whose {@code super} calls (from a subclass that overrides them)
@@ -98,17 +101,22 @@ final class CallTargets {
             "java/lang/Class.getResource(Ljava/lang/String;)Ljava/net/URL;", new String[] {RESOURCES, "getResource"},
             "java/lang/Class.getResourceAsStream(Ljava/lang/String;)Ljava/io/InputStream;",
             new String[] {RESOURCES, "getResourceAsStream"},
-            "java/lang/ClassLoader.getResource(Ljava/lang/String;)Ljava/net/URL;", new String[] {RESOURCES, "getResource"},
+            "java/lang/ClassLoader.getResource(Ljava/lang/String;)Ljava/net/URL;",
+            new String[] {RESOURCES, "getResource"},
             "java/lang/ClassLoader.getResourceAsStream(Ljava/lang/String;)Ljava/io/InputStream;",
             new String[] {RESOURCES, "getResourceAsStream"});
 
     /** {@code Logger.getLogger(String)}, which {@link ConsoleHooks} answers with a logger of the run's own. */
-    private static final String GET_LOGGER = "java/util/logging/Logger.getLogger(Ljava/lang/String;)Ljava/util/logging/Logger;";
+    private static final String GET_LOGGER =
+            "java/util/logging/Logger.getLogger(Ljava/lang/String;)Ljava/util/logging/Logger;";
 
     private static final String THROWABLE = "java/lang/Throwable";
     private static final String PRINT_STACK_TRACE = "printStackTrace()V";
 
-    /** Methods of parallel streams, by declaring class, name and descriptor: the sequential method of the same descriptor. */
+    /**
+     * Methods of parallel streams, by declaring class, name and descriptor: the sequential method of the same
+     * descriptor.
+     */
     private static final java.util.Map<String, String> SEQUENTIAL = java.util.Map.of(
             "java/util/Collection.parallelStream()Ljava/util/stream/Stream;", "stream",
             "java/util/stream/BaseStream.parallel()Ljava/util/stream/BaseStream;", "sequential",

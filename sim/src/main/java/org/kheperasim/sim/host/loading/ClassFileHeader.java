@@ -36,7 +36,8 @@ final class ClassFileHeader {
             int running = Runtime.version().feature();
             String newest = NEWEST_VERSION - 44 == running ? "this Java " + running
                     : "Java " + (NEWEST_VERSION - 44) + ", the newest this simulator reads";
-            throw new UnsupportedClassVersionError(prefix + "compiled for Java " + (major - 44) + " (class file version "
+            throw new UnsupportedClassVersionError(prefix + "compiled for Java " + (major - 44)
+                    + " (class file version "
                     + major + "), newer than " + newest + "; compile it with `--release 17`");
         }
     }

@@ -82,7 +82,9 @@ final class ClassHierarchy implements HierarchyLookup {
         return found.size() == 1 ? found.get(0) : null;
     }
 
-    /** @return whether the loader defines the class itself (from the classpath, or a class file resource of the parent) */
+    /**
+     * @return whether the loader defines the class itself (from the classpath, or a class file resource of the parent)
+     */
     boolean isLocal(String internalName) {
         return facts(internalName).local();
     }
@@ -211,7 +213,8 @@ final class ClassHierarchy implements HierarchyLookup {
 
     private ClassFacts read(String internalName) {
         byte[] classFile = localClassFile.apply(internalName);
-        return classFile != null ? fromClassFile(classFile) : parentFacts.computeIfAbsent(internalName, this::fromParent);
+        return classFile != null ? fromClassFile(classFile)
+                : parentFacts.computeIfAbsent(internalName, this::fromParent);
     }
 
     /** Superclass, interfaces and declared members from a class file the loader would define. */
@@ -229,7 +232,8 @@ final class ClassHierarchy implements HierarchyLookup {
                 }
 
                 @Override
-                public FieldVisitor visitField(int access, String name, String descriptor, String signature, Object value) {
+                public FieldVisitor visitField(int access, String name, String descriptor,
+                        String signature, Object value) {
                     fields.add(name);
                     return null;
                 }
@@ -266,7 +270,8 @@ final class ClassHierarchy implements HierarchyLookup {
             }
             Class<?> superclass = type.getSuperclass();
             List<String> interfaces = Arrays.stream(type.getInterfaces()).map(Type::getInternalName).toList();
-            return new ClassFacts(false, type.isInterface(), superclass == null ? null : Type.getInternalName(superclass),
+            return new ClassFacts(false, type.isInterface(),
+                    superclass == null ? null : Type.getInternalName(superclass),
                     interfaces, Set.copyOf(methods), Set.copyOf(fields));
         } catch (ClassNotFoundException | LinkageError e) {
             return ClassFacts.MISSING;

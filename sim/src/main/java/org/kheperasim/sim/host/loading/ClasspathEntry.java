@@ -135,7 +135,8 @@ abstract class ClasspathEntry implements Closeable {
             } catch (IOException | SecurityException e) {
                 return null;
             }
-            return resolved.startsWith(real) && Files.isRegularFile(resolved, LinkOption.NOFOLLOW_LINKS) ? resolved : null;
+            return resolved.startsWith(real) && Files.isRegularFile(resolved, LinkOption.NOFOLLOW_LINKS)
+                    ? resolved : null;
         }
 
         @Override

@@ -144,7 +144,8 @@ final class ControllerCheck {
         }
 
         @Override
-        public void visit(int version, int access, String name, String signature, String superName, String[] interfaces) {
+        public void visit(int version, int access, String name, String signature, String superName,
+                String[] interfaces) {
             className = name;
             this.superName = superName;
             if (superName != null) {
@@ -162,8 +163,10 @@ final class ControllerCheck {
         }
 
         @Override
-        public MethodVisitor visitMethod(int access, String name, String descriptor, String signature, String[] exceptions) {
-            boolean finalizer = name.equals("finalize") && descriptor.equals("()V") && (access & Opcodes.ACC_STATIC) == 0;
+        public MethodVisitor visitMethod(int access, String name, String descriptor, String signature,
+                String[] exceptions) {
+            boolean finalizer = name.equals("finalize") && descriptor.equals("()V")
+                    && (access & Opcodes.ACC_STATIC) == 0;
             return new Instructions(finalizer);
         }
 

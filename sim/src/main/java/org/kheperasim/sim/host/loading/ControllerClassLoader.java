@@ -57,7 +57,8 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
     /** Names in the simulator's packages that the simulator does not define, by name: decided once per loader. */
     private final java.util.Map<String, Boolean> simulatorDefines = new java.util.concurrent.ConcurrentHashMap<>();
     /** Names the simulator defines that a classpath entry holds too (the simulator's are used), in order. */
-    private final java.util.Set<String> shadowed = java.util.Collections.synchronizedSet(new java.util.LinkedHashSet<>());
+    private final java.util.Set<String> shadowed =
+            java.util.Collections.synchronizedSet(new java.util.LinkedHashSet<>());
 
     private final List<ClasspathEntry> roots;
     private final ClassHierarchy hierarchy;
@@ -66,7 +67,8 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
     /** Its code's own monitors for objects it does not own (see {@link MonitorHooks}). */
     private final Monitors monitors = new Monitors(this);
     /** Class files read for the check and the hierarchy, by internal name (empty: none). */
-    private final java.util.Map<String, java.util.Optional<byte[]>> classFiles = new java.util.concurrent.ConcurrentHashMap<>();
+    private final java.util.Map<String, java.util.Optional<byte[]>> classFiles =
+            new java.util.concurrent.ConcurrentHashMap<>();
     /** Where each class file read came from, by internal name, for messages. */
     private final java.util.Map<String, String> locations = new java.util.concurrent.ConcurrentHashMap<>();
 
@@ -129,7 +131,9 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         }
     }
 
-    /** @return whether {@code className} comes from the parent: a platform or library name, or one the simulator defines */
+    /**
+     * @return whether {@code className} comes from the parent: a platform or library name, or one the simulator defines
+     */
     private boolean isShared(String className) {
         for (String prefix : SHARED_PREFIXES) {
             if (className.startsWith(prefix)) {
@@ -169,7 +173,10 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         }
     }
 
-    /** @return whether the name is in one of the simulator's packages (then only the classpath entries hold its class file) */
+    /**
+     * @return whether the name is in one of the simulator's packages (then only the classpath entries hold its class
+     *     file)
+     */
     private static boolean inSimulatorPackage(String className) {
         for (String prefix : SIMULATOR_PREFIXES) {
             if (className.startsWith(prefix)) {
@@ -346,7 +353,9 @@ public final class ControllerClassLoader extends ClassLoader implements Closeabl
         return url != null ? url : getParent().getResource(name);
     }
 
-    /** All copies of a resource: those in the classpath entries in order, then the parent's (see {@link #getResource}). */
+    /**
+     * All copies of a resource: those in the classpath entries in order, then the parent's (see {@link #getResource}).
+     */
     @Override
     public Enumeration<URL> getResources(String name) throws IOException {
         List<URL> urls = Collections.list(findResources(name));

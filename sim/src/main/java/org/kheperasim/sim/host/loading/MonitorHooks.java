@@ -31,7 +31,8 @@ public final class MonitorHooks {
         if (monitor == null) {
             return null;
         }
-        return caller.getClassLoader() instanceof ControllerClassLoader loader ? loader.monitors().of(monitor) : monitor;
+        return caller.getClassLoader() instanceof ControllerClassLoader loader
+                ? loader.monitors().of(monitor) : monitor;
     }
 
     /** {@link #own(Object, Class)} for the nearest controller class on the calling thread's stack. */

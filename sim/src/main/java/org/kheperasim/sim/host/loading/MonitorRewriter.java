@@ -262,7 +262,8 @@ final class MonitorRewriter extends MethodVisitor {
     }
 
     @Override
-    public void visitLocalVariable(String name, String descriptor, String signature, Label start, Label end, int index) {
+    public void visitLocalVariable(String name, String descriptor, String signature, Label start,
+            Label end, int index) {
         release();
         super.visitLocalVariable(name, descriptor, signature, start, end, index);
     }

@@ -21,7 +21,8 @@ final class OutputRewriter extends MethodVisitor {
 
     @Override
     public void visitFieldInsn(int opcode, String owner, String name, String descriptor) {
-        if (opcode == Opcodes.GETSTATIC && owner.equals("java/lang/System") && descriptor.equals("Ljava/io/PrintStream;")
+        if (opcode == Opcodes.GETSTATIC && owner.equals("java/lang/System")
+                && descriptor.equals("Ljava/io/PrintStream;")
                 && (name.equals("out") || name.equals("err"))) {
             changed.run();
             super.visitMethodInsn(Opcodes.INVOKESTATIC, OUTPUT, name, "()Ljava/io/PrintStream;", false);

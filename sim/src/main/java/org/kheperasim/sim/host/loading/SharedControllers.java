@@ -67,7 +67,8 @@ public final class SharedControllers {
         if (!r.stateless() || r.closure().isEmpty()) {
             return false;
         }
-        SHARED.put(new Key(List.copyOf(classpath), name, loader.contained()), new Shared(type, Map.copyOf(r.closure())));
+        SHARED.put(new Key(List.copyOf(classpath), name, loader.contained()),
+                new Shared(type, Map.copyOf(r.closure())));
         return true;
     }
 

@@ -44,7 +44,10 @@ final class StatelessCheck implements Opcodes {
         this.own = own;
     }
 
-    /** What the check found: the class files of the controller's own classes it reaches, and why it is not stateless (null: it is). */
+    /**
+     * What the check found: the class files of the controller's own classes it reaches, and why it is not stateless
+     * (null: it is).
+     */
     record Result(Map<String, byte[]> closure, String why) {
         boolean stateless() {
             return why == null;
@@ -279,7 +282,8 @@ final class StatelessCheck implements Opcodes {
             }
             escape("passed to " + owner.replace('/', '.') + "." + name);
             boolean constants = owner.equals(className) && (name.equals("<init>") || name.equals("$values"))
-                    || immutable(owner) && name.equals("valueOf") || owner.equals("java/lang/Enum") && name.equals("<init>");
+                    || immutable(owner) && name.equals("valueOf")
+                    || owner.equals("java/lang/Enum") && name.equals("<init>");
             if (init && !constants) {
                 fail(className, "its static initializer calls " + owner.replace('/', '.') + "." + name
                         + " (shared, it would run once for all robots, not once for each)");
@@ -342,7 +346,8 @@ final class StatelessCheck implements Opcodes {
 
     /** Instructions that only compute with numbers on the stack (an index, a value read). */
     private static boolean pureArithmetic(int opcode) {
-        return opcode >= ICONST_M1 && opcode <= DCONST_1 || opcode >= IADD && opcode <= LXOR || opcode >= I2L && opcode <= I2S
+        return opcode >= ICONST_M1 && opcode <= DCONST_1 || opcode >= IADD && opcode <= LXOR
+                || opcode >= I2L && opcode <= I2S
                 || opcode >= LCMP && opcode <= DCMPG;
     }
 }

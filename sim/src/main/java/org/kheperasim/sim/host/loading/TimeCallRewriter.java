@@ -133,7 +133,8 @@ public final class TimeCallRewriter {
         }
 
         @Override
-        public void visit(int version, int access, String name, String signature, String superName, String[] interfaces) {
+        public void visit(int version, int access, String name, String signature, String superName,
+                String[] interfaces) {
             className = name;
             this.version = version;
             super.visit(version, access, name, signature, superName, interfaces);
@@ -147,7 +148,8 @@ public final class TimeCallRewriter {
                 return next == null ? null : new MethodRewriter(next);
             }
             // Contained code's monitors join the lockstep: a synchronized method gets an explicit block.
-            int kept = MonitorRewriter.isRewrittenSynchronized(access, version) ? access & ~Opcodes.ACC_SYNCHRONIZED : access;
+            int kept = MonitorRewriter.isRewrittenSynchronized(access, version)
+                    ? access & ~Opcodes.ACC_SYNCHRONIZED : access;
             MethodVisitor next = super.visitMethod(kept, name, descriptor, signature, exceptions);
             return next == null ? null
                     : new MethodRewriter(new MonitorRewriter(new OutputRewriter(next, () -> changed = true), access,
@@ -169,7 +171,8 @@ public final class TimeCallRewriter {
                         return handle;
                     }
                     changed = true;
-                    return new Handle(handle.getTag(), handle.getOwner(), renamed, handle.getDesc(), handle.isInterface());
+                    return new Handle(handle.getTag(), handle.getOwner(), renamed, handle.getDesc(),
+                            handle.isInterface());
                 }
                 changed = true;
                 return new Handle(Opcodes.H_INVOKESTATIC, hook.owner(), hook.name(), hook.descriptor(), false);
@@ -314,7 +317,8 @@ public final class TimeCallRewriter {
                     // The hook's table is the calling class's loader's: it gets the class, a constant.
                     changed = true;
                     super.visitLdcInsn(Type.getObjectType(className));
-                    super.visitMethodInsn(Opcodes.INVOKESTATIC, hook.owner(), hook.name(), hook.descriptorWithCaller(), false);
+                    super.visitMethodInsn(Opcodes.INVOKESTATIC, hook.owner(), hook.name(),
+                            hook.descriptorWithCaller(), false);
                 } else {
                     changed = true;
                     super.visitMethodInsn(Opcodes.INVOKESTATIC, hook.owner(), hook.name(), hook.descriptor(), false);
