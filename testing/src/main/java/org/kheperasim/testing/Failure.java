@@ -13,11 +13,14 @@ import org.opentest4j.AssertionFailedError;
  * <pre>
  * MyController never entered region 'goal'.
  *   expected: to enter region 'goal' (x 1000.0..1219.2 mm, y 1000.0..1219.2 mm)
- *   happened: it did not in the 60.000 s the run lasted; nearest 212.4 mm from it at 41.250 s; ended at (380.0, 610.2) mm heading 90.0 deg
+ *   happened: it did not in the 60.000 s the run lasted; nearest 212.4 mm from it at 41.250 s; ended at
+ *             (380.0, 610.2) mm heading 90.0 deg
  *   run:      MyController in goal-field, seed 1, settings defaults, 60.000 s simulated
  *   trace:    target/kheperasim-runs/MyControllerTest/reachesTheGoal/goal-field-MyController-seed1.trace
- *             (watch it in a browser: target/kheperasim-runs/.../goal-field-MyController-seed1.html; how to make it again: the .txt beside it)
+ *             (watch it in a browser: target/kheperasim-runs/.../goal-field-MyController-seed1.html;
+ *             how to make it again: the .txt beside it)
  * </pre>
+ * <p>In a message the happened line and the watch line are one line each; they are wrapped here.
  */
 final class Failure {
     /** How the line naming the trace starts. */

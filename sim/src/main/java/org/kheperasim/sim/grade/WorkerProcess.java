@@ -106,9 +106,9 @@ final class WorkerProcess implements AutoCloseable {
         java.addAll(List.of(WorkerMain.MAIN, "--classpath", sub.classpath().toString(), "--scratch",
                 lim.sandbox() ? "/tmp" : scratch.toAbsolutePath().toString()));
         List<String> cmd = lim.sandbox()
-                ? Box.command(new Box.Spec(ChildRun.boxed(sub, arenas), List.of(), null, channels,
-                false, BoxLimits.forWorker(lim.heapMb(), robots, lim.wallSeconds(), runs), slot),
-                        java) : ChildRun.unboxed(java);
+                ? Box.command(new Box.Spec(ChildRun.boxed(sub, arenas), List.of(), null, channels, false,
+                        BoxLimits.forWorker(lim.heapMb(), robots, lim.wallSeconds(), runs), slot), java)
+                : ChildRun.unboxed(java);
         ProcessBuilder pb = new ProcessBuilder(cmd);
         if (!lim.sandbox()) {
             pb.directory(scratch.toFile()); // as the box's /tmp: emptied after each run

@@ -26,11 +26,13 @@ import org.kheperasim.sim.engine.view.SnapshotListener;
  * # controller org.kheperasim.controllers.WallFollower
  * # settings defaults
  * # sample-ms 50
- * # columns t_s robot x_mm y_mm heading_deg speed_l speed_r enc_l enc_r contact prox0..prox7 light0..light7 arm fingers object held_cap
+ * # columns t_s robot x_mm y_mm heading_deg speed_l speed_r enc_l enc_r contact prox0..prox7 light0..light7 arm …
  * # caps t_s cap id x_mm y_mm held_by
  * 0.000 0 150.000 150.000 90.000 0 0 0 0 NONE 15 14 … 180 OPEN 0 -1
  * 0.000 cap 0 300.000 420.000 -1
  * </pre>
+ *
+ * <p>The columns line (shortened above) ends {@code light0..light7 arm fingers object held_cap}.
  *
  * <p>A cap line is written at the first sample and then only when the cap has moved, been
  * picked up or put down since the last sample.
