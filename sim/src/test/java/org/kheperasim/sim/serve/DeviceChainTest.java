@@ -65,7 +65,7 @@ class DeviceChainTest {
                 RobotView.class, "speedLeft"));
         CHAINS.put(Device.WHEEL_POSITIONS, new Chain("H", "enc_l", "leftPosition", "org.kheperasim.sim.gui.SensorRenderer",
                 RobotView.class, "encoderLeft"));
-        CHAINS.put(Device.GRIPPER, new Chain("T,1,E,100", "fingers", "setArm", "org.kheperasim.sim.gui.SensorRenderer",
+        CHAINS.put(Device.GRIPPER, new Chain("T,1,E,100", "fingers", "setArmDown", "org.kheperasim.sim.gui.SensorRenderer",
                 GripperView.class, "armPosition"));
         CHAINS.put(Device.VISION, new Chain("T,2,N", "# vision", "visionImage", "org.kheperasim.sim.gui.VisionStrip",
                 VisionView.class, "pixels"));
