@@ -22,7 +22,8 @@ import picocli.CommandLine.Spec;
 @Command(name = "compare", mixinStandardHelpOptions = true,
         description = "Replay a real run's controller from the same start"
         + " in the simulator (with the robot's calibration) and report where they diverge: RMS per"
-        + " sensor, both odometry paths, the first moment they part; text, JSON and a PNG.")
+        + " sensor, both odometry paths, the first moment they part; text, JSON, a PNG and a page that plays"
+        + " both runs side by side.")
 final class CompareCommand implements Callable<Integer> {
     @Spec
     CommandSpec spec;
@@ -88,8 +89,16 @@ final class CompareCommand implements Callable<Integer> {
         org.kheperasim.sim.files.AtomicFiles.write(dir.resolve(stem + "-compare.txt"), d.text());
         org.kheperasim.sim.files.AtomicFiles.write(dir.resolve(stem + "-compare.json"), d.json());
         PathPlot.write(d, dir.resolve(stem + "-compare.png"));
+        // The page that plays both runs side by side, from the same start in the arena.
+        Pose from = start != null ? new Pose(start[0], start[1], start[2]) : a.robots().get(0);
+        org.kheperasim.sim.replay.Replay both = org.kheperasim.sim.replay.ReplayFiles.sideBySide(
+                Files.readString(recording), sim.text("the simulation of " + recording.getFileName()),
+                recording.getFileName().toString(), a, from);
+        org.kheperasim.sim.web.RunPage.write(both, org.kheperasim.sim.web.RunOutcome.none(),
+                recording.getFileName() + " beside its simulation", dir.resolve(stem + "-compare.html"));
         spec.commandLine().getOut().print(d.text());
-        spec.commandLine().getOut().println("wrote " + dir.resolve(stem + "-compare.txt") + ", .json and .png");
+        spec.commandLine().getOut().println("wrote " + dir.resolve(stem + "-compare.txt")
+                + ", .json, .png and .html (both runs side by side)");
         spec.commandLine().getOut().flush();
         return 0;
     }

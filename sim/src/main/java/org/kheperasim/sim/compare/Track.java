@@ -75,6 +75,11 @@ public record Track(List<Point> samples) {
 
     /** @param file where to write it in robot-link's recording format (the light and speed columns as 0) */
     public void write(Path file, String header) throws IOException {
+        org.kheperasim.sim.files.AtomicFiles.write(file, text(header));
+    }
+
+    /** @param header what the run is @return it in robot-link's recording format (light and speeds as 0) */
+    public String text(String header) {
         StringBuilder sb = new StringBuilder("# khepera-link recording v1\n# " + header
                 + "\n# t_s prox0..prox7 light0..light7 posL posR speedL speedR\n");
         for (Point p : samples) {
@@ -84,7 +89,7 @@ public record Track(List<Point> samples) {
             }
             sb.append(" 0 0 0 0 0 0 0 0 ").append(p.left()).append(' ').append(p.right()).append(" 0 0\n");
         }
-        org.kheperasim.sim.files.AtomicFiles.write(file, sb.toString());
+        return sb.toString();
     }
 
     /** @param seconds a time @return the last sample at or before it (the first if none) */

@@ -55,6 +55,30 @@ public final class ReplayFiles {
     }
 
     /**
+     * A real run and its simulation on one page ({@code compare}): two robot-link recordings played
+     * side by side in the arena, robot 1 the real robot and robot 2 its simulation, each one's path
+     * worked out from its own encoders from the same start (as {@code compare} compares them).
+     *
+     * @param real the real run's recording (its text)
+     * @param simulated the simulation, as a recording
+     * @param source what the page names as made from
+     * @param arena the arena the run took place in
+     * @param start where both started
+     * @return the two runs, to play
+     * @throws org.kheperasim.sim.files.InputFileException naming the recording and line at fault
+     */
+    public static Replay sideBySide(String real, String simulated, String source, Arena arena,
+            org.kheperasim.sim.arena.Pose start) {
+        List<String> notes = new ArrayList<>();
+        RobotSeries r = LinkRecordingReader.read(real, source, start.x(), start.y(), start.headingDeg(), notes);
+        RobotSeries s = LinkRecordingReader.read(simulated, source + " (simulated)", start.x(), start.y(),
+                start.headingDeg(), notes);
+        notes.add("robot 1 is the real robot, robot 2 its simulation; both paths are worked out from their encoders"
+                + " from the same start, so the real one drifts as odometry does");
+        return new Replay(Replay.Kind.LINK_RECORDING, source, arena, List.of(), List.of(r, s), null, notes);
+    }
+
+    /**
      * A trace whose arena the caller already has (grade's traces lie apart from their arena files).
      *
      * @param trace a trace file

@@ -78,6 +78,9 @@ class CompareServedRobotTest {
         assertEquals(expected, d.partedAt(), 0.4, "the paths part when the arcs say (" + expected + " s): " + p.out());
         assertTrue(p.out().contains(String.format(java.util.Locale.ROOT, "first more than 30.0 mm apart at")), p.out());
         assertTrue(Files.size(dir.resolve("served-compare.png")) > 0);
+        // The page plays both runs side by side: two robots, the real one and its simulation.
+        String page = Files.readString(dir.resolve("served-compare.html"));
+        assertTrue(page.contains("robot 1 is the real robot, robot 2 its simulation"), "the page says which is which");
         assertTrue(Files.readString(dir.resolve("served-compare.json")).contains("\"sensorRms\":["));
     }
 
