@@ -19,11 +19,13 @@ import java.util.Locale;
  * @param base the robot type it overlays ({@code khepera1})
  * @param drive the wheels' measured numbers
  * @param wall the wall series
+ * @param objects how much a cap and another robot reflect, the wall being 1
  * @param lampMm the lamp series' distances, mm
  * @param lamp the lamp series' mean ambient readings, {@code [distance][sensor]}
  * @param raw every raw reading, as CSV lines
  */
-public record Calibration(String robot, String date, String base, Drive drive, Wall wall, double[] lampMm,
+public record Calibration(String robot, String date, String base, Drive drive, Wall wall, Objects objects,
+        double[] lampMm,
         double[][] lamp,
         List<String> raw) {
     /** The first line of a calibration file. */
@@ -49,6 +51,27 @@ public record Calibration(String robot, String date, String base, Drive drive, W
         public double gapMm(int block) {
             return startMm + block * stepMm;
         }
+
+        /** @param s a sensor @return its reading with the wall ahead at the farthest block: its floor */
+        public double floor(int s) {
+            return means[means.length - 1][0][s];
+        }
+
+        /** @param gap a gap, mm @param s a sensor @return its reading with the wall ahead at that gap, interpolated */
+        public double aheadAt(double gap, int s) {
+            double t = (gap - startMm) / stepMm;
+            int b = (int) StrictMath.floor(StrictMath.max(0, StrictMath.min(means.length - 1, t)));
+            int c = StrictMath.min(means.length - 1, b + 1);
+            double f = StrictMath.max(0, StrictMath.min(1, t - b));
+            return means[b][0][s] + f * (means[c][0][s] - means[b][0][s]);
+        }
+    }
+
+    /**
+     * @param capReflectance how much a cap reflects, the wall being 1 (NaN: not measured)
+     * @param robotReflectance how much another robot's body reflects, the wall being 1 (NaN: not measured)
+     */
+    public record Objects(double capReflectance, double robotReflectance) {
     }
 
     /** @param dir where to write @return the calibration file written (the other two beside it) */
@@ -74,6 +97,12 @@ public record Calibration(String robot, String date, String base, Drive drive, W
                 "drive.mmPerPulse %.5f%ndrive.wheelBaseMm %.3f%ndrive.mmPerSecondPerUnit %.4f%n"
                 + "motor.rightOverLeft %.5f%n", drive.mmPerPulse(), drive.wheelBaseMm(), drive.mmPerSecondPerUnit(),
                 drive.rightOverLeft()));
+        if (!Double.isNaN(objects.capReflectance())) {
+            sb.append(String.format(Locale.ROOT, "reflect.cap %.4f\n", objects.capReflectance()));
+        }
+        if (!Double.isNaN(objects.robotReflectance())) {
+            sb.append(String.format(Locale.ROOT, "reflect.robot %.4f\n", objects.robotReflectance()));
+        }
         for (int d = 0; d < lampMm.length; d++) {
             sb.append(String.format(Locale.ROOT, "lamp %.1f", lampMm[d]));
             for (double v : lamp[d]) {

@@ -12,8 +12,8 @@ import org.kheperasim.link.session.SessionException;
  * a spin measured by the angle turned, a timed run read from the encoders), then the white wall
  * (facing it, backing away in encoder-measured steps, turning on the spot through every heading at
  * each step, ~20 readings per sensor per heading at the robot's 20 ms scan), then the lamp at a few
- * distances. The cap and robot series are not in this version (it says so on the console).
- * Khepera dialects only: it moves by position commands (C).
+ * distances, a cap and another robot straight ahead at a few gaps (how much less than the wall they
+ * reflect). Khepera dialects only: it moves by position commands (C).
  */
 public final class CalibrationRun {
     /** The nominal Khepera numbers the procedure starts from. */
@@ -61,8 +61,8 @@ public final class CalibrationRun {
     public Calibration run(String robot, String date) throws SessionException {
         Calibration.Drive drive = wheels();
         Calibration.Wall wall = wall(drive);
-        say("Cap and robot series: not in this version; the simulator takes caps and robots as the wall, scaled by"
-                + " prox.reflect.cap and prox.reflect.robot.");
+        double cap = reflectance("cap", "a bottle cap (the arena's caps)", wall);
+        double other = reflectance("robot", "another robot of the lab (switched off)", wall);
         double[] lampMm = lampDistances();
         double[][] lamp = new double[lampMm.length][];
         for (int d = 0; d < lampMm.length; d++) {
@@ -75,7 +75,8 @@ public final class CalibrationRun {
         }
         session.exchange(session.dialect().setSpeeds(0, 0));
         say("Done: the robot is stopped.");
-        return new Calibration(robot, date, "khepera1", drive, wall, lampMm, lamp, List.copyOf(raw));
+        return new Calibration(robot, date, "khepera1", drive, wall, new Calibration.Objects(cap, other), lampMm, lamp,
+                List.copyOf(raw));
     }
 
     private Calibration.Drive wheels() throws SessionException {
@@ -136,10 +137,51 @@ public final class CalibrationRun {
         return new Calibration.Wall(start, step, h, means);
     }
 
+    /**
+     * An object straight ahead at a few gaps: its front readings against the wall's at the same gaps.
+     *
+     * @return how much it reflects, the wall being 1 (the median of the ratios where the wall reads
+     *     well above its floor); NaN when the person skips it
+     */
+    private double reflectance(String kind, String what, Calibration.Wall wall) throws SessionException {
+        double[] gaps = distances(kind + ".distances", "The " + kind + " series: put " + what + " straight ahead;"
+                + " its gaps from the robot's front, mm, comma-separated (none: skip)", "5,10,15,20");
+        List<Double> ratios = new ArrayList<>();
+        for (int d = 0; d < gaps.length; d++) {
+            answers.pause(kind + ".placed." + d, String.format(Locale.ROOT, "Put %s straight ahead of the robot, its"
+                    + " near side %.0f mm from the robot's front (by ruler), nothing else within 100 mm;",
+                    what, gaps[d]));
+            int[][] r = moves.readings(false, plan.readings());
+            record(kind, d, gaps[d], 0, r);
+            double[] m = RobotMoves.mean(r);
+            for (int s = 2; s <= 3; s++) {
+                double floor = wall.floor(s);
+                double w = wall.aheadAt(gaps[d], s) - floor;
+                if (w > 50) {
+                    ratios.add(StrictMath.max(0, m[s] - floor) / w);
+                }
+            }
+        }
+        if (ratios.isEmpty()) {
+            if (gaps.length > 0) {
+                say("the " + kind + " series: the wall reads too little at those gaps to compare; give nearer ones");
+            }
+            return Double.NaN;
+        }
+        java.util.Collections.sort(ratios);
+        double median = ratios.get(ratios.size() / 2);
+        say(String.format(Locale.ROOT, "%s: reflects %.2f of the wall", kind, median));
+        return median;
+    }
+
     private double[] lampDistances() {
-        String s = answers.ask("lamp.distances",
+        return distances("lamp.distances",
                 "Step 3 of 3, the lamp. The lamp distances, mm, comma-separated (none: skip)",
                 "50,100,200,400");
+    }
+
+    private double[] distances(String key, String prompt, String dflt) {
+        String s = answers.ask(key, prompt, dflt);
         if (s.isBlank() || s.equals("none")) {
             return new double[0];
         }
@@ -149,7 +191,7 @@ public final class CalibrationRun {
             try {
                 d[i] = Double.parseDouble(p[i].trim());
             } catch (NumberFormatException e) {
-                throw new IllegalArgumentException("answer lamp.distances=" + s + ": give mm like 50,100,200");
+                throw new IllegalArgumentException("answer " + key + "=" + s + ": give mm like 50,100,200");
             }
         }
         return d;

@@ -9,6 +9,9 @@ import java.util.Random;
  * its wheels travel a true distance per pulse and turn about a true wheel base, both off the
  * nominal 0.08 mm and 53 mm by a few percent (drawn from the same seed).
  *
+ * <p>A cap or another robot stands in for the wall at {@link #placeObject}: the same response, times
+ * how much it reflects (drawn from the seed too), as the simulator models them.
+ *
  * <p>State: the wall's gap from the body's surface, mm, and where it lies, degrees to the robot's
  * right of ahead. The lamp stands straight ahead at {@link #setLampMm}.
  */
@@ -28,6 +31,9 @@ public final class FakeWallScene implements FakeKhepera.Scene {
     private double gapMm;
     private double objectRightDeg;
     private double lampMm = 1000;
+    private double factor = 1;
+    private final double capReflectance;
+    private final double robotReflectance;
 
     /** @param seed draws the warps, the wheels' true numbers and the noise */
     public FakeWallScene(long seed) {
@@ -40,12 +46,33 @@ public final class FakeWallScene implements FakeKhepera.Scene {
         wheelBaseMm = 53 * (0.95 + 0.1 * r.nextDouble());
         rightOverLeft = 0.97 + 0.06 * r.nextDouble();
         noise = new Random(seed + 1);
+        Random objects = new Random(seed + 2);
+        capReflectance = 0.4 + 0.4 * objects.nextDouble();
+        robotReflectance = 0.5 + 0.4 * objects.nextDouble();
     }
 
     /** @param gap the wall's gap from the body, mm @param rightDeg where it lies, degrees right of ahead */
     public synchronized void place(double gap, double rightDeg) {
         gapMm = gap;
         objectRightDeg = rightDeg;
+        factor = 1;
+    }
+
+    /** @param gap an object's gap straight ahead, mm @param reflectance how much it reflects, the wall being 1 */
+    public synchronized void placeObject(double gap, double reflectance) {
+        gapMm = gap;
+        objectRightDeg = 0;
+        factor = reflectance;
+    }
+
+    /** @return how much a cap reflects here, the wall being 1 */
+    public double capReflectance() {
+        return capReflectance;
+    }
+
+    /** @return how much another robot reflects here, the wall being 1 */
+    public double robotReflectance() {
+        return robotReflectance;
     }
 
     /** @param mm the lamp's distance straight ahead of the body, mm */
@@ -100,6 +127,11 @@ public final class FakeWallScene implements FakeKhepera.Scene {
      * @return the sensor's reading without noise
      */
     public double expected(int i, double gap, double rightDeg) {
+        return expected(i, gap, rightDeg, 1);
+    }
+
+    /** @return as {@link #expected(int, double, double)}, for an object reflecting {@code reflectance} of the wall */
+    public double expected(int i, double gap, double rightDeg, double reflectance) {
         double th = StrictMath.toRadians(rightDeg);
         double ux = StrictMath.cos(th);
         double uy = -StrictMath.sin(th);
@@ -107,14 +139,14 @@ public final class FakeWallScene implements FakeKhepera.Scene {
         double off = StrictMath.abs(Math.IEEEremainder(-rightDeg - POSES[i][2], 360));
         double lobe = off >= 70 ? 0 : StrictMath.pow(StrictMath.cos(StrictMath.toRadians(off * 90 / 70)), 1.5);
         double along = d <= 0 ? 1.2 : 1.2 * StrictMath.exp(-StrictMath.pow(d / 16, 2));
-        return StrictMath.min(1023, 5 + drift * gain[i] * 1023 * StrictMath.min(1.2, along) * lobe);
+        return StrictMath.min(1023, 5 + drift * gain[i] * 1023 * StrictMath.min(1.2, along) * lobe * reflectance);
     }
 
     @Override
     public synchronized int[] proximity() {
         int[] out = new int[8];
         for (int i = 0; i < 8; i++) {
-            double v = expected(i, gapMm, objectRightDeg) + 3 * noise.nextGaussian();
+            double v = expected(i, gapMm, objectRightDeg, factor) + 3 * noise.nextGaussian();
             out[i] = (int) StrictMath.max(0, StrictMath.min(1023, StrictMath.rint(v)));
         }
         return out;

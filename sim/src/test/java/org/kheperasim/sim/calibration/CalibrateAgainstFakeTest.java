@@ -54,7 +54,7 @@ class CalibrateAgainstFakeTest {
         Path cal = calibrate(scene, dir);
         assertTrue(Files.exists(dir.resolve("lab3-2026-12-02-wall.sample")));
         List<String> raw = Files.readAllLines(dir.resolve("lab3-2026-12-02-samples.csv"));
-        assertEquals(1 + 14 * 24 * 20 + 4 * 20, raw.size(), "one line per raw reading, with its header");
+        assertEquals(1 + 14 * 24 * 20 + 2 * 4 * 20 + 4 * 20, raw.size(), "one line per raw reading, with its header");
 
         // The calibration is a robot file: the robot it measured.
         RobotType c = RobotTypes.load(cal);
@@ -65,6 +65,9 @@ class CalibrateAgainstFakeTest {
         assertEquals(scene.rightOverLeft(), c.measured().rightCalibration() / c.measured().leftCalibration(), 0.002,
                 "right over left");
         assertEquals(scene.wheelBaseMm(), c.drive().wheelBaseMm(), 0.6, "wheel base");
+        // A cap and another robot reflect what the fake's do, the wall being 1.
+        assertEquals(scene.capReflectance(), c.measured().capReflectance(), 0.05, "cap reflectance");
+        assertEquals(scene.robotReflectance(), c.measured().robotReflectance(), 0.05, "robot reflectance");
         // Unsampled gaps: halfway between the calibration's 5, 8, 11, ... mm, at headings between its 15 degrees too.
         List<Double> errors = new ArrayList<>();
         List<Double> lit = new ArrayList<>();
@@ -127,9 +130,14 @@ class CalibrateAgainstFakeTest {
                 "run.sideMm", String.format(Locale.ROOT, "%.2f", runMm * turn / 2),
                 "spin.deg", String.format(Locale.ROOT, "%.2f", spinDeg));
         // The person puts the robot 5 mm from the wall, straight on, when the procedure asks for it.
+        // And puts a cap, then another robot, straight ahead at the gaps the procedure names (5, 10, 15, 20 mm).
         Answers answers = new Answers(new PrintWriter(out), null, given, key -> {
             if (key.equals("wall.placed")) {
                 scene.place(5, 0);
+            } else if (key.startsWith("cap.placed.")) {
+                scene.placeObject(5 + 5 * Integer.parseInt(key.substring(11)), scene.capReflectance());
+            } else if (key.startsWith("robot.placed.")) {
+                scene.placeObject(5 + 5 * Integer.parseInt(key.substring(13)), scene.robotReflectance());
             }
         });
         try (OnSocket<FakeKhepera> fake = fake(scene);
@@ -141,7 +149,8 @@ class CalibrateAgainstFakeTest {
                     new CalibrationRun.Plan(p.readings(), 0, p.blocks(), p.headings(), p.runPulses(), p.spinPulses())).run("lab3", "2026-12-02");
             return c.write(dir);
         } finally {
-            System.out.println(out.toString().lines().filter(l -> l.startsWith("wheels") || l.startsWith("wall at 5"))
+            System.out.println(out.toString().lines().filter(l -> l.startsWith("wheels") || l.startsWith("wall at 5")
+                    || l.contains(": reflects "))
                     .reduce("", (a, b) -> a + b + "\n"));
         }
     }

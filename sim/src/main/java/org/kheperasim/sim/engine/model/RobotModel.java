@@ -160,7 +160,8 @@ public record RobotModel(RobotType type, Stepping stepping, Link link, Noise noi
                         or(s, "prox.noiseRel", tp.noiseRel()),
                         s.number("prox.spikeRate"),
                         new double[] {0, s.number("prox.reflect.wall"), s.number("prox.reflect.light"),
-                            s.number("prox.reflect.cap"), s.number("prox.reflect.robot")},
+                            reflect(s, "prox.reflect.cap", m == null ? Double.NaN : m.capReflectance()),
+                            reflect(s, "prox.reflect.robot", m == null ? Double.NaN : m.robotReflectance())},
                         proxGain, proxNoise, proxDead),
                 new Light(or(s, "light.dark", tl.dark()), or(s, "light.bright", tl.bright()),
                         s.number("light.darkSpread"),
@@ -174,6 +175,15 @@ public record RobotModel(RobotType type, Stepping stepping, Link link, Noise noi
                 new Gripper((long) StrictMath.rint(s.number("gripper.armTravelMs") * 1e6),
                         (long) StrictMath.rint(s.number("gripper.fingerMs") * 1e6),
                         (int) s.number("gripper.capResistivity")));
+    }
+
+    /**
+     * @return an object's reflectance: the measured one (relative to the wall, so times the wall's) unless
+     *     the settings set it or none was measured, else the setting
+     */
+    private static double reflect(Settings s, String key, double measured) {
+        return Double.isNaN(measured) || s.overrides().containsKey(key) ? s.number(key)
+                : measured * s.number("prox.reflect.wall");
     }
 
     /** @return a per-robot spread: 0 for a measured robot unless the settings set it, else the setting */

@@ -54,6 +54,8 @@ public record Calibration(String robot, String date, RobotType type, SampleFit.R
         double wheelBase = d.wheelBaseMm();
         double unit = d.mmPerSecondPerUnit();
         double rightOverLeft = 1;
+        double cap = Double.NaN;
+        double other = Double.NaN;
         for (int n = 1; n < lines.size(); n++) {
             String l = lines.get(n).trim();
             if (l.isEmpty() || l.startsWith("#")) {
@@ -76,11 +78,13 @@ public record Calibration(String robot, String date, RobotType type, SampleFit.R
                 case "drive.wheelBaseMm" -> wheelBase = number(source, n, v, 1, 1000);
                 case "drive.mmPerSecondPerUnit" -> unit = number(source, n, v, 0.001, 1000);
                 case "motor.rightOverLeft" -> rightOverLeft = number(source, n, v, 0.5, 2);
+                case "reflect.cap" -> cap = number(source, n, v, 0, 10);
+                case "reflect.robot" -> other = number(source, n, v, 0, 10);
                 case "samples", "lamp" -> {
                     // the raw readings and the lamp series are kept for people; the engine's lamps take no table
                 }
                 default -> throw new RobotFileException(source, n + 1, "'" + kv[0] + "': the keys are robot, date,"
-                        + " base, wall, samples, drive.*, motor.rightOverLeft and lamp");
+                        + " base, wall, samples, drive.*, motor.rightOverLeft, reflect.cap, reflect.robot and lamp");
             }
         }
         if (robot == null || date == null || wall == null) {
@@ -104,7 +108,7 @@ public record Calibration(String robot, String date, RobotType type, SampleFit.R
             gains.add(StrictMath.min(10, g));
         }
         RobotType.Measured measured = new RobotType.Measured(robot, date, gains, 2 / (1 + rightOverLeft),
-                2 * rightOverLeft / (1 + rightOverLeft));
+                2 * rightOverLeft / (1 + rightOverLeft), cap, other);
         RobotType type = base.calibrated("calibration of " + robot + " on " + date + " (" + file.getFileName() + ")",
                 wheelBase, unit, mmPerPulse, fit.table(), fit.offset(), fit.noiseAbs(), fit.noiseRel(), measured);
         return new Calibration(robot, date, type, fit);

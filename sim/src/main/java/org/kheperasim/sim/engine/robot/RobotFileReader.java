@@ -25,7 +25,8 @@ public final class RobotFileReader {
             Set.of("response", "angles", "weights", "distances", "values", "offset",
             "noise_std_dev", "noise_relative", "max_reading");
     private static final Set<String> LIGHT = Set.of("dark", "bright", "noise_relative");
-    private static final Set<String> MEASURED = Set.of("robot", "date", "gains", "wheel_calibration");
+    private static final Set<String> MEASURED = Set.of("robot", "date", "gains", "wheel_calibration", "cap_reflectance",
+            "robot_reflectance");
 
     private final String source;
 
@@ -133,7 +134,12 @@ public final class RobotFileReader {
                         + " left and right wheels' actual over commanded speed, each in 0.5..2");
             }
         }
-        return new RobotType.Measured(robot, date, list, wheels[0], wheels[1]);
+        double cap = m.keys.containsKey("cap_reflectance")
+                ? number(m.keys.get("cap_reflectance"), 0, 10, "(the wall: 1)")
+                : Double.NaN;
+        double other = m.keys.containsKey("robot_reflectance")
+                ? number(m.keys.get("robot_reflectance"), 0, 10, "(the wall: 1)") : Double.NaN;
+        return new RobotType.Measured(robot, date, list, wheels[0], wheels[1], cap, other);
     }
 
     private List<RobotType.Sensor> sensors(RobotFileLines.Entry s, RobotType.Body body) {

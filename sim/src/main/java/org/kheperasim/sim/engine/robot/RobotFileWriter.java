@@ -86,6 +86,12 @@ public final class RobotFileWriter {
             sb.append("  gains: ").append(list(gains)).append('\n');
             sb.append("  wheel_calibration: ").append(list(new double[] {m.leftCalibration(), m.rightCalibration()}))
                     .append('\n');
+            if (!Double.isNaN(m.capReflectance())) {
+                key(sb, "cap_reflectance", m.capReflectance());
+            }
+            if (!Double.isNaN(m.robotReflectance())) {
+                key(sb, "robot_reflectance", m.robotReflectance());
+            }
         }
         return sb.toString();
     }

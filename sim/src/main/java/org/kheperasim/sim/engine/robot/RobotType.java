@@ -110,9 +110,11 @@ public record RobotType(String name, String source, Body body, Drive drive, List
      * @param proxGains each sensor's proximity gain on the type's response, in sensor order
      * @param leftCalibration the left wheel's actual over commanded speed
      * @param rightCalibration the right wheel's actual over commanded speed
+     * @param capReflectance how much a cap reflects, the wall being 1 (NaN: not measured, the settings' figure)
+     * @param robotReflectance how much another robot reflects, the wall being 1 (NaN: not measured)
      */
     public record Measured(String robot, String date, List<Double> proxGains, double leftCalibration,
-            double rightCalibration) {
+            double rightCalibration, double capReflectance, double robotReflectance) {
         public Measured {
             Objects.requireNonNull(robot, "robot");
             Objects.requireNonNull(date, "date");
