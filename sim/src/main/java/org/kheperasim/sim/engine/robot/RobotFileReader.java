@@ -22,16 +22,18 @@ public final class RobotFileReader {
             "motor_period", "noise_period", "move_speed", "acceleration");
     private static final Set<String> SENSOR = Set.of("name", "channel", "origin");
     private static final Set<String> PROXIMITY =
-            Set.of("response", "angles", "weights", "distances", "values", "offset",
+            Set.of("response", "sample", "angles", "weights", "distances", "values", "offset",
             "noise_std_dev", "noise_relative", "max_reading");
     private static final Set<String> LIGHT = Set.of("dark", "bright", "noise_relative");
     private static final Set<String> MEASURED = Set.of("robot", "date", "gains", "wheel_calibration", "cap_reflectance",
             "robot_reflectance");
 
     private final String source;
+    private final java.nio.file.Path folder;
 
-    private RobotFileReader(String source) {
+    private RobotFileReader(String source, java.nio.file.Path folder) {
         this.source = source;
+        this.folder = folder;
     }
 
     /**
@@ -41,7 +43,19 @@ public final class RobotFileReader {
      * @throws RobotFileException naming the first wrong line, its value and the fix
      */
     public static RobotType parse(String source, String text) {
-        return new RobotFileReader(source).type(RobotFileLines.read(source, text));
+        return parse(source, text, null);
+    }
+
+    /**
+     * @param source the file's name as the user knows it, for errors
+     * @param text the file's text
+     * @param folder where a relative {@code sample:} path is taken from (the file's folder), or null: the
+     *     working folder
+     * @return the robot type it describes
+     * @throws RobotFileException naming the first wrong line, its value and the fix
+     */
+    public static RobotType parse(String source, String text, java.nio.file.Path folder) {
+        return new RobotFileReader(source, folder).type(RobotFileLines.read(source, text));
     }
 
     private RobotType type(RobotFileLines.Entry root) {
@@ -91,16 +105,20 @@ public final class RobotFileReader {
                     + fmt(2 * body.radiusMm()) + " mm across); the wheels sit under the disc");
         }
         List<RobotType.Sensor> sensors = sensors(need(root, "sensors"), body);
-        RobotFileLines.Entry p = section(root, "proximity", PROXIMITY);
-        RobotType.Proximity proximity =
-                new RobotType.Proximity(response(p, name), number(need(p, "offset"), 0, 100_000, "counts"),
-                number(need(p, "noise_std_dev"), 0, 100_000, "counts"),
-                number(need(p, "noise_relative"), 0, 10, "(relative)"),
-                integer(need(p, "max_reading"), 1, 100_000, "counts"));
         RobotFileLines.Entry l = section(root, "light", LIGHT);
         RobotType.Light light = new RobotType.Light(number(need(l, "dark"), 0, 100_000, "counts"),
                 number(need(l, "bright"), 0, 100_000, "counts"),
                 number(need(l, "noise_relative"), 0, 10, "(relative)"));
+        RobotFileLines.Entry p = section(root, "proximity", PROXIMITY);
+        Response response = text(need(p, "response")).equals("sample")
+                ? sampled(p, new RobotType(name, src, body, drive, sensors, RobotTypes.KHEPERA1.proximity(), light,
+                        turrets, dialect))
+                : response(p, name);
+        RobotType.Proximity proximity =
+                new RobotType.Proximity(response, number(need(p, "offset"), 0, 100_000, "counts"),
+                number(need(p, "noise_std_dev"), 0, 100_000, "counts"),
+                number(need(p, "noise_relative"), 0, 10, "(relative)"),
+                integer(need(p, "max_reading"), 1, 100_000, "counts"));
         RobotType.Measured measured = root.keys.containsKey("measured") ? measured(section(root, "measured", MEASURED),
                 sensors.size()) : null;
         return new RobotType(name, src, body, drive, sensors, proximity, light, turrets, dialect, measured);
@@ -186,6 +204,27 @@ public final class RobotFileReader {
             out.add(new RobotType.Sensor(name, channel, xyh[0], xyh[1], xyh[2]));
         }
         return out;
+    }
+
+    /**
+     * A response fitted to a sampled wall table the file points at ({@code response: sample},
+     * {@code sample: PATH}, evorobotpy's {@code .sample} format; docs/calibration.md): the table the
+     * engine's beam rule turns back into the measured readings, for this robot's sensors. The fit's
+     * per-sensor gains are not a kind's: a calibration gives them to one robot.
+     *
+     * @param shape the robot being read, with a provisional response (the fit needs its body and sensors)
+     */
+    private Response sampled(RobotFileLines.Entry p, RobotType shape) {
+        RobotFileLines.Entry e = need(p, "sample");
+        java.nio.file.Path file = java.nio.file.Path.of(text(e));
+        if (!file.isAbsolute() && folder != null) {
+            file = folder.resolve(file);
+        }
+        try {
+            return SampleResponses.fit(file.toString(), shape).table();
+        } catch (IllegalArgumentException ex) {
+            throw error(e, ex.getMessage());
+        }
     }
 
     private Response response(RobotFileLines.Entry p, String robot) {

@@ -86,7 +86,7 @@ public final class RobotTypes {
                 (line, what) -> new RobotFileException(source, line, what));
         // A calibration (khepera-link calibrate) is the robot it measured.
         return Calibration.is(text) ? Calibration.parse(source, file, text).type()
-                : RobotFileReader.parse(source, text);
+                : RobotFileReader.parse(source, text, file.toAbsolutePath().getParent());
     }
 
     /**
