@@ -12,21 +12,12 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.kheperasim.link.calibrate.Answers;
-import org.kheperasim.link.calibrate.Calibration;
-import org.kheperasim.link.calibrate.CalibrationRun;
 import org.kheperasim.link.cli.Main;
 import org.kheperasim.link.fake.FakeKhepera;
 import org.kheperasim.link.fake.FakeWallScene;
 import org.kheperasim.link.fake.OnSocket;
-import org.kheperasim.link.io.LineEnd;
-import org.kheperasim.link.io.Links;
-import org.kheperasim.link.io.SerialSettings;
-import org.kheperasim.link.session.Session;
-import org.kheperasim.link.timing.LinkTiming;
 import org.kheperasim.sim.arena.ArenaFormat;
 import org.kheperasim.sim.arena.OccupancyGrid;
 import org.kheperasim.sim.arena.Pose;
@@ -120,39 +111,63 @@ class CalibrateAgainstFakeTest {
         return code;
     }
 
+    /**
+     * {@code khepera-link calibrate --non-interactive} on the fake, as a lab would run it unattended:
+     * every measurement by ruler and protractor is given with {@code --answer}, and the "person" who
+     * puts the robot before the wall, then a cap and another robot before it, is the console watcher
+     * below: it acts when the procedure prints the step's question, before the robot reads.
+     */
     static Path calibrate(FakeWallScene scene, Path dir) throws Exception {
-        StringWriter out = new StringWriter();
         // What a person would measure by ruler and protractor on this robot.
         double runMm = 2500 * scene.mmPerPulse() * (1 + scene.rightOverLeft()) / 2;
         double spinDeg = StrictMath.toDegrees(2081 * scene.mmPerPulse() * (1 + scene.rightOverLeft()) / scene.wheelBaseMm());
         double turn = 2500 * scene.mmPerPulse() * (scene.rightOverLeft() - 1) / scene.wheelBaseMm();
-        Map<String, String> given = Map.of("run.mm", String.format(Locale.ROOT, "%.2f", runMm),
-                "run.sideMm", String.format(Locale.ROOT, "%.2f", runMm * turn / 2),
-                "spin.deg", String.format(Locale.ROOT, "%.2f", spinDeg));
-        // The person puts the robot 5 mm from the wall, straight on, when the procedure asks for it.
-        // And puts a cap, then another robot, straight ahead at the gaps the procedure names (5, 10, 15, 20 mm).
-        Answers answers = new Answers(new PrintWriter(out), null, given, key -> {
-            if (key.equals("wall.placed")) {
-                scene.place(5, 0);
-            } else if (key.startsWith("cap.placed.")) {
-                scene.placeObject(5 + 5 * Integer.parseInt(key.substring(11)), scene.capReflectance());
-            } else if (key.startsWith("robot.placed.")) {
-                scene.placeObject(5 + 5 * Integer.parseInt(key.substring(13)), scene.robotReflectance());
+        StringWriter all = new StringWriter();
+        PrintWriter console = new PrintWriter(new java.io.Writer() {
+            private final StringBuilder line = new StringBuilder();
+
+            @Override
+            public void write(char[] c, int off, int len) {
+                all.write(c, off, len);
+                for (int k = off; k < off + len; k++) {
+                    line.append(c[k]);
+                    String l = line.toString();
+                    // The robot 5 mm from the wall, straight on; a cap, then a robot, at 5, 10, 15, 20 mm.
+                    if (l.endsWith("(wall.placed): ")) {
+                        scene.place(5, 0);
+                    } else if (l.matches(".*\\((cap|robot)\\.placed\\.[0-9]+\\): $")) {
+                        String key = l.substring(l.lastIndexOf('(') + 1, l.lastIndexOf(')'));
+                        int d = Integer.parseInt(key.substring(key.lastIndexOf('.') + 1));
+                        scene.placeObject(5 + 5 * d, key.startsWith("cap") ? scene.capReflectance()
+                                : scene.robotReflectance());
+                    }
+                    if (c[k] == '\n') {
+                        line.setLength(0);
+                    }
+                }
             }
-        });
-        try (OnSocket<FakeKhepera> fake = fake(scene);
-                Session session = new Session(Links.open(new SerialSettings(fake.url(), 38400, 8, 2, SerialSettings.Parity.NONE,
-                        LineEnd.LF)), new LinkTiming(38400, 11, LinkTiming.DEFAULT_TURNAROUND_NANOS), Session.Options.defaults())) {
-            session.open();
-            CalibrationRun.Plan p = CalibrationRun.Plan.standard();
-            Calibration c = new CalibrationRun(session, answers, new PrintWriter(out),
-                    new CalibrationRun.Plan(p.readings(), 0, p.blocks(), p.headings(), p.runPulses(), p.spinPulses())).run("lab3", "2026-12-02");
-            return c.write(dir);
+
+            @Override
+            public void flush() {
+            }
+
+            @Override
+            public void close() {
+            }
+        }, true);
+        try (OnSocket<FakeKhepera> fake = fake(scene)) {
+            int code = Main.execute(new String[] {"calibrate", "--port", fake.url(), "--robot", "lab3", "--date",
+                "2026-12-02", "--out", dir.toString(), "--non-interactive", "--scan-ms", "0",
+                "--answer", String.format(Locale.ROOT, "run.mm=%.2f", runMm),
+                "--answer", String.format(Locale.ROOT, "run.sideMm=%.2f", runMm * turn / 2),
+                "--answer", String.format(Locale.ROOT, "spin.deg=%.2f", spinDeg)},
+                    new ByteArrayInputStream(new byte[0]), console, console);
+            assertEquals(0, code, all.toString());
         } finally {
-            System.out.println(out.toString().lines().filter(l -> l.startsWith("wheels") || l.startsWith("wall at 5")
-                    || l.contains(": reflects "))
-                    .reduce("", (a, b) -> a + b + "\n"));
+            System.out.println(all.toString().lines().filter(l -> l.startsWith("wheels") || l.startsWith("wall at 5")
+                    || l.contains(": reflects ")).reduce("", (a, b) -> a + b + "\n"));
         }
+        return dir.resolve("lab3-2026-12-02.calibration");
     }
 
     /**
