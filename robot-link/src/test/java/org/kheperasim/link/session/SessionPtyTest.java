@@ -10,6 +10,8 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.api.parallel.Execution;
+import org.junit.jupiter.api.parallel.ExecutionMode;
 import org.kheperasim.link.fake.FakeKhepera;
 import org.kheperasim.link.fake.FakeRobotOnPty;
 import org.kheperasim.link.io.SerialLink;
@@ -27,8 +29,12 @@ import org.kheperasim.link.timing.LinkTiming;
  * a reply the test expects in time has {@link #REPLY_MILLIS} (a starved fake robot and socat at load
  * 30 on 2 cores answer within it), a reply meant to miss its time misses it by construction (dropped,
  * or sent later than the wait by the fake's own clock), and a late reply is waited for, not slept for.
+ *
+ * <p>The methods run at once (each its own socat pair, fake robot and session in its own folder): most of each is a
+ * reply's time limit running out.
  */
 @Tag("timing")
+@Execution(ExecutionMode.CONCURRENT)
 @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
 class SessionPtyTest {
     @TempDir

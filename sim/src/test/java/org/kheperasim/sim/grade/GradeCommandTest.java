@@ -106,7 +106,7 @@ class GradeCommandTest {
 
     @Test
     @Timeout(value = 240, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
-    void twoShardsMergedMakeTheSameReportAsOneGrading() throws IOException {
+    void twoShardsMergedMakeTheSameReportAsOneGrading() throws Exception {
         Path subs = copySubmissions(List.of("alice", "bob", "erin", "frank", "heidi"));
         // A class refused at load: its report names the class file, under --out, which differs per shard.
         Path kim = Files.createDirectories(subs.resolve("kim"));
@@ -116,11 +116,17 @@ class GradeCommandTest {
         String[] common = {"--submissions", subs.toString(), "--arenas", "maze", "lab", "--seeds", "1", "--seconds", "10",
             "--wall-limit", "90", "--heap-mb", "128"};
         Path whole = dir.resolve("whole");
-        grade(ReportFolder.concat(common, "--jobs", "2", "--out", whole.toString()));
         Path s1 = dir.resolve("shard1");
         Path s2 = dir.resolve("shard2");
-        grade(ReportFolder.concat(common, "--shard", "2/2", "--out", s2.toString()));
-        grade(ReportFolder.concat(common, "--shard", "1/2", "--out", s1.toString()));
+        // The shards, as on two machines, each in a JVM of its own beside the whole grading (in this JVM).
+        try (ChildGrading second = ChildGrading.start(dir.resolve("shard2.log"),
+                ReportFolder.concat(common, "--shard", "2/2", "--out", s2.toString()));
+                ChildGrading first = ChildGrading.start(dir.resolve("shard1.log"),
+                        ReportFolder.concat(common, "--shard", "1/2", "--out", s1.toString()))) {
+            grade(ReportFolder.concat(common, "--jobs", "2", "--out", whole.toString()));
+            second.await(200);
+            first.await(200);
+        }
         Path merged = dir.resolve("merged");
         grade("merge", "--out", merged.toString(), s2.toString(), s1.toString());
 

@@ -13,6 +13,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -56,13 +59,21 @@ class GradeResumeTest {
                 }
             }
         }
+        // The grading never interrupted, the reference, made in this JVM beside the interrupted ones (child JVMs, which
+        // mostly wait: for their JVMs to start, for the journal to reach a count); the two share no folder.
         Path whole = dir.resolve("whole");
-        Grader.grade(options(subs, whole, box));
-
         Path resumed = dir.resolve("resumed");
-        interrupt(subs, resumed, box, 2, true);   // kill -9
-        interrupt(subs, resumed, box, 5, false);  // SIGTERM
-        Grader.grade(options(subs, resumed, box));
+        ExecutorService beside = Executors.newSingleThreadExecutor();
+        try {
+            Future<ReportFiles.Report> reference = beside.submit(() -> Grader.grade(options(subs, whole, box)));
+            interrupt(subs, resumed, box, 2, true);   // kill -9
+            interrupt(subs, resumed, box, 5, false);  // SIGTERM
+            Grader.grade(options(subs, resumed, box));
+            reference.get();
+        } finally {
+            beside.shutdown(); // after a failure above, the reference grading still ends before its folder is deleted
+            beside.awaitTermination(120, TimeUnit.SECONDS);
+        }
 
         List<String> lines = Files.readAllLines(resumed.resolve(Journal.FILE));
         assertEquals(1 + 8, lines.size(), "the journal holds each run once: " + lines);

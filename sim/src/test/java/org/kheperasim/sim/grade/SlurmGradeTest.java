@@ -18,7 +18,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.kheperasim.sim.arena.ArenaFormat;
-import org.kheperasim.sim.cli.Main;
 
 /**
  * The Slurm recipe of docs/grading.md, for real: the job-array script is taken from the page,
@@ -60,7 +59,12 @@ class SlurmGradeTest {
                 + " org.kheperasim.sim.cli.Main";
         Path grades = dir.resolve("grades");
 
-        try (SlurmCluster cluster = SlurmCluster.start(dir.resolve("slurm"))) {
+        // The unsharded grading the merged report must equal, made beside the cluster (which mostly waits on its daemons
+        // and its scheduler), in a JVM of its own.
+        Path whole = dir.resolve("whole");
+        try (ChildGrading reference = ChildGrading.start(dir.resolve("whole.out"), "--submissions", subs.toString(), "--arenas",
+                arena.toString(), "--seeds", "1", "--out", whole.toString(), "--jobs", "2");
+                SlurmCluster cluster = SlurmCluster.start(dir.resolve("slurm"))) {
             String array = cluster.run(List.of("sbatch", "--parsable", "--array=1-2", "--cpus-per-task=1", "--mem=700M",
                     "--chdir=" + dir, "--output=" + dir.resolve("grade-%A_%a.log"),
                     "--export=ALL,SIM=" + sim + ",SUBMISSIONS=" + subs + ",ARENAS=" + arena + ",SEEDS=1,OUT=" + grades,
@@ -69,15 +73,13 @@ class SlurmGradeTest {
                     "--chdir=" + dir, "--output=" + dir.resolve("merge-%j.log"),
                     "--wrap", sim + " grade merge --out " + grades.resolve("report") + " " + grades + "/shard-*")).strip();
             cluster.await(array + "," + merge, 240);
+            reference.await(240);
         }
         Path merged = grades.resolve("report");
         assertTrue(Files.isRegularFile(merged.resolve("results.json")), "the merge job made no report; logs: " + logs());
         assertEquals("1/2", ReportFiles.read(grades.resolve("shard-1/results.json")).shard().toString());
         assertEquals("2/2", ReportFiles.read(grades.resolve("shard-2/results.json")).shard().toString());
 
-        Path whole = dir.resolve("whole");
-        assertEquals(0, Main.commandLine().execute("grade", "--submissions", subs.toString(), "--arenas", arena.toString(),
-                "--seeds", "1", "--out", whole.toString(), "--jobs", "2"));
         List<String> files = ReportFolder.files(whole);
         assertEquals(files, ReportFolder.files(merged));
         assertEquals(4, ReportFiles.read(merged.resolve("results.json")).runs().size());

@@ -39,7 +39,7 @@ class WarmWorkerGradingTest {
 
     @Test
     @Timeout(value = 480, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
-    void gradingOnWarmWorkersWritesTheSameReportAsOneJvmPerRun() throws IOException {
+    void gradingOnWarmWorkersWritesTheSameReportAsOneJvmPerRun() throws Exception {
         requireBoxInCi();
         Path subs = copySubmissions(List.of("alice", "carol", "erin", "frank", "grace", "ivan"));
         Hostile.poolSpinner(subs.resolve("paula"));
@@ -48,9 +48,8 @@ class WarmWorkerGradingTest {
         String[] common = {"--submissions", subs.toString(), "--arenas", "maze", "lab", "--seeds", "1", "--seconds", "20",
             "--jobs", "2", "--hang-timeout", "3", "--wall-limit", "120", "--heap-mb", "128"};
         Path warm = dir.resolve("warm");
-        String printed = grade(ReportFolder.concat(common, "--out", warm.toString()));
         Path one = dir.resolve("one");
-        grade(ReportFolder.concat(common, "--out", one.toString(), "--worker-runs", "1"));
+        String printed = gradeBesideOneJvmPerRun(common, warm, one);
 
         Map<String, String> status = ReportFiles.readCsv(warm.resolve("results.csv")).stream().collect(Collectors.toMap(
                 RunRecord::student, r -> r.status().word(), (a, b) -> a.equals(b) ? a : a + "/" + b, TreeMap::new));
@@ -66,7 +65,7 @@ class WarmWorkerGradingTest {
 
     @Test
     @Timeout(value = 300, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
-    void whatARunLeavesInItsWorkerChangesNoLaterRun() throws IOException {
+    void whatARunLeavesInItsWorkerChangesNoLaterRun() throws Exception {
         requireBoxInCi();
         Path subs = dir.resolve("subs");
         counter(subs.resolve("cole"));
@@ -75,9 +74,8 @@ class WarmWorkerGradingTest {
         String[] common = {"--submissions", subs.toString(), "--arenas", "lab", "--seeds", "2", "--seconds", "20", "--jobs", "2",
             "--hang-timeout", "3", "--wall-limit", "120", "--heap-mb", "128"};
         Path warm = dir.resolve("warm");
-        String printed = grade(ReportFolder.concat(common, "--out", warm.toString()));
         Path one = dir.resolve("one");
-        grade(ReportFolder.concat(common, "--out", one.toString(), "--worker-runs", "1"));
+        String printed = gradeBesideOneJvmPerRun(common, warm, one);
 
         sameReport(one, warm);
         Map<String, List<String>> status = ReportFiles.readCsv(warm.resolve("results.csv")).stream().collect(Collectors.groupingBy(
@@ -97,7 +95,7 @@ class WarmWorkerGradingTest {
 
     @Test
     @Timeout(value = 300, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
-    void aRunKilledAtItsWallLimitTakesItsWorkerAndTheNextRunGetsAFreshOne() throws IOException {
+    void aRunKilledAtItsWallLimitTakesItsWorkerAndTheNextRunGetsAFreshOne() throws Exception {
         requireBoxInCi();
         Path subs = dir.resolve("subs");
         slowpoke(subs.resolve("sam"));
@@ -109,9 +107,8 @@ class WarmWorkerGradingTest {
         String[] common = {"--submissions", subs.toString(), "--arenas", near.toString(), "lab", "--seeds", "1", "--seconds",
             "20", "--jobs", "1", "--hang-timeout", "5", "--wall-limit", "8", "--heap-mb", "128"};
         Path warm = dir.resolve("warm");
-        String printed = grade(ReportFolder.concat(common, "--out", warm.toString()));
         Path one = dir.resolve("one");
-        grade(ReportFolder.concat(common, "--out", one.toString(), "--worker-runs", "1"));
+        String printed = gradeBesideOneJvmPerRun(common, warm, one);
 
         List<RunRecord> runs = ReportFiles.readCsv(warm.resolve("results.csv"));
         assertEquals(RunStatus.HUNG, runs.get(0).status(), runs.toString());
@@ -308,6 +305,20 @@ class WarmWorkerGradingTest {
         return subs;
     }
 
+
+    /**
+     * Grades on warm workers into {@code warm} (in this JVM, {@link #grade}) while the reference grading, one JVM per run
+     * ({@code --worker-runs 1}), goes into {@code one} beside it, in a JVM of its own: the two are independent, and most of
+     * each is waiting (hang timeouts, wall-clock limits, JVMs starting). @return what the warm grading printed
+     */
+    private String gradeBesideOneJvmPerRun(String[] common, Path warm, Path one) throws IOException, InterruptedException {
+        try (ChildGrading reference = ChildGrading.start(dir.resolve("one.log"),
+                ReportFolder.concat(common, "--out", one.toString(), "--worker-runs", "1"))) {
+            String printed = grade(ReportFolder.concat(common, "--out", warm.toString()));
+            reference.await(240);
+            return printed;
+        }
+    }
 
     /** Grades (in the sandbox where there is one) through the command line; returns what it printed, progress included. */
     private static String grade(String... args) {

@@ -23,6 +23,7 @@ import org.kheperasim.sim.engine.view.RobotView;
 import org.kheperasim.sim.engine.view.Snapshot;
 import org.kheperasim.sim.gui.robot.RobotEditor;
 import org.kheperasim.sim.gui.robot.RobotFiles;
+import org.kheperasim.sim.run.PacedRunner;
 
 /**
  * Runs in a child JVM under Xvfb (see {@link RobotEditorTest}), every robot-editor check in one
@@ -279,19 +280,34 @@ public final class RobotEditorDriver {
     }
 
     private static Snapshot runPast(MainWindow w, double seconds) throws Exception {
-        // x4 while only waiting (20 simulated seconds in 5 s of wall time; the speed never changes what is computed),
-        // back to x1 before the next gesture: at x4 the painting keeps the event queue from ever being idle.
-        SwingUtilities.invokeAndWait(() -> w.chooseSpeed(4));
+        // As fast as possible while only waiting, the run pausing itself at exactly that moment (the speed never changes
+        // what is computed; pauseAt is queued before the speed, so the run cannot pass it); back to x1 before the next
+        // gesture, as the window's runs start.
+        long target = (long) StrictMath.rint(seconds * 1e9);
         long start = System.nanoTime();
-        while (System.nanoTime() - start < 90_000_000_000L) {
-            Snapshot s = w.runner() == null ? null : w.runner().latest();
-            if (s != null && s.timeSeconds() >= seconds) {
+        PacedRunner r = null;
+        while (r == null && System.nanoTime() - start < 90_000_000_000L) {
+            r = onEdt(() -> {
+                PacedRunner live = w.runner();
+                if (live != null) {
+                    live.pauseAt(target);
+                    w.chooseSpeed(PacedRunner.MAX_SPEED);
+                }
+                return live;
+            });
+            if (r == null) {
+                Thread.sleep(20);
+            }
+        }
+        while (r != null && System.nanoTime() - start < 90_000_000_000L) {
+            Snapshot s = r.latest();
+            if (r.state() == PacedRunner.State.PAUSED && s != null && s.timeNanos() == target) {
                 SwingUtilities.invokeAndWait(() -> w.chooseSpeed(1));
                 return s;
             }
             Thread.sleep(20);
         }
-        fail("the run did not reach " + seconds + " s in 90 s: " + w.consoleText());
+        fail("the run did not pause at " + seconds + " s in 90 s: " + w.consoleText());
         return null;
     }
 

@@ -10,6 +10,10 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import javax.tools.ToolProvider;
 import org.junit.jupiter.api.BeforeAll;
@@ -123,15 +127,42 @@ class ControllerThreadsEndWithTheRunTest {
         return new String[] {String.valueOf(p.exitValue()), text};
     }
 
+    /**
+     * The JVMs are independent (one controller each), and most of each is a JVM starting or a hang timeout running out:
+     * two at a time, each checked as it was alone.
+     */
     @Test
     void eachJvmEndsByItselfAfterTheRunAndSaysWhy() throws Exception {
-        for (String[] c : CONTROLLERS) {
-            String[] r = runAlone(c[0]);
-            assertEquals(c[2], r[0], c[0] + " exit status: " + r[1]);
-            assertTrue(r[1].contains(c[3]), c[0] + " says '" + c[3] + "': " + r[1]);
+        ExecutorService two = Executors.newFixedThreadPool(2);
+        try {
+            List<Future<String[]>> runs = new ArrayList<>();
+            for (String[] c : CONTROLLERS) {
+                runs.add(two.submit(() -> runAlone(c[0])));
+            }
+            Future<String[]> finalized = two.submit(() -> runAlone("Finalized"));
+            for (int i = 0; i < CONTROLLERS.length; i++) {
+                String[] c = CONTROLLERS[i];
+                String[] r = result(runs.get(i));
+                assertEquals(c[2], r[0], c[0] + " exit status: " + r[1]);
+                assertTrue(r[1].contains(c[3]), c[0] + " says '" + c[3] + "': " + r[1]);
+            }
+            String[] r = result(finalized);
+            assertEquals("2", r[0], r[1]);
+            assertTrue(r[1].contains("Finalized.java:6: declares finalize(): a finalizer runs on the JVM's finalizer thread"), r[1]);
+        } finally {
+            two.shutdownNow();
         }
-        String[] r = runAlone("Finalized");
-        assertEquals("2", r[0], r[1]);
-        assertTrue(r[1].contains("Finalized.java:6: declares finalize(): a finalizer runs on the JVM's finalizer thread"), r[1]);
+    }
+
+    /** @return what {@link #runAlone} returned; what it threw (a failed assertion) as it threw it */
+    private static String[] result(Future<String[]> run) throws Exception {
+        try {
+            return run.get();
+        } catch (ExecutionException e) {
+            if (e.getCause() instanceof Error err) {
+                throw err;
+            }
+            throw (Exception) e.getCause();
+        }
     }
 }
