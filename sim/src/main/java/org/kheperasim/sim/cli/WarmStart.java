@@ -84,7 +84,8 @@ final class WarmStart {
         if (archive.isEmpty()) {
             return -1;
         }
-        List<String> cmd = command(ProcessHandle.current().info().arguments().orElse(new String[0]), archive.get(), args);
+        String[] jvmArgs = ProcessHandle.current().info().arguments().orElse(new String[0]);
+        List<String> cmd = command(jvmArgs, archive.get(), args);
         if (cmd.isEmpty()) {
             return -1;
         }

@@ -5,10 +5,10 @@ import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import org.kheperasim.sim.files.AtomicFiles;
 
 /**
  * The simulator's class-data archive (AppCDS): the classes a run loads, parsed and verified once, in
@@ -32,8 +32,8 @@ public final class ClassArchive {
     /** The environment variable that turns the archive off ({@code off}). */
     public static final String ENV = "KHEPERASIM_CDS";
     /** The command the build trains the archive with: what a cold run loads. */
-    static final List<String> TRAINING = List.of("run", "--arena", "maze", "--controller", "WallFollower", "--seed", "1",
-            "--seconds", "60");
+    static final List<String> TRAINING = List.of("run", "--arena", "maze", "--controller", "WallFollower",
+            "--seed", "1", "--seconds", "60");
     /** Static archives of JDK 17 begin with this, little-endian (HotSpot's CDS_ARCHIVE_MAGIC). */
     private static final int MAGIC = 0xf00baba2;
     private static final int HEADER_BYTES = 4096;
@@ -160,7 +160,8 @@ public final class ClassArchive {
      */
     public static List<String> jvmOptions(Path archive) {
         // concat, not +: this runs before the warm JVM starts, where a string-concatenation bootstrap costs
-        return List.of("-XX:SharedArchiveFile=".concat(archive.toString()), "-Xshare:auto", "-Xlog:cds=off", "-Xlog:cds+dynamic=off");
+        return List.of("-XX:SharedArchiveFile=".concat(archive.toString()), "-Xshare:auto", "-Xlog:cds=off",
+                "-Xlog:cds+dynamic=off");
     }
 
     /**
@@ -193,8 +194,8 @@ public final class ClassArchive {
                         : "java -Xshare:dump") + " failed, see " + log + "); the jar runs as well without it");
                 return;
             }
-            Files.move(made, archive, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-            Files.writeString(key(archive), madeFor(jar), StandardCharsets.UTF_8);
+            AtomicFiles.rename(made, archive);
+            AtomicFiles.write(key(archive), madeFor(jar));
         } finally {
             Files.deleteIfExists(list);
             Files.deleteIfExists(made);
@@ -203,7 +204,8 @@ public final class ClassArchive {
 
     private static int exec(List<String> cmd, Path log, boolean append) throws IOException, InterruptedException {
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true);
-        pb.redirectOutput(append ? ProcessBuilder.Redirect.appendTo(log.toFile()) : ProcessBuilder.Redirect.to(log.toFile()));
+        pb.redirectOutput(append ? ProcessBuilder.Redirect.appendTo(log.toFile())
+                : ProcessBuilder.Redirect.to(log.toFile()));
         return pb.start().waitFor();
     }
 }

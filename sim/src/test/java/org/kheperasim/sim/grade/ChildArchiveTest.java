@@ -33,7 +33,8 @@ class ChildArchiveTest {
     @Test
     void withoutAnArchiveTheCommandLineNamesNone() {
         List<String> java = ChildRun.jvmOptions(LIMITS, Optional.empty());
-        assertFalse(java.stream().anyMatch(o -> o.contains("SharedArchive") || o.startsWith("-Xshare")), java.toString());
+        assertFalse(java.stream().anyMatch(o -> o.contains("SharedArchive") || o.startsWith("-Xshare")),
+                java.toString());
         assertEquals(ChildRun.boxed(SUB, List.of("lab")), ChildRun.boxed(SUB, List.of("lab"), Optional.empty()));
         // The tests' own classes are folders, not a jar: no archive, the one-argument forms agree.
         assertEquals(java, ChildRun.jvmOptions(LIMITS));

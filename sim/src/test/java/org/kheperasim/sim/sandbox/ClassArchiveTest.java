@@ -76,7 +76,8 @@ class ClassArchiveTest {
         b[1] = (byte) 0xab;
         b[2] = 0x0b;
         b[3] = (byte) 0xf0;
-        byte[] ident = ("OpenJDK 64-Bit Server VM (" + version + ") for linux-amd64").getBytes(StandardCharsets.US_ASCII);
+        byte[] ident = ("OpenJDK 64-Bit Server VM (" + version + ") for linux-amd64")
+                .getBytes(StandardCharsets.US_ASCII);
         System.arraycopy(ident, 0, b, 617, ident.length);
         return b;
     }
