@@ -77,7 +77,11 @@ final class WarmStart {
      * @return the warm JVM's exit status, or -1 when this JVM runs the command itself
      */
     static int relaunch(String[] args) {
-        if (args.length == 0 || !COMMANDS.contains(args[0]) || System.getProperty(STARTED) != null) {
+        if (System.getProperty(STARTED) != null) {
+            Orphan.watch();
+            return -1;
+        }
+        if (args.length == 0 || !COMMANDS.contains(args[0])) {
             return -1;
         }
         Optional<Path> archive = ClassArchive.current();
@@ -103,6 +107,43 @@ final class WarmStart {
                 return p.waitFor();
             } catch (InterruptedException e) {
                 p.destroy();
+            }
+        }
+    }
+
+    /**
+     * In the warm JVM: should the JVM the user started die without stopping this one (kill -9, the
+     * out-of-memory killer), end as it did, at once, rather than run on unseen. Its parent is gone
+     * when this process has another parent (the system adopts an orphan).
+     */
+    private static final class Orphan extends Thread {
+        private final long parent;
+
+        private Orphan(long parent) {
+            super("khepera-sim-orphan-watch");
+            this.parent = parent;
+            setDaemon(true);
+        }
+
+        static void watch() {
+            Optional<ProcessHandle> p = ProcessHandle.current().parent();
+            if (p.isPresent()) {
+                new Orphan(p.get().pid()).start();
+            }
+        }
+
+        @Override
+        public void run() {
+            while (true) {
+                try {
+                    Thread.sleep(250);
+                } catch (InterruptedException e) {
+                    return;
+                }
+                Optional<ProcessHandle> p = ProcessHandle.current().parent();
+                if (p.isEmpty() || p.get().pid() != parent) {
+                    Runtime.getRuntime().halt(137); // as the JVM the user started ended: killed (128 + SIGKILL)
+                }
             }
         }
     }

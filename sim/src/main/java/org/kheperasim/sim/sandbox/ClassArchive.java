@@ -181,8 +181,10 @@ public final class ClassArchive {
         Path made = archive.resolveSibling(archive.getFileName() + ".tmp");
         Path log = archive.resolveSibling(archive.getFileName() + ".log");
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+        // As the warm JVM runs (cli.WarmStart), so that what it alone loads is archived too.
         List<String> train = new ArrayList<>(List.of(java, "-XX:DumpLoadedClassList=" + list, "-D" + PROPERTY + "=off",
-                "-Djava.awt.headless=true", "-cp", jar.toString(), "org.kheperasim.sim.cli.Main"));
+                "-Dkheperasim.cds.started=true", "-Djava.awt.headless=true", "-cp", jar.toString(),
+                "org.kheperasim.sim.cli.Main"));
         train.addAll(TRAINING);
         List<String> dump = List.of(java, "-Xshare:dump", "-XX:SharedClassListFile=" + list,
                 "-XX:SharedArchiveFile=" + made, "-cp", jar.toString());
