@@ -88,6 +88,29 @@ class ClassArchiveIT {
     }
 
     @Test
+    void killingTheJvmStartedEndsTheWarmOneToo() throws Exception {
+        requireArchive();
+        Path trace = dir.resolve("killed.trace");
+        ProcessBuilder pb = new ProcessBuilder(java(), "-jar", JAR.toString(), "run", "--arena", "maze", "--controller",
+                "WallFollower", "--seed", "1", "--seconds", "100000", "--trace", trace.toString())
+                .redirectOutput(dir.resolve("killed.out").toFile()).redirectError(dir.resolve("killed.err").toFile());
+        pb.environment().remove(ClassArchive.ENV);
+        Process p = pb.start();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
+        while ((!Files.exists(trace) || Files.size(trace) < 10_000) && System.nanoTime() < deadline) {
+            Thread.sleep(20);
+        }
+        List<ProcessHandle> below = p.descendants().toList();
+        assertFalse(below.isEmpty(), "the run started warm, in a JVM of its own");
+        p.destroyForcibly(); // kill -9: nothing of the first JVM runs
+        assertTrue(p.waitFor(30, TimeUnit.SECONDS));
+        for (ProcessHandle h : below) {
+            h.onExit().get(30, TimeUnit.SECONDS);
+            assertFalse(h.isAlive(), "the warm JVM ended with it: " + h);
+        }
+    }
+
+    @Test
     void anArchiveThatDoesNotFitChangesNothingAndSaysNothing() throws Exception {
         requireArchive();
         Path jar = Files.copy(JAR, Files.createDirectories(dir.resolve("copy")).resolve("khepera-sim.jar"));
