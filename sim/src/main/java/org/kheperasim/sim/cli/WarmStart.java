@@ -61,6 +61,24 @@ final class WarmStart {
         }
     }
 
+    /**
+     * @return true when the environment gives the JVM options ({@code JDK_JAVA_OPTIONS},
+     *     {@code JAVA_TOOL_OPTIONS}, {@code _JAVA_OPTIONS}): each JVM says it picked them up, so a second one
+     *     would say it twice, and they might choose an archive of their own
+     */
+    static boolean optionsFromTheEnvironment() {
+        for (String name : ENVIRONMENT_OPTIONS) {
+            String v = System.getenv(name);
+            if (v != null && !v.isBlank()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private static final List<String> ENVIRONMENT_OPTIONS = List.of("JDK_JAVA_OPTIONS", "JAVA_TOOL_OPTIONS",
+            "_JAVA_OPTIONS");
+
     /** @return true when these JVM options choose the compilers themselves */
     private static boolean choosesCompiler(List<String> jvmArgs) {
         for (String a : jvmArgs) {
@@ -81,7 +99,7 @@ final class WarmStart {
             Orphan.watch();
             return -1;
         }
-        if (args.length == 0 || !COMMANDS.contains(args[0])) {
+        if (args.length == 0 || !COMMANDS.contains(args[0]) || optionsFromTheEnvironment()) {
             return -1;
         }
         Optional<Path> archive = ClassArchive.current();
