@@ -67,7 +67,7 @@ class ClassArchiveIT {
                     "--controller", "WallFollower", "--seed", "1", "--seconds", "100000", "--trace", trace.toString()));
             ProcessBuilder pb = new ProcessBuilder(cmd).redirectOutput(dir.resolve("long.out").toFile())
                     .redirectError(dir.resolve("long.err").toFile());
-            pb.environment().remove(ClassArchive.ENV);
+            clean(pb);
             pb.environment().putAll(env);
             Process p = pb.start();
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
@@ -94,7 +94,7 @@ class ClassArchiveIT {
         ProcessBuilder pb = new ProcessBuilder(java(), "-jar", JAR.toString(), "run", "--arena", "maze", "--controller",
                 "WallFollower", "--seed", "1", "--seconds", "100000", "--trace", trace.toString())
                 .redirectOutput(dir.resolve("killed.out").toFile()).redirectError(dir.resolve("killed.err").toFile());
-        pb.environment().remove(ClassArchive.ENV);
+        clean(pb);
         Process p = pb.start();
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
         while ((!Files.exists(trace) || Files.size(trace) < 10_000) && System.nanoTime() < deadline) {
@@ -171,7 +171,7 @@ class ClassArchiveIT {
         }
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true)
                 .redirectOutput(dir.resolve(name + ".txt").toFile());
-        pb.environment().remove(ClassArchive.ENV);
+        clean(pb);
         pb.environment().putAll(env);
         Process p = pb.start();
         Set<String> seen = new TreeSet<>();
@@ -186,6 +186,13 @@ class ClassArchiveIT {
         String results = Files.readString(out.resolve("results.csv"));
         assertTrue(results.contains(",ok,") || results.contains(",ok"), results);
         return seen;
+    }
+
+    /** Without the variables that turn the archive off or that keep a second JVM from starting. */
+    private static void clean(ProcessBuilder pb) {
+        for (String name : List.of(ClassArchive.ENV, "JDK_JAVA_OPTIONS", "JAVA_TOOL_OPTIONS", "_JAVA_OPTIONS")) {
+            pb.environment().remove(name);
+        }
     }
 
     private static void requireArchive() {
@@ -214,7 +221,7 @@ class ClassArchiveIT {
         Path out = dir.resolve("out.txt");
         Path err = dir.resolve("err.txt");
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectOutput(out.toFile()).redirectError(err.toFile());
-        pb.environment().remove(ClassArchive.ENV);
+        clean(pb);
         pb.environment().putAll(env);
         Process p = pb.start();
         assertTrue(p.waitFor(120, TimeUnit.SECONDS), "ended in time");
