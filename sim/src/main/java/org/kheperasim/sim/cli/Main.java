@@ -92,10 +92,7 @@ public final class Main implements java.util.concurrent.Callable<Integer> {
      * @param args command-line arguments
      */
     public static void main(String[] args) {
-        int code = WarmStart.relaunch(args); // with the jar's class-data archive, in a JVM that maps it
-        if (code >= 0) {
-            System.exit(code);
-        }
+        int code;
         try {
             code = commandLineFor(args).execute(args);
         } catch (OutOfMemoryError e) {

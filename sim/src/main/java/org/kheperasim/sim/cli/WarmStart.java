@@ -20,7 +20,7 @@ import org.kheperasim.sim.sandbox.OwnClasspath;
  */
 final class WarmStart {
     /** The commands that start warm. */
-    static final List<String> COMMANDS = List.of("run", "evaluate");
+    static final List<String> COMMANDS = List.of("run", "evaluate", "grade");
     /** Set in the warm JVM, so that it does not start another. */
     static final String STARTED = "kheperasim.cds.started";
 

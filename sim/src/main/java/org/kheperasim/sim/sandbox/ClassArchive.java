@@ -6,15 +6,19 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
+import java.util.stream.Stream;
 import org.kheperasim.sim.files.AtomicFiles;
 
 /**
  * The simulator's class-data archive (AppCDS): the classes a run loads, parsed and verified once, in
  * a file the JVM maps at start instead ({@code -XX:SharedArchiveFile}), beside the runnable jar as
- * {@code khepera-sim.jsa}. The build makes it ({@link #main}: a short training run lists the classes,
- * then {@code java -Xshare:dump} writes them); the JVMs the simulator starts are given it
+ * {@code khepera-sim.jsa}. The build makes it ({@link #main}: a short run and a short grading list
+ * the classes, then {@code java -Xshare:dump} writes them); the JVMs the simulator starts are given it
  * ({@link #jvmOptions()}: grade's runs and workers, {@code run --sandbox}), and {@code java -jar}
  * itself starts warm through {@code cli.WarmStart}. A static archive, not a dynamic one
  * ({@code -XX:ArchiveClassesAtExit}): only a static archive of JDK 17 holds picocli's classes (class
@@ -164,10 +168,27 @@ public final class ClassArchive {
                 "-Xlog:cds+dynamic=off");
     }
 
+    /** The submission the build grades to train the archive: a controller of a few lines. */
+    private static final String TRAINER = """
+            import org.kheperasim.api.*;
+
+            /** Drives ahead, turns on the spot when something is near in front. */
+            public class Trainer extends Controller {
+                @Override
+                protected void doWork() {
+                    boolean near = Math.max(proximity(IrSensor.FRONT_LEFT), proximity(IrSensor.FRONT_RIGHT)) > 500;
+                    setSpeeds(near ? 3 : 5, near ? -3 : 5);
+                    sleepMillis(100);
+                }
+            }
+            """;
+
     /**
-     * Makes the archive of a runnable jar, beside it: the build's last step. A training run
-     * ({@link #TRAINING}) lists the classes it loads, then {@code java -Xshare:dump} archives them.
-     * Should either fail, it says so and leaves no archive: the jar runs as well without one.
+     * Makes the archive of a runnable jar, beside it: the build's last step. Two trainings list the
+     * classes they load: a run ({@link #TRAINING}) as {@code java -jar ... run} runs it, and a grading
+     * of one small submission (the grader's JVM and the graded one); then {@code java -Xshare:dump}
+     * archives them all. Should the run or the dump fail, it says so and leaves no archive: the jar runs
+     * as well without one. Should the grading fail, the archive holds the run's classes only.
      *
      * @param args the jar
      * @throws Exception if the JVMs cannot be started
@@ -177,20 +198,34 @@ public final class ClassArchive {
         Path archive = beside(jar);
         Files.deleteIfExists(key(archive));
         Files.deleteIfExists(archive);
-        Path list = archive.resolveSibling(archive.getFileName() + ".classlist");
+        Path work = archive.resolveSibling(archive.getFileName() + ".training");
+        deleteTree(work);
+        Files.createDirectories(work.resolve("subs").resolve("trainer"));
         Path made = archive.resolveSibling(archive.getFileName() + ".tmp");
         Path log = archive.resolveSibling(archive.getFileName() + ".log");
+        Files.deleteIfExists(log);
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        // As the warm JVM runs (cli.WarmStart), so that what it alone loads is archived too.
-        List<String> train = new ArrayList<>(List.of(java, "-XX:DumpLoadedClassList=" + list, "-D" + PROPERTY + "=off",
-                "-Dkheperasim.cds.started=true", "-Djava.awt.headless=true", "-cp", jar.toString(),
-                "org.kheperasim.sim.cli.Main"));
-        train.addAll(TRAINING);
-        List<String> dump = List.of(java, "-Xshare:dump", "-XX:SharedClassListFile=" + list,
-                "-XX:SharedArchiveFile=" + made, "-cp", jar.toString());
+        // Both as the warm JVM runs them (cli.WarmStart), so that what it alone loads is archived too.
+        List<String> jvm = List.of(java, "-D" + PROPERTY + "=off", "-Dkheperasim.cds.started=true",
+                "-Djava.awt.headless=true", "-cp", jar.toString(), "org.kheperasim.sim.cli.Main");
+        List<String> run = new ArrayList<>(jvm);
+        run.add(1, "-XX:DumpLoadedClassList=" + work.resolve("1-run.classlist"));
+        run.addAll(TRAINING);
+        AtomicFiles.write(work.resolve("subs").resolve("trainer").resolve("Trainer.java"), TRAINER);
+        List<String> grade = new ArrayList<>(jvm);
+        grade.addAll(List.of("grade", "--submissions", work.resolve("subs").toString(), "--arenas", "lab", "--seeds",
+                "1", "--seconds", "5", "--heap-mb", "128", "--no-sandbox", "--out", work.resolve("grades").toString()));
         try {
-            int trained = exec(train, log, false);
-            int dumped = trained == 0 ? exec(dump, log, true) : -1;
+            int trained = exec(run, log, Map.of());
+            if (trained == 0 && exec(grade, log, Map.of("JAVA_TOOL_OPTIONS",
+                    "-XX:DumpLoadedClassList=" + work.resolve("2-grade%p.classlist"))) != 0) {
+                System.err.println("khepera-sim: the class-data archive holds a run's classes only (the training"
+                        + " grading failed, see " + log + ")");
+            }
+            Path list = work.resolve("all.classlist");
+            AtomicFiles.write(list, merged(work));
+            int dumped = trained == 0 ? exec(List.of(java, "-Xshare:dump", "-XX:SharedClassListFile=" + list,
+                    "-XX:SharedArchiveFile=" + made, "-cp", jar.toString()), log, Map.of()) : -1;
             if (dumped != 0 || !Files.isRegularFile(made)) {
                 System.err.println("khepera-sim: no class-data archive was made (" + (trained != 0 ? "the training run"
                         : "java -Xshare:dump") + " failed, see " + log + "); the jar runs as well without it");
@@ -199,15 +234,38 @@ public final class ClassArchive {
             AtomicFiles.rename(made, archive);
             AtomicFiles.write(key(archive), madeFor(jar));
         } finally {
-            Files.deleteIfExists(list);
+            deleteTree(work);
             Files.deleteIfExists(made);
         }
     }
 
-    private static int exec(List<String> cmd, Path log, boolean append) throws IOException, InterruptedException {
-        ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true);
-        pb.redirectOutput(append ? ProcessBuilder.Redirect.appendTo(log.toFile())
-                : ProcessBuilder.Redirect.to(log.toFile()));
+    /** @return the trainings' class lists as one, in their order, each line once */
+    private static String merged(Path work) throws IOException {
+        LinkedHashSet<String> lines = new LinkedHashSet<>();
+        try (Stream<Path> lists = Files.list(work)) {
+            for (Path l : lists.filter(p -> p.toString().endsWith(".classlist")).sorted().toList()) {
+                lines.addAll(Files.readAllLines(l, StandardCharsets.UTF_8));
+            }
+        }
+        return String.join("\n", lines) + "\n";
+    }
+
+    private static void deleteTree(Path dir) throws IOException {
+        if (!Files.exists(dir)) {
+            return;
+        }
+        try (Stream<Path> all = Files.walk(dir)) {
+            for (Path p : all.sorted(Comparator.reverseOrder()).toList()) {
+                Files.delete(p);
+            }
+        }
+    }
+
+    private static int exec(List<String> cmd, Path log, Map<String, String> env)
+            throws IOException, InterruptedException {
+        ProcessBuilder pb = new ProcessBuilder(cmd).redirectErrorStream(true)
+                .redirectOutput(ProcessBuilder.Redirect.appendTo(log.toFile()));
+        pb.environment().putAll(env);
         return pb.start().waitFor();
     }
 }
