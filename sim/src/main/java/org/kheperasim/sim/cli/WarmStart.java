@@ -12,11 +12,12 @@ import org.kheperasim.sim.sandbox.OwnClasspath;
  * {@code java -jar khepera-sim.jar run …} starts warm: a jar's manifest cannot give the JVM an
  * option, so when the jar has its class-data archive ({@link ClassArchive}) this JVM starts the same
  * command again in a JVM that maps it, passes on its own options, the terminal and the signals, and
- * exits with that JVM's status. Measured on a cold {@code run} of 60 s: the archive saves about a
- * sixth of the CPU time, the second JVM costs a few hundredths of a second (docs/startup.md).
- * Only for the headless commands where that was measured ({@link #COMMANDS}), only when started with
- * {@code -jar}, and never when the command line already chose an archive ({@code -Xshare},
- * {@code -XX:SharedArchiveFile}).
+ * exits with that JVM's status. A short {@code run} also gets the quick compiler only
+ * ({@link #QUICK_COMPILER}). Measured on a cold {@code run} of 60 s: 0.78 s of CPU time before,
+ * 0.50 s so, of which the first JVM's share is 0.06 s (docs/startup.md). Only for the headless
+ * commands where that was measured ({@link #COMMANDS}), only when started with {@code -jar}, and never
+ * when the command line already chose an archive ({@code -Xshare}, {@code -XX:SharedArchiveFile}) or
+ * the environment gives JVM options.
  */
 final class WarmStart {
     /** The commands that start warm. */
@@ -32,6 +33,9 @@ final class WarmStart {
     static final String QUICK_COMPILER = "-XX:TieredStopAtLevel=1";
     /** The longest run, in simulated seconds, that gets {@link #QUICK_COMPILER}. */
     static final double SHORT_RUN = 600;
+    /** The environment's JVM options ({@link #optionsFromTheEnvironment}). */
+    private static final List<String> ENVIRONMENT_OPTIONS = List.of("JDK_JAVA_OPTIONS", "JAVA_TOOL_OPTIONS",
+            "_JAVA_OPTIONS");
 
     private WarmStart() {
     }
@@ -75,9 +79,6 @@ final class WarmStart {
         }
         return false;
     }
-
-    private static final List<String> ENVIRONMENT_OPTIONS = List.of("JDK_JAVA_OPTIONS", "JAVA_TOOL_OPTIONS",
-            "_JAVA_OPTIONS");
 
     /** @return true when these JVM options choose the compilers themselves */
     private static boolean choosesCompiler(List<String> jvmArgs) {
