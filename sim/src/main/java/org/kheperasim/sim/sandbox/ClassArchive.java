@@ -211,6 +211,7 @@ public final class ClassArchive {
         List<String> run = new ArrayList<>(jvm);
         run.add(1, "-XX:DumpLoadedClassList=" + work.resolve("1-run.classlist"));
         run.addAll(TRAINING);
+        run.addAll(List.of("--trace", work.resolve("run.trace").toString())); // its writer's classes too
         AtomicFiles.write(work.resolve("subs").resolve("trainer").resolve("Trainer.java"), TRAINER);
         List<String> grade = new ArrayList<>(jvm);
         grade.addAll(List.of("grade", "--submissions", work.resolve("subs").toString(), "--arenas", "lab", "--seeds",
