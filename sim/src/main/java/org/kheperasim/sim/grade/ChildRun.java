@@ -7,12 +7,14 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.commandlog.LogChannel;
 import org.kheperasim.sim.sandbox.Box;
 import org.kheperasim.sim.sandbox.BoxLimits;
+import org.kheperasim.sim.sandbox.ClassArchive;
 import org.kheperasim.sim.sandbox.OwnClasspath;
 import org.kheperasim.sim.web.RunOutcome;
 import org.kheperasim.sim.web.RunPageRecorder;
@@ -141,11 +143,22 @@ final class ChildRun {
      *     simulator's classpath at its real location; its main class ({@link GradedRun}, {@link WorkerMain}) comes next
      */
     static List<String> jvmOptions(Limits lim) {
+        return jvmOptions(lim, ClassArchive.current());
+    }
+
+    /**
+     * @param lim     the limits
+     * @param archive the jar's class-data archive, if it has one that fits (docs/startup.md)
+     * @return {@link #jvmOptions(Limits)} with this archive
+     */
+    static List<String> jvmOptions(Limits lim, Optional<Path> archive) {
         // Native access for JNA (the controller threads' core, see host.CpuAffinity): Java 22+ warns without it.
-        return List.of("--enable-native-access=ALL-UNNAMED", "-Xmx" + lim.heapMb() + "m", "-XX:+UseSerialGC",
-                "-XX:TieredStopAtLevel=1",
-                "-XX:ActiveProcessorCount=" + lim.processors(), "-Djava.awt.headless=true", "-cp",
-                OwnClasspath.asOption());
+        List<String> java = new ArrayList<>(List.of("--enable-native-access=ALL-UNNAMED", "-Xmx" + lim.heapMb() + "m",
+                "-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1",
+                "-XX:ActiveProcessorCount=" + lim.processors(), "-Djava.awt.headless=true"));
+        archive.ifPresent(a -> java.addAll(ClassArchive.jvmOptions(a)));
+        java.addAll(List.of("-cp", OwnClasspath.asOption()));
+        return List.copyOf(java);
     }
 
     /**
@@ -175,7 +188,18 @@ final class ChildRun {
      * @return what a box of its runs shows, read-only: the simulator, the submission's classes, the arena files
      */
     static List<Path> boxed(Submission sub, List<String> arenas) {
+        return boxed(sub, arenas, ClassArchive.current());
+    }
+
+    /**
+     * @param sub     the submission
+     * @param arenas  the arenas its runs use
+     * @param archive the jar's class-data archive, if it has one that fits
+     * @return {@link #boxed(Submission, List)}, the archive too (beside the jar, at its real path)
+     */
+    static List<Path> boxed(Submission sub, List<String> arenas, Optional<Path> archive) {
         List<Path> read = new ArrayList<>(OwnClasspath.entries());
+        archive.ifPresent(read::add);
         read.add(sub.classpath().toAbsolutePath());
         for (String a : arenas) {
             Path f = arenaFile(a);

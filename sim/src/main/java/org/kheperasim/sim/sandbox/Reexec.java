@@ -40,6 +40,7 @@ public final class Reexec {
         });
         List<Path> read = new ArrayList<>(readOnly);
         read.addAll(OwnClasspath.entries()); // at their real paths: the box runs in a folder of its own
+        ClassArchive.current().ifPresent(read::add);
         List<Path> write = new ArrayList<>();
         try {
             for (Path w : writable) {
@@ -56,6 +57,7 @@ public final class Reexec {
                 "-Xmx" + (limits.memoryBytes() / (1L << 20) - 768) + "m"));
         System.getProperties().stringPropertyNames().stream().filter(k -> k.startsWith("kheperasim.")).sorted()
                 .forEach(k -> java.add("-D" + k + "=" + System.getProperty(k)));
+        java.addAll(ClassArchive.jvmOptions());
         java.addAll(List.of("-cp", OwnClasspath.asOption(), "org.kheperasim.sim.cli.Main", command));
         java.addAll(args);
         List<String> cmd = Box.command(new Box.Spec(read, write, null, network, limits, 0), java);
