@@ -23,7 +23,7 @@ final class HelpDialog {
             List.of("quick-start.md", "gui.md", "arena-format.md", "robot-files.md", "simulation-model.md",
             "controller-rules.md", "swarms.md", "robot-link.md", "protocol-server.md", "wsu-migration.md", "grading.md",
             "testing.md", "autograding.md", "web-replay.md", "evaluate.md", "calibration.md",
-            "adding-a-device.md", "faq.md");
+            "adding-a-device.md", "startup.md", "faq.md");
 
     private HelpDialog() {
     }
