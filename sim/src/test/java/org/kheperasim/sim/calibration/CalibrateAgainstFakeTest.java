@@ -37,12 +37,27 @@ import org.kheperasim.sim.engine.space.World;
  */
 class CalibrateAgainstFakeTest {
     private static final long SEED = 37;
+    private static Shared shared;
+
+    /** One calibration of the fake robot (seed {@value #SEED}), made once for the tests that only read it. */
+    record Shared(FakeWallScene scene, Path calibration) {
+    }
+
+    /** @return the fake robot of seed {@value #SEED} and its calibration, made on the first call */
+    static synchronized Shared shared() throws Exception {
+        if (shared == null) {
+            FakeWallScene scene = new FakeWallScene(SEED);
+            shared = new Shared(scene, calibrate(scene, Files.createTempDirectory("khepera-calibration-")));
+        }
+        return shared;
+    }
     private static final Settings QUIET = Settings.defaults().withNoise(0).with("prox.spikeRate", "0");
 
     @Test
-    void theSimulatorLoadedWithTheCalibrationMatchesTheFake(@TempDir Path dir) throws Exception {
-        FakeWallScene scene = new FakeWallScene(SEED);
-        Path cal = calibrate(scene, dir);
+    void theSimulatorLoadedWithTheCalibrationMatchesTheFake() throws Exception {
+        FakeWallScene scene = shared().scene();
+        Path cal = shared().calibration();
+        Path dir = cal.getParent();
         assertTrue(Files.exists(dir.resolve("lab3-2026-12-02-wall.sample")));
         List<String> raw = Files.readAllLines(dir.resolve("lab3-2026-12-02-samples.csv"));
         assertEquals(1 + 14 * 24 * 20 + 2 * 4 * 20 + 4 * 20, raw.size(), "one line per raw reading, with its header");
@@ -179,8 +194,8 @@ class CalibrateAgainstFakeTest {
      */
     @Test
     void compareOnTheFakeRobotDivergesLessWithItsCalibration(@TempDir Path dir) throws Exception {
-        FakeWallScene scene = new FakeWallScene(SEED + 2);
-        Path cal = calibrate(scene, dir);
+        FakeWallScene scene = shared().scene();
+        Path cal = shared().calibration();
         // The robot faces the wall 40 mm away and Braitenberg drives it for 4 s: up to the wall and away.
         scene.place(40, 0);
         Path rec = dir.resolve("fake.rec");

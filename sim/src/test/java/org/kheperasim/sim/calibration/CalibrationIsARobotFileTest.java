@@ -12,7 +12,6 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
-import org.kheperasim.link.fake.FakeWallScene;
 import org.kheperasim.sim.engine.model.RobotModel;
 import org.kheperasim.sim.engine.model.Settings;
 import org.kheperasim.sim.engine.robot.RobotFileReader;
@@ -35,7 +34,10 @@ class CalibrationIsARobotFileTest {
 
     @Test
     void aCalibrationRunsWhereverARobotFileDoes() throws Exception {
-        Path cal = CalibrateAgainstFakeTest.calibrate(new FakeWallScene(41), dir);
+        // The calibration and its wall samples, copied beside this test's arena.
+        Path made = CalibrateAgainstFakeTest.shared().calibration();
+        Path cal = Files.copy(made, dir.resolve(made.getFileName()));
+        Files.copy(made.resolveSibling("lab3-2026-12-02-wall.sample"), dir.resolve("lab3-2026-12-02-wall.sample"));
         RobotType t = RobotTypes.load(cal);
         assertEquals("lab3", t.measured().robot());
         assertEquals("khepera1", t.name(), "a calibration is its base robot, measured");
