@@ -129,7 +129,7 @@ public final class SensorRenderer {
                 lx -= 36;
                 ly = cy + body + 32;
             }
-            drawReading(g, fm, lx, ly, index, prox, light, r != null);
+            drawReading(g, fm, lx, ly, index, prox, light, type.proximity().maxReading(), r != null);
         }
         double y = ROBOT_AREA + 10;
         GripperView gv = r == null ? null : r.gripper();
@@ -149,8 +149,11 @@ public final class SensorRenderer {
         g.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
         g.setColor(Color.BLACK);
         if (r != null) {
-            g.drawString(String.format(Locale.ROOT, "speed   L %4d   R %4d  (units of 8 mm/s)", r.speedLeft(),
-                    r.speedRight()), 10, (float) y);
+            // The robot's own speed unit: 8 mm/s on a Khepera, 0.1288 mm/s (one step a second) on an e-puck.
+            g.drawString(String.format(Locale.ROOT, "speed   L %4d   R %4d  (units of %s mm/s)", r.speedLeft(),
+                    r.speedRight(), new java.math.BigDecimal(Double.toString(
+                            r.type().drive().mmPerSecondPerUnit())).stripTrailingZeros()
+                                    .toPlainString()), 10, (float) y);
             g.drawString(String.format(Locale.ROOT, "encoder L %7d R %7d  pulses", r.encoderLeft(), r.encoderRight()),
                     10, (float) y + 16);
             g.drawString(String.format(Locale.ROOT, "pose (%.1f, %.1f) mm  %.1f deg  robot %d", r.x(),
@@ -176,7 +179,7 @@ public final class SensorRenderer {
     }
 
     private static void drawReading(Graphics2D g, FontMetrics fm, double cx, double cy, int index, int prox,
-            int light, boolean live) {
+            int light, int proxTop, boolean live) {
         double bw = 54;
         double bh = 6;
         double x0 = cx - bw / 2;
@@ -184,16 +187,17 @@ public final class SensorRenderer {
         g.fill(new Rectangle2D.Double(x0, cy - 9, bw, bh));
         g.fill(new Rectangle2D.Double(x0, cy + 9, bw, bh));
         g.setColor(PROX);
-        g.fill(new Rectangle2D.Double(x0, cy - 9, bw * clamp(prox), bh));
+        g.fill(new Rectangle2D.Double(x0, cy - 9, bw * clamp(prox, proxTop), bh));
         g.setColor(LIGHT);
-        g.fill(new Rectangle2D.Double(x0, cy + 9, bw * clamp(light), bh));
+        g.fill(new Rectangle2D.Double(x0, cy + 9, bw * clamp(light, 1023), bh));
         g.setColor(Color.BLACK);
         String t = live ? index + ": " + prox + " / " + light : index + ": - / -";
         g.drawString(t, (float) (cx - fm.stringWidth(t) / 2.0), (float) cy + 6);
     }
 
-    private static double clamp(int v) {
-        return StrictMath.max(0, StrictMath.min(1023, v)) / 1023.0;
+    /** @return a reading as a fraction of its scale's top (a Khepera's 1023, an e-puck's 4095) */
+    private static double clamp(int v, int top) {
+        return StrictMath.max(0, StrictMath.min(top, v)) / (double) top;
     }
 
     /** Side view of the arm: raised or lowered by its position. */
