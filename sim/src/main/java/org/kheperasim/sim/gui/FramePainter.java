@@ -69,7 +69,8 @@ final class FramePainter {
         replayBar.update();
         Snapshot s = feed.snapshot();
         if (s != lastPainted) {
-            plot.show(feed.selectedSeries(), s == null ? 0 : s.timeSeconds(),
+            org.kheperasim.sim.engine.view.RobotView selected = feed.selected();
+            plot.show(feed.selectedSeries(), selected == null ? null : selected.type(), s == null ? 0 : s.timeSeconds(),
                     player.open() ? player.cursor() : Double.NaN);
             sensorPanel.repaint();
             lastPainted = s;

@@ -56,6 +56,7 @@ final class PlotPanel extends JPanel {
     /** Spans offered, s; the last is the whole run. */
     static final double[] SPANS = {10, 60, 600, Double.POSITIVE_INFINITY};
 
+    private org.kheperasim.sim.engine.robot.RobotType type = org.kheperasim.sim.engine.robot.RobotTypes.KHEPERA1;
     private final PlotCanvas canvas = new PlotCanvas();
     private final JComboBox<Quantity> quantity = new JComboBox<>(Quantity.values());
     private final JComboBox<String> span =
@@ -139,8 +140,10 @@ final class PlotPanel extends JPanel {
      * @param nowSeconds the time shown (the span ends here)
      * @param cursorSeconds a time to mark (the replay's), or NaN
      */
-    void show(RobotSeries s, double nowSeconds, double cursorSeconds) {
+    void show(RobotSeries s, org.kheperasim.sim.engine.robot.RobotType robotType, double nowSeconds,
+            double cursorSeconds) {
         series = s;
+        type = robotType == null ? org.kheperasim.sim.engine.robot.RobotTypes.KHEPERA1 : robotType;
         now = nowSeconds;
         cursor = cursorSeconds;
         refresh();
@@ -156,8 +159,27 @@ final class PlotPanel extends JPanel {
         int[] channels = channels();
         canvas.show(new PlotCanvas.Plot(
                 s.extract(range[0], range[1], channels, StrictMath.max(200, canvas.getWidth() * 2)),
-                labels(channels), colours(), range[0], range[1], ((Quantity) quantity.getSelectedItem()).max,
-                ((Quantity) quantity.getSelectedItem()).unit, cursor));
+                labels(channels), colours(), range[0], range[1], top((Quantity) quantity.getSelectedItem()),
+                unit((Quantity) quantity.getSelectedItem()), cursor));
+    }
+
+    /** @return the quantity's fixed top on the selected robot's scale (proximity: its max_reading), or NaN */
+    private double top(Quantity q) {
+        return q == Quantity.PROXIMITY ? type.proximity().maxReading() : q.max;
+    }
+
+    /** @return the axis title in the selected robot's numbers (its proximity scale, speed unit, pulse) */
+    private String unit(Quantity q) {
+        return switch (q) {
+            case PROXIMITY -> "proximity, 0.." + type.proximity().maxReading() + " (higher = nearer)";
+            case SPEED -> "speed, units (1 = " + plain(type.drive().mmPerSecondPerUnit()) + " mm/s)";
+            case ENCODER -> "encoder, pulses (1 = " + plain(type.drive().mmPerPulse()) + " mm)";
+            default -> q.unit;
+        };
+    }
+
+    private static String plain(double v) {
+        return new java.math.BigDecimal(Double.toString(v)).stripTrailingZeros().toPlainString();
     }
 
     private double[] range(RobotSeries s) {
