@@ -20,6 +20,7 @@ public final class CurrentRobotState {
     private final Gripper gripper;
     private final VisionTurret vision;
     private final RobotPort port;
+    private volatile Parameters parameters;
 
     /** @param port the backend behind the view (backends construct this, students do not) */
     public CurrentRobotState(RobotPort port) {
@@ -89,9 +90,15 @@ public final class CurrentRobotState {
     }
 
     /** The backend behind this view, for {@link Controller}'s helpers. */
-    /** @return the numbers the run hands the controller (see {@link Controller#parameters()}) */
+    /** @return the numbers the run hands the controller (see {@link Controller#parameters()}), read once */
     Parameters parameters() {
-        return Parameters.of(port.parameters());
+        // A controller may ask every step; the run's numbers are fixed before it is made.
+        Parameters p = parameters;
+        if (p == null) {
+            p = Parameters.of(port.parameters());
+            parameters = p;
+        }
+        return p;
     }
 
     RobotPort port() {

@@ -82,17 +82,7 @@ public final class Controllers {
             return styleOf(type).instantiate(type, RobotPorts.of(state), messages);
         }
         try {
-            Constructor<?> classic = classicConstructor(type);
-            if (classic != null) {
-                return (Thread) classic.newInstance(state, messages);
-            }
-            Constructor<?> noArg = noArgConstructor(type);
-            ControllerBinding.bind(new ControllerBinding(state, messages));
-            try {
-                return (Thread) noArg.newInstance();
-            } finally {
-                ControllerBinding.bind(null);
-            }
+            return (Thread) construct(type, state, messages);
         } catch (InvocationTargetException e) {
             throw constructorThrew(type, e.getCause());
         } catch (ExceptionInInitializerError e) {
@@ -124,16 +114,7 @@ public final class Controllers {
     public static StepController instantiateStep(Class<?> type, CurrentRobotState state, MessagePasser messages) {
         check(type);
         try {
-            Constructor<?> classic = classicConstructor(type);
-            if (classic != null) {
-                return (StepController) classic.newInstance(state, messages);
-            }
-            ControllerBinding.bind(new ControllerBinding(state, messages));
-            try {
-                return (StepController) noArgConstructor(type).newInstance();
-            } finally {
-                ControllerBinding.bind(null);
-            }
+            return (StepController) construct(type, state, messages);
         } catch (InvocationTargetException e) {
             throw constructorThrew(type, e.getCause());
         } catch (ExceptionInInitializerError e) {
@@ -141,6 +122,24 @@ public final class Controllers {
         } catch (ReflectiveOperationException e) {
             throw new ControllerException("Controller " + type.getName() + " could not be created: " + e
                     + "; make the class and its constructor public", e);
+        }
+    }
+
+    /**
+     * The classic constructor {@code (CurrentRobotState, MessagePasser)} when the class has one, else the
+     * one with no parameters, with the state bound to this thread while it runs ({@link ControllerBinding}).
+     */
+    private static Object construct(Class<?> type, CurrentRobotState state, MessagePasser messages)
+            throws ReflectiveOperationException {
+        Constructor<?> classic = classicConstructor(type);
+        if (classic != null) {
+            return classic.newInstance(state, messages);
+        }
+        ControllerBinding.bind(new ControllerBinding(state, messages));
+        try {
+            return noArgConstructor(type).newInstance();
+        } finally {
+            ControllerBinding.bind(null);
         }
     }
 

@@ -27,6 +27,8 @@ final class SimulatedRobotPort implements RobotPort {
     private final SimRobot robot;
     private final PortClock clock;
     private final boolean onBoard;
+    /** The robot's largest reading ({@link #maxProximity()}), -1 until first asked. */
+    private int contactReading = -1;
 
     SimulatedRobotPort(SimRobot robot, PortClock clock) {
         this.robot = robot;
@@ -254,7 +256,13 @@ final class SimulatedRobotPort implements RobotPort {
 
     @Override
     public int maxProximity() {
-        return robot.type().proximity().contactReading();
+        // Worked out once: a controller may ask every step, and the type does not change.
+        int top = contactReading;
+        if (top < 0) {
+            top = robot.type().proximity().contactReading();
+            contactReading = top;
+        }
+        return top;
     }
 
     @Override
