@@ -55,6 +55,15 @@ class WsuCorpusEntryPointsTest {
         SETS.put("elliot-classes", "Modified-WSU-Khepera-Simulator/controllers");
     }
 
+    /**
+     * Class files a set's shipped classes need that the fork ships beside its simulator, not with
+     * them: the vehicles' base {@code VehicleController} (the fork's own class, in
+     * {@code classes/edu/wsu/KheperaSimulator}, where the fork's {@code run.sh} finds it). Only that
+     * file is put on the set's classpath, in a folder of its own, never the original's classes.
+     */
+    private static final Map<String, String> SHIPPED_BESIDE = Map.of("elliot-classes",
+            "Modified-WSU-Khepera-Simulator/classes/edu/wsu/KheperaSimulator/VehicleController.class");
+
     @Test
     void countTheEntryPointsThatRunHeadlessUntrusted() throws Exception {
         String p = System.getProperty(WsuCorpusTest.PROPERTY);
@@ -69,10 +78,19 @@ class WsuCorpusEntryPointsTest {
                 continue;
             }
             Path classes = src.endsWith("controllers") ? src : compile(src, Files.createDirectories(dir.resolve(set.getKey())));
-            List<String> entries = entryPoints(classes);
+            List<Path> classpath = new ArrayList<>(List.of(classes));
+            String beside = SHIPPED_BESIDE.get(set.getKey());
+            if (beside != null && Files.isRegularFile(corpus.resolve(beside))) {
+                Path base = dir.resolve(set.getKey() + "-beside");
+                Path to = base.resolve(beside.substring(beside.indexOf("/classes/") + "/classes/".length()));
+                Files.createDirectories(to.getParent());
+                Files.copy(corpus.resolve(beside), to);
+                classpath.add(base);
+            }
+            List<String> entries = entryPoints(classes, classpath);
             List<String> failures = new ArrayList<>();
             for (String e : entries) {
-                String why = run(classes, e);
+                String why = run(classpath, e);
                 if (why != null) {
                     failures.add(e + ": " + why);
                 }
@@ -88,9 +106,9 @@ class WsuCorpusEntryPointsTest {
     }
 
     /** @return null when it ran its 10 s without failing, else the first line of why not */
-    private static String run(Path classes, String controller) {
+    private static String run(List<Path> classpath, String controller) {
         try {
-            RunResult r = Simulation.builder().arena("lab").classpath(List.of(classes)).controller(controller).seed(1)
+            RunResult r = Simulation.builder().arena("lab").classpath(classpath).controller(controller).seed(1)
                     .seconds(10).console(l -> { }).run();
             return r.first().status().failed() ? firstLine(r.first().failure()) : null;
         } catch (ControllerException | LinkageError | IllegalStateException e) {
@@ -118,10 +136,14 @@ class WsuCorpusEntryPointsTest {
     }
 
     /** @return the concrete controller classes (top-level and static nested) under the folder, sorted */
-    private static List<String> entryPoints(Path classes) throws IOException {
+    private static List<String> entryPoints(Path classes, List<Path> classpath) throws IOException {
         List<String> names = new ArrayList<>();
-        try (Stream<Path> files = Files.walk(classes); URLClassLoader look = new URLClassLoader(
-                new URL[] {classes.toUri().toURL()}, WsuCorpusEntryPointsTest.class.getClassLoader())) {
+        URL[] urls = new URL[classpath.size()];
+        for (int i = 0; i < urls.length; i++) {
+            urls[i] = classpath.get(i).toUri().toURL();
+        }
+        try (Stream<Path> files = Files.walk(classes); URLClassLoader look = new URLClassLoader(urls,
+                WsuCorpusEntryPointsTest.class.getClassLoader())) {
             for (Path f : files.filter(x -> x.toString().endsWith(".class")).sorted().toList()) {
                 String name = classes.relativize(f).toString().replace('\\', '/').replaceFirst("\\.class$", "").replace('/', '.');
                 if (name.contains("$")) {

@@ -6,7 +6,8 @@ import org.objectweb.asm.Opcodes;
 import org.objectweb.asm.Type;
 
 /**
- * Where a call in controller code goes instead: the time calls to {@link SimClock}, and for
+ * Where a call in controller code goes instead: the time calls to {@link SimClock} (and the
+ * wall-clock reads of {@code java.util} to {@link CalendarHooks}), and for
  * contained code the escapes to {@link org.kheperasim.sim.host.Containment}, the thread calls to
  * {@link org.kheperasim.sim.host.ThreadHooks}, {@code wait}, {@code notify}, {@code notifyAll} and
  * {@code Thread.holdsLock} to {@link MonitorHooks} (each robot's own monitors), the resource reads to
@@ -36,6 +37,18 @@ final class CallTargets {
             "getInstance(Ljava/util/TimeZone;)Ljava/util/Calendar;",
             "getInstance(Ljava/util/Locale;)Ljava/util/Calendar;",
             "getInstance(Ljava/util/TimeZone;Ljava/util/Locale;)Ljava/util/Calendar;");
+
+    /**
+     * The constructors of {@code java.util} that read the wall clock, by owner + descriptor: the
+     * parameter type of the {@link CalendarHooks} method that sets the new object to the simulated
+     * clock, and of the factory a constructor reference goes to instead.
+     */
+    private static final java.util.Map<String, String> CLOCK_CONSTRUCTORS = java.util.Map.of(
+            "java/util/GregorianCalendar()V", "Ljava/util/Calendar;",
+            "java/util/GregorianCalendar(Ljava/util/TimeZone;)V", "Ljava/util/Calendar;",
+            "java/util/GregorianCalendar(Ljava/util/Locale;)V", "Ljava/util/Calendar;",
+            "java/util/GregorianCalendar(Ljava/util/TimeZone;Ljava/util/Locale;)V", "Ljava/util/Calendar;",
+            "java/util/Date()V", "Ljava/util/Date;");
 
     /** The replacement of the instance method {@code TimeUnit.sleep(long)}: the unit comes first. */
     private static final String TIME_UNIT_SLEEP_HOOK = "(L" + TIME_UNIT + ";J)V";
@@ -238,6 +251,37 @@ final class CallTargets {
             }
         }
         return null;
+    }
+
+    /** @return true when {@code owner} has a constructor that reads the wall clock (see {@link #afterConstructor}) */
+    static boolean readsTheClockWhenMade(String owner) {
+        return owner.equals("java/util/GregorianCalendar") || owner.equals("java/util/Date");
+    }
+
+    /**
+     * The hook to call on an object just made by a constructor that reads the wall clock
+     * ({@code new GregorianCalendar()}, {@code new Date()}, or a subclass's {@code super()} of one),
+     * which sets it to the simulated clock; null for any other constructor.
+     *
+     * @param owner the class whose constructor is called (the owner of the {@code invokespecial})
+     * @param descriptor the constructor's descriptor
+     */
+    Target afterConstructor(String owner, String descriptor) {
+        String type = CLOCK_CONSTRUCTORS.get(owner + descriptor);
+        return type == null ? null : new Target(CALENDAR_HOOKS, "simulatedNow", "(" + type + ")V");
+    }
+
+    /**
+     * Where a constructor reference ({@code GregorianCalendar::new}, {@code Date::new}) to a
+     * constructor that reads the wall clock goes instead: a {@link CalendarHooks} factory of the same
+     * parameters that returns the object set to the simulated clock; null for any other constructor.
+     */
+    Target constructorReference(String owner, String descriptor) {
+        if (!CLOCK_CONSTRUCTORS.containsKey(owner + descriptor)) {
+            return null;
+        }
+        String name = owner.equals("java/util/Date") ? "newDate" : "newGregorianCalendar";
+        return new Target(CALENDAR_HOOKS, name, descriptor.substring(0, descriptor.length() - 1) + "L" + owner + ";");
     }
 
     /**

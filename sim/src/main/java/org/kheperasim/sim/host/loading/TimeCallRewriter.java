@@ -29,7 +29,8 @@ import org.objectweb.asm.Type;
  *   <li>replaces {@code System.currentTimeMillis()} and {@code System.nanoTime()} by
  *       {@link SimClock#currentTimeMillis()} and {@link SimClock#nanoTime()}, and
  *       {@code Calendar.getInstance(...)} by {@link CalendarHooks}' method of the same name and
- *       descriptor (a calendar set to the simulated clock);</li>
+ *       descriptor (a calendar set to the simulated clock), and sets what {@code new GregorianCalendar()}
+ *       and {@code new Date()} make to the simulated clock too ({@link ClockConstructorRewriter});</li>
  *   <li>replaces the instance call {@code unit.sleep(long)} on a {@code TimeUnit} by the static
  *       {@link SimClock#sleep(java.util.concurrent.TimeUnit, long)}, which takes the same stack;</li>
  *   <li>does the same for method handles to those methods (method references such as
@@ -145,19 +146,31 @@ public final class TimeCallRewriter {
                 String[] exceptions) {
             if (!contained) {
                 MethodVisitor next = super.visitMethod(access, name, descriptor, signature, exceptions);
-                return next == null ? null : new MethodRewriter(next);
+                return next == null ? null : new MethodRewriter(clock(next, name));
             }
             // Contained code's monitors join the lockstep: a synchronized method gets an explicit block.
             int kept = MonitorRewriter.isRewrittenSynchronized(access, version)
                     ? access & ~Opcodes.ACC_SYNCHRONIZED : access;
             MethodVisitor next = super.visitMethod(kept, name, descriptor, signature, exceptions);
             return next == null ? null
-                    : new MethodRewriter(new MonitorRewriter(new OutputRewriter(next, () -> changed = true), access,
-                            className, version, () -> changed = true));
+                    : new MethodRewriter(clock(new MonitorRewriter(new OutputRewriter(next, () -> changed = true),
+                            access, className, version, () -> changed = true), name));
+        }
+
+        private MethodVisitor clock(MethodVisitor next, String method) {
+            return new ClockConstructorRewriter(next, targets, method.equals("<init>"), () -> changed = true);
         }
 
         /** A loadable constant with every method handle to a replaced method pointed at its hook. */
         private Object constant(Object value) {
+            if (value instanceof Handle handle && handle.getTag() == Opcodes.H_NEWINVOKESPECIAL) {
+                CallTargets.Target factory = targets.constructorReference(handle.getOwner(), handle.getDesc());
+                if (factory == null) {
+                    return handle;
+                }
+                changed = true;
+                return new Handle(Opcodes.H_INVOKESTATIC, factory.owner(), factory.name(), factory.descriptor(), false);
+            }
             if (value instanceof Handle handle) {
                 int opcode = switch (handle.getTag()) {
                     case Opcodes.H_INVOKESTATIC -> Opcodes.INVOKESTATIC;
