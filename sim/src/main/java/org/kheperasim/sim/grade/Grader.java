@@ -9,7 +9,7 @@ import java.nio.file.attribute.PosixFilePermissions;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
-import java.util.LinkedHashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -134,15 +134,8 @@ public final class Grader {
         try (Journal journal = Journal.open(o.out(), Journal.identity(plan, o.shard(), String.format(Locale.ROOT,
                 "seconds=%s; hang=%s; heap=%d", o.seconds(), o.hangSeconds(), o.heapMb())))) {
             List<GradePlan.Job> todo = jobs.stream().filter(j -> !done(journal, j, o.out())).toList();
-            Map<String, Submission> subs = new LinkedHashMap<>();
-            for (Path f : folders) {
-                String student = f.getFileName().toString();
-                if (todo.stream().anyMatch(j -> j.student().equals(student))) {
-                    subs.put(student, Submissions.prepare(f, work.resolve(student)));
-                }
-            }
             if (!todo.isEmpty()) {
-                makeRuns(o, todo, jobs.size() - todo.size(), jobs.size(), subs, arenas, work, journal, endNanos);
+                makeRuns(o, todo, jobs.size() - todo.size(), jobs.size(), folders, arenas, work, journal, endNanos);
             }
             List<RunRecord> records = new ArrayList<>();
             StringBuilder timings = new StringBuilder(TIMINGS_HEADER);
@@ -179,7 +172,7 @@ public final class Grader {
     }
 
     private static void makeRuns(Options o, List<GradePlan.Job> todo, int alreadyDone, int total,
-            Map<String, Submission> subs,
+            List<Path> folders,
             Map<String, Arena> arenas, Path work, Journal journal, long endNanos) {
         int processors = StrictMath.max(1, Runtime.getRuntime().availableProcessors() / o.jobs());
         ChildRun.Limits limits =
@@ -208,36 +201,41 @@ public final class Grader {
         }
         Progress progress = new Progress(o.progress(), total, o.terminal());
         progress.skip(alreadyDone);
-        WorkerSlots.Finisher finisher = (job, outcome) -> {
-            if (stopping.get()) {
+        Compiling[] prepared = new Compiling[1];
+        // A run that came back before a stop is journaled even when its judgement ends after it.
+        WorkerSlots.Finisher finisher = (job, outcome, cameBack) -> {
+            if (!cameBack) {
                 return;
             }
-            Made made = one(job, subs.get(job.student()), arenas.get(job.arena()), o, outcome);
-            if (stopping.get()) {
-                return;
-            }
+            Made made = one(job, prepared[0].get(job.student()), arenas.get(job.arena()), o, outcome);
             journal.add(job, new Journal.Entry(made.outcome().record(), made.outcome().wallSeconds(),
                     made.pageSeconds()));
             progress.finished(job, made.outcome().record());
         };
-        try {
+        Set<String> students = new HashSet<>();
+        todo.forEach(j -> students.add(j.student()));
+        // Prepared while the first runs go; a submission that cannot run needs no JVM: its records are written
+        // as soon as it is prepared (even past the deadline: they need no run).
+        try (Compiling subs = new Compiling(folders, students, work, stopping, sub -> {
+            if (!sub.runnable()) {
+                for (GradePlan.Job job : todo) {
+                    if (job.student().equals(sub.student())) {
+                        Made made = one(job, sub, arenas.get(job.arena()), o, null);
+                        journal.add(job, new Journal.Entry(made.outcome().record(), 0, 0));
+                        progress.finished(job, made.outcome().record());
+                    }
+                }
+            }
+        })) {
+            prepared[0] = subs;
             if (o.workerRuns() == 1) {
                 eachInItsOwnJvm(o, todo, subs, arenas, limits, work, sockets, running, finisher, stopping);
             } else {
-                // Submissions that cannot run need no JVM.
-                for (GradePlan.Job job : todo) {
-                    if (!subs.get(job.student()).runnable()) {
-                        finisher.finish(job, null);
-                    }
-                }
-                WorkerSlots.Summary made =
-                        WorkerSlots.makeAll(todo.stream().filter(j -> subs.get(j.student()).runnable()).toList(),
-                        subs, arenas, limits, o.jobs(), o.workerRuns(), work.resolve("runs"), sockets, running,
-                        finisher, stopping);
+                WorkerSlots.Summary made = WorkerSlots.makeAll(todo, subs, arenas, limits, o.jobs(), o.workerRuns(),
+                        work.resolve("runs"), sockets, running, finisher, stopping);
                 o.progress().println(made.line());
             }
-        } catch (IOException e) {
-            throw new java.io.UncheckedIOException("a run could not be made: " + e.getMessage(), e);
+            subs.awaitAll();
         } finally {
             allBack.set(true);
             if (deadlinePassed.get()) {
@@ -256,7 +254,7 @@ public final class Grader {
     }
 
     /** Each run in a child JVM of its own ({@code --worker-runs 1}): {@code jobs} at a time. */
-    private static void eachInItsOwnJvm(Options o, List<GradePlan.Job> todo, Map<String, Submission> subs,
+    private static void eachInItsOwnJvm(Options o, List<GradePlan.Job> todo, Compiling subs,
             Map<String, Arena> arenas, ChildRun.Limits limits, Path work, Path sockets, Set<Process> running,
             WorkerSlots.Finisher finisher, AtomicBoolean stopping) {
         BlockingQueue<Integer> slots = new ArrayBlockingQueue<>(o.jobs());
@@ -273,15 +271,14 @@ public final class Grader {
                         return null;
                     }
                     Submission sub = subs.get(job.student());
-                    ChildRun.Outcome made = null;
-                    if (sub.runnable()) {
+                    if (sub != null && sub.runnable()) { // else its records were written as it was prepared
                         // A result that differed from its replay is made again once, in a JVM of its own too.
                         Rerun.Making making =
                                 () -> ChildRun.run(job, sub, arenas.get(job.arena()), limits, work.resolve("runs"),
                                 sockets, slot, running);
-                        made = Rerun.guard(making.make(), making);
+                        ChildRun.Outcome made = Rerun.guard(making.make(), making);
+                        finisher.finish(job, made, !stopping.get());
                     }
-                    finisher.finish(job, made);
                 } finally {
                     slots.add(slot);
                 }

@@ -119,6 +119,17 @@ final class WorkerProcess implements AutoCloseable {
     }
 
     /**
+     * A run the worker made, not judged yet.
+     *
+     * @param job         the run
+     * @param child       what it left
+     * @param trace       where the replay's trace goes
+     * @param wallSeconds real time it took, s
+     */
+    record Received(GradePlan.Job job, Verdict.Child child, Path trace, double wallSeconds) {
+    }
+
+    /**
      * Make one run and judge it, as {@link ChildRun#run} does for a run in a JVM of its own.
      *
      * @param job   the run
@@ -131,6 +142,20 @@ final class WorkerProcess implements AutoCloseable {
      */
     ChildRun.Outcome run(GradePlan.Job job, Submission sub, Arena arena, ChildRun.Limits lim,
             Path runs) throws IOException {
+        return judge(make(job, sub, lim, runs), sub, arena, lim);
+    }
+
+    /**
+     * Make one run, to be judged ({@link #judge}) while the worker makes the next.
+     *
+     * @param job   the run
+     * @param sub   the submission
+     * @param lim   the limits
+     * @param runs  where the run's trace and log go
+     * @return what came back
+     * @throws IOException if its socket cannot be made, or the grading was interrupted
+     */
+    Received make(GradePlan.Job job, Submission sub, ChildRun.Limits lim, Path runs) throws IOException {
         Path trace = runs.resolve(ReportFiles.runId(job) + ".trace");
         Path logFile = runs.resolve(ReportFiles.runId(job) + ".log.gz");
         Files.deleteIfExists(trace);
@@ -141,7 +166,7 @@ final class WorkerProcess implements AutoCloseable {
         boolean cut;
         try (LogChannel.Receiver receiver = new LogChannel.Receiver(socket, logFile, Verdict.MAX_LOG_BYTES)) {
             Path seen = sandbox ? Box.CHANNELS.resolve(socket.getFileName()) : socket.toAbsolutePath();
-            m = make(job.index(), ChildRun.runArgs(job, sub, lim, seen), lim.wallSeconds());
+            m = ask(job.index(), ChildRun.runArgs(job, sub, lim, seen), lim.wallSeconds());
             receiver.awaitEnd(10_000);
             cut = receiver.overLimit();
         }
@@ -149,13 +174,27 @@ final class WorkerProcess implements AutoCloseable {
         String madeIn = sandbox ? RunRecord.SANDBOX : RunRecord.NO_SANDBOX;
         Verdict.Child child = new Verdict.Child(m.killed(), m.exit(), ChildRun.strip(m.err(), sub),
                 Files.isRegularFile(logFile) ? logFile : null, cut, madeIn);
-        Verdict.Judged judged = Verdict.judge(job, sub, arena, lim, child, trace);
-        return new ChildRun.Outcome(judged.record(), wall, Files.isRegularFile(trace) ? trace : null, child.log(),
+        return new Received(job, child, trace, wall);
+    }
+
+    /**
+     * Judge a run the worker made ({@link Verdict}), in the grader, with no worker involved.
+     *
+     * @param got   the run made
+     * @param sub   the submission
+     * @param arena the arena
+     * @param lim   the limits
+     * @return what came back
+     */
+    static ChildRun.Outcome judge(Received got, Submission sub, Arena arena, ChildRun.Limits lim) {
+        Verdict.Judged judged = Verdict.judge(got.job(), sub, arena, lim, got.child(), got.trace());
+        return new ChildRun.Outcome(judged.record(), got.wallSeconds(),
+                Files.isRegularFile(got.trace()) ? got.trace() : null, got.child().log(),
                 judged.page(), judged.tape(), judged.diverged());
     }
 
     /** Ask for one run and wait for its end, or its wall-clock limit (then kill the worker). */
-    private Made make(int index, List<String> args, double wallSeconds) throws IOException {
+    private Made ask(int index, List<String> args, double wallSeconds) throws IOException {
         byte[] t = new byte[16];
         TOKENS.nextBytes(t);
         String token = HexFormat.of().formatHex(t);

@@ -47,6 +47,33 @@ class WarmStartTest {
     }
 
     @Test
+    void onlyASmallGradingGetsTheQuickCompiler(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        for (int i = 0; i < 30; i++) {
+            java.nio.file.Files.createDirectories(dir.resolve("s" + i));
+        }
+        java.nio.file.Files.createDirectories(dir.resolve(".hidden"));
+        String subs = dir.toString();
+        assertTrue(WarmStart.smallGrading(new String[] {"grade", "--submissions", subs, "--arenas", "maze", "lab",
+            "--seeds", "1", "--jobs", "2"}), "60 runs");
+        assertTrue(WarmStart.smallGrading(new String[] {"grade", "--submissions=" + subs, "--arenas=maze", "--seeds=4"}));
+        assertFalse(WarmStart.smallGrading(new String[] {"grade", "--submissions", subs, "--arenas", "maze", "lab"}),
+                "300 runs, 5 seeds unless given");
+        assertFalse(WarmStart.smallGrading(new String[] {"grade", "--submissions", subs, "--seeds", "1"}), "no arena");
+        assertFalse(WarmStart.smallGrading(new String[] {"grade", "--submissions", dir.resolve("none").toString(),
+            "--arenas", "lab", "--seeds", "1"}));
+        assertFalse(WarmStart.smallGrading(new String[] {"run", "--submissions", subs, "--arenas", "lab"}));
+        String[] small = {"grade", "--submissions", subs, "--arenas", "lab", "--seeds", "1"};
+        List<String> cmd = WarmStart.command(jvm(concat("-jar", "k.jar", small)), ARCHIVE, small);
+        assertTrue(cmd.contains(WarmStart.QUICK_COMPILER), cmd.toString());
+    }
+
+    private static String[] concat(String a, String b, String[] rest) {
+        List<String> all = new ArrayList<>(List.of(a, b));
+        all.addAll(List.of(rest));
+        return all.toArray(new String[0]);
+    }
+
+    @Test
     void noWarmJvmWhenTheCommandLineWasNotJavaJarOrChoseAnArchive() {
         for (String[] jvm : List.of(new String[] {"-Xshare:off", "-jar", "k.jar"},
                 new String[] {"-XX:SharedArchiveFile=/x.jsa", "-jar", "k.jar"}, new String[] {"@opts", "-jar", "k.jar"},
