@@ -16,7 +16,7 @@ import java.util.Locale;
  *
  * @param robot the robot's name
  * @param date the day it was measured, ISO (2026-12-02)
- * @param base the robot type it overlays ({@code khepera1})
+ * @param base the robot type it overlays ({@code khepera1}, {@code khepera2}) and its nominal numbers
  * @param drive the wheels' measured numbers
  * @param wall the wall series
  * @param objects how much a cap and another robot reflect, the wall being 1
@@ -24,7 +24,7 @@ import java.util.Locale;
  * @param lamp the lamp series' mean ambient readings, {@code [distance][sensor]}
  * @param raw every raw reading, as CSV lines
  */
-public record Calibration(String robot, String date, String base, Drive drive, Wall wall, Objects objects,
+public record Calibration(String robot, String date, RobotBase base, Drive drive, Wall wall, Objects objects,
         double[] lampMm,
         double[][] lamp,
         List<String> raw) {
@@ -70,8 +70,17 @@ public record Calibration(String robot, String date, String base, Drive drive, W
     /**
      * @param capReflectance how much a cap reflects, the wall being 1 (NaN: not measured)
      * @param robotReflectance how much another robot's body reflects, the wall being 1 (NaN: not measured)
+     * @param capMm the cap series' gaps, mm
+     * @param cap its mean readings, {@code [gap][sensor]}
+     * @param robotMm the robot series' gaps, mm
+     * @param robot its mean readings
      */
-    public record Objects(double capReflectance, double robotReflectance) {
+    public record Objects(double capReflectance, double robotReflectance, double[] capMm, double[][] cap,
+            double[] robotMm, double[][] robot) {
+        /** Reflectances only, no series. */
+        public Objects(double capReflectance, double robotReflectance) {
+            this(capReflectance, robotReflectance, new double[0], new double[0][], new double[0], new double[0][]);
+        }
     }
 
     /** @param dir where to write @return the calibration file written (the other two beside it) */
@@ -82,7 +91,11 @@ public record Calibration(String robot, String date, String base, Drive drive, W
         Files.writeString(sample, sampleText(), StandardCharsets.UTF_8);
         Path csv = dir.resolve(stem + "-samples.csv");
         List<String> lines = new ArrayList<>();
-        lines.add("series,block,gap_mm,object_right_deg,repeat,s0,s1,s2,s3,s4,s5,s6,s7");
+        StringBuilder head = new StringBuilder("series,block,gap_mm,object_right_deg,repeat");
+        for (int i = 0; i < base.sensors(); i++) {
+            head.append(",s").append(i);
+        }
+        lines.add(head.toString());
         lines.addAll(raw);
         Files.write(csv, lines, StandardCharsets.UTF_8);
         Path cal = dir.resolve(stem + ".calibration");
@@ -90,7 +103,7 @@ public record Calibration(String robot, String date, String base, Drive drive, W
         sb.append("# measured over robot-link by 'khepera-link calibrate'; docs/calibration.md\n");
         sb.append("robot ").append(robot).append('\n');
         sb.append("date ").append(date).append('\n');
-        sb.append("base ").append(base).append('\n');
+        sb.append("base ").append(base.name()).append('\n');
         sb.append("wall ").append(sample.getFileName()).append('\n');
         sb.append("samples ").append(csv.getFileName()).append('\n');
         sb.append(String.format(Locale.ROOT,
@@ -103,15 +116,22 @@ public record Calibration(String robot, String date, String base, Drive drive, W
         if (!Double.isNaN(objects.robotReflectance())) {
             sb.append(String.format(Locale.ROOT, "reflect.robot %.4f\n", objects.robotReflectance()));
         }
-        for (int d = 0; d < lampMm.length; d++) {
-            sb.append(String.format(Locale.ROOT, "lamp %.1f", lampMm[d]));
-            for (double v : lamp[d]) {
+        series(sb, "cap.series", objects.capMm(), objects.cap());
+        series(sb, "robot.series", objects.robotMm(), objects.robot());
+        series(sb, "lamp", lampMm, lamp);
+        Files.writeString(cal, sb.toString(), StandardCharsets.UTF_8);
+        return cal;
+    }
+
+    /** One line per distance: the key, the distance (mm), each sensor's mean reading. */
+    private static void series(StringBuilder sb, String key, double[] mm, double[][] means) {
+        for (int d = 0; d < mm.length; d++) {
+            sb.append(String.format(Locale.ROOT, "%s %.1f", key, mm[d]));
+            for (double v : means[d]) {
                 sb.append(String.format(Locale.ROOT, " %.1f", v));
             }
             sb.append('\n');
         }
-        Files.writeString(cal, sb.toString(), StandardCharsets.UTF_8);
-        return cal;
     }
 
     private String sampleText() {
@@ -124,7 +144,7 @@ public record Calibration(String robot, String date, String base, Drive drive, W
             sb.append("TURN ").append(t).append('\n');
             for (int k = 0; k < wall.headings(); k++) {
                 for (int s = 0; s < sensors; s++) {
-                    double a = StrictMath.max(0, StrictMath.min(1, wall.means()[t][k][s] / 1023));
+                    double a = StrictMath.max(0, StrictMath.min(1, wall.means()[t][k][s] / base.fullScale()));
                     sb.append(String.format(Locale.ROOT, "%.6f ", a));
                 }
                 sb.append('\n');
@@ -146,13 +166,19 @@ public record Calibration(String robot, String date, String base, Drive drive, W
                     + "': give a file written by 'khepera-link calibrate'");
         }
         String wallName = null;
-        double mmPerPulse = 0.08;
+        double mmPerPulse = Double.NaN;
+        RobotBase base = RobotBase.KHEPERA1;
         for (String l : lines) {
-            if (l.startsWith("wall ")) {
+            if (l.startsWith("base ")) {
+                base = RobotBase.of(org.kheperasim.link.protocol.dialect.Dialect.named(l.substring(5).trim()));
+            } else if (l.startsWith("wall ")) {
                 wallName = l.substring(5).trim();
             } else if (l.startsWith("drive.mmPerPulse ")) {
                 mmPerPulse = Double.parseDouble(l.substring(17).trim());
             }
+        }
+        if (Double.isNaN(mmPerPulse)) {
+            mmPerPulse = base.mmPerPulse();
         }
         if (wallName == null) {
             throw new IllegalArgumentException("calibration " + calibration
@@ -172,7 +198,7 @@ public record Calibration(String robot, String date, String base, Drive drive, W
             gaps[t] = init + t * step;
             String[] row = s.get(1 + t * (na + 1) + 1).trim().split("\\s+");
             for (int i = 0; i < ns; i++) {
-                v[t][i] = Double.parseDouble(row[i]) * 1023;
+                v[t][i] = Double.parseDouble(row[i]) * base.fullScale();
             }
         }
         return new Ahead(gaps, v, mmPerPulse);

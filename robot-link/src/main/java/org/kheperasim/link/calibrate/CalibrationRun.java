@@ -13,12 +13,10 @@ import org.kheperasim.link.session.SessionException;
  * (facing it, backing away in encoder-measured steps, turning on the spot through every heading at
  * each step, ~20 readings per sensor per heading at the robot's 20 ms scan), then the lamp at a few
  * distances, a cap and another robot straight ahead at a few gaps (how much less than the wall they
- * reflect). Khepera dialects only: it moves by position commands (C).
+ * reflect). For the robot's nominal numbers ({@link RobotBase}: Khepera I and II; it moves by position
+ * commands, C, which the e-puck lacks).
  */
 public final class CalibrationRun {
-    /** The nominal Khepera numbers the procedure starts from. */
-    private static final double NOMINAL_MM_PER_PULSE = 0.08;
-    private static final double NOMINAL_WHEEL_BASE_MM = 53;
 
     /**
      * The procedure's sizes.
@@ -42,10 +40,23 @@ public final class CalibrationRun {
     private final PrintWriter out;
     private final Plan plan;
     private final RobotMoves moves;
+    private final RobotBase base;
     private final List<String> raw = new ArrayList<>();
 
     /** @param session an open session @param answers the person @param out the console @param plan its sizes */
     public CalibrationRun(Session session, Answers answers, PrintWriter out, Plan plan) {
+        this(session, answers, out, plan, RobotBase.of(session.dialect()));
+    }
+
+    /**
+     * @param session an open session
+     * @param answers the person
+     * @param out the console
+     * @param plan its sizes
+     * @param base the robot's nominal numbers (its type's)
+     */
+    public CalibrationRun(Session session, Answers answers, PrintWriter out, Plan plan, RobotBase base) {
+        this.base = base;
         this.session = session;
         this.answers = answers;
         this.out = out;
@@ -61,8 +72,10 @@ public final class CalibrationRun {
     public Calibration run(String robot, String date) throws SessionException {
         Calibration.Drive drive = wheels();
         Calibration.Wall wall = wall(drive);
-        double cap = reflectance("cap", "a bottle cap (the arena's caps)", wall);
-        double other = reflectance("robot", "another robot of the lab (switched off)", wall);
+        List<double[]> capSeries = new ArrayList<>();
+        double cap = reflectance("cap", "a bottle cap (the arena's caps)", wall, capSeries);
+        List<double[]> robotSeries = new ArrayList<>();
+        double other = reflectance("robot", "another robot of the lab (switched off)", wall, robotSeries);
         double[] lampMm = lampDistances();
         double[][] lamp = new double[lampMm.length][];
         for (int d = 0; d < lampMm.length; d++) {
@@ -75,7 +88,8 @@ public final class CalibrationRun {
         }
         session.exchange(session.dialect().setSpeeds(0, 0));
         say("Done: the robot is stopped.");
-        return new Calibration(robot, date, "khepera1", drive, wall, new Calibration.Objects(cap, other), lampMm, lamp,
+        return new Calibration(robot, date, base, drive, wall, new Calibration.Objects(cap, other,
+                distances(capSeries), means(capSeries), distances(robotSeries), means(robotSeries)), lampMm, lamp,
                 List.copyOf(raw));
     }
 
@@ -84,7 +98,7 @@ public final class CalibrationRun {
         answers.pause("run.start", "Mark the floor under the middle of the wheel axle and the robot's heading;");
         moves.moveBy(plan.runPulses(), plan.runPulses());
         double runMm = answers.number("run.mm", "Measure by ruler how far the axle's mark moved, mm",
-                plan.runPulses() * NOMINAL_MM_PER_PULSE);
+                plan.runPulses() * base.mmPerPulse());
         double sideMm = answers.number("run.sideMm", "Measure how far the axle ended to the LEFT of the straight line"
                 + " (negative: to the right), mm", 0);
         double mmPerPulse = runMm / plan.runPulses();
@@ -92,7 +106,7 @@ public final class CalibrationRun {
         moves.moveBy(-plan.spinPulses(), plan.spinPulses());
         double spinDeg = answers.number("spin.deg", "Measure the angle the robot turned to the left, degrees (a full"
                 + " turn is 360)", StrictMath.toDegrees(
-                        2 * plan.spinPulses() * NOMINAL_MM_PER_PULSE / NOMINAL_WHEEL_BASE_MM));
+                        2 * plan.spinPulses() * base.mmPerPulse() / base.wheelBaseMm()));
         double wheelBase = 2 * plan.spinPulses() * mmPerPulse / StrictMath.toRadians(spinDeg);
         // Curving by sideMm over runMm turns the heading by 2 side / run; the wheels differ by that times the base.
         double turn = 2 * sideMm / runMm;
@@ -143,7 +157,8 @@ public final class CalibrationRun {
      * @return how much it reflects, the wall being 1 (the median of the ratios where the wall reads
      *     well above its floor); NaN when the person skips it
      */
-    private double reflectance(String kind, String what, Calibration.Wall wall) throws SessionException {
+    private double reflectance(String kind, String what, Calibration.Wall wall, List<double[]> series)
+            throws SessionException {
         double[] gaps = distances(kind + ".distances", "The " + kind + " series: put " + what + " straight ahead;"
                 + " its gaps from the robot's front, mm, comma-separated (none: skip)", "5,10,15,20");
         List<Double> ratios = new ArrayList<>();
@@ -154,6 +169,10 @@ public final class CalibrationRun {
             int[][] r = moves.readings(false, plan.readings());
             record(kind, d, gaps[d], 0, r);
             double[] m = RobotMoves.mean(r);
+            double[] line = new double[m.length + 1];
+            line[0] = gaps[d];
+            System.arraycopy(m, 0, line, 1, m.length);
+            series.add(line);
             for (int s = 2; s <= 3; s++) {
                 double floor = wall.floor(s);
                 double w = wall.aheadAt(gaps[d], s) - floor;
@@ -172,6 +191,16 @@ public final class CalibrationRun {
         double median = ratios.get(ratios.size() / 2);
         say(String.format(Locale.ROOT, "%s: reflects %.2f of the wall", kind, median));
         return median;
+    }
+
+    /** @return the series' distances, mm */
+    private static double[] distances(List<double[]> series) {
+        return series.stream().mapToDouble(l -> l[0]).toArray();
+    }
+
+    /** @return the series' mean readings, {@code [distance][sensor]} */
+    private static double[][] means(List<double[]> series) {
+        return series.stream().map(l -> java.util.Arrays.copyOfRange(l, 1, l.length)).toArray(double[][]::new);
     }
 
     private double[] lampDistances() {

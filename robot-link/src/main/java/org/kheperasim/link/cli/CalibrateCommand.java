@@ -13,7 +13,7 @@ import java.util.concurrent.Callable;
 import org.kheperasim.link.calibrate.Answers;
 import org.kheperasim.link.calibrate.CalibrationRun;
 import org.kheperasim.link.calibrate.DriftCheck;
-import org.kheperasim.link.protocol.dialect.EpuckDialect;
+import org.kheperasim.link.calibrate.RobotBase;
 import org.kheperasim.link.session.Session;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -85,10 +85,7 @@ final class CalibrateCommand implements Callable<Integer> {
         Answers answers = new Answers(o, in, given, k -> { });
         try (Session session = connection.open(o)) {
             session.open();
-            if (session.dialect() == EpuckDialect.EPUCK) {
-                throw new IllegalArgumentException("--dialect epuck: calibrate moves by Khepera position commands;"
-                        + " calibrate a Khepera (khepera1 or khepera2)");
-            }
+            RobotBase base = RobotBase.of(session.dialect());
             if (check != null) {
                 return DriftCheck.drifted(session, answers, o, check, readings, scanMillis,
                         thresholdPercent / 100) ? 1 : 0;
@@ -96,7 +93,7 @@ final class CalibrateCommand implements Callable<Integer> {
             CalibrationRun.Plan p = CalibrationRun.Plan.standard();
             CalibrationRun run = new CalibrationRun(session, answers, o,
                     new CalibrationRun.Plan(readings, scanMillis, p.blocks(), p.headings(), p.runPulses(),
-                            p.spinPulses()));
+                            base.turnPulses()), base);
             Path file = run.run(robot, day).write(out);
             o.println("wrote " + file + " (and its -wall.sample and -samples.csv beside it)");
             o.flush();

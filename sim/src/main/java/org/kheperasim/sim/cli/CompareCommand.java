@@ -93,7 +93,7 @@ final class CompareCommand implements Callable<Integer> {
         Pose from = start != null ? new Pose(start[0], start[1], start[2]) : a.robots().get(0);
         org.kheperasim.sim.replay.Replay both = org.kheperasim.sim.replay.ReplayFiles.sideBySide(
                 Files.readString(recording), sim.text("the simulation of " + recording.getFileName()),
-                recording.getFileName().toString(), a, from);
+                recording.getFileName().toString(), a, from, mmPerPulse, used.drive().wheelBaseMm());
         org.kheperasim.sim.web.RunPage.write(both, org.kheperasim.sim.web.RunOutcome.none(),
                 recording.getFileName() + " beside its simulation", dir.resolve(stem + "-compare.html"));
         spec.commandLine().getOut().print(d.text());

@@ -3,6 +3,7 @@ package org.kheperasim.sim.replay;
 import java.util.List;
 import org.kheperasim.api.GripperState;
 import org.kheperasim.sim.engine.robot.GripperTurret;
+import org.kheperasim.sim.engine.robot.RobotType;
 import org.kheperasim.sim.engine.robot.RobotTypes;
 import org.kheperasim.sim.engine.view.Contact;
 import org.kheperasim.sim.trace.TraceFormatException;
@@ -10,14 +11,14 @@ import org.kheperasim.sim.trace.TraceFormatException;
 /**
  * Reads a robot-link recording of a real robot ({@code khepera-link run --record FILE}: one line
  * per poll cycle with the time, 8 proximity, 8 light values, both encoders and the speeds sent).
- * The real robot has no pose sensor, so the pose is dead-reckoned from the encoders (0.08 mm per
- * pulse, wheel base 53 mm, as the simulator's robot), starting at {@code start}.
+ * The real robot has no pose sensor, so the pose is dead-reckoned from the encoders with the robot's
+ * own drive numbers (its type's or its calibration's mm per pulse and wheel base; a recording alone is
+ * read as a Khepera I's), starting at {@code start}.
  */
 final class LinkRecordingReader {
     /** The recording's first line starts with this. */
     static final String MAGIC = "# khepera-link recording";
     private static final int COLUMNS = 21;
-    /** Wheel travel per pulse, mm: the default of the setting {@code encoder.mmPerPulse}. */
 
     private LinkRecordingReader() {
     }
@@ -33,6 +34,18 @@ final class LinkRecordingReader {
      * @throws TraceFormatException naming {@code source:line}
      */
     static RobotSeries read(String text, String source, double x, double y, double headingDeg, List<String> notes) {
+        RobotType.Drive d = RobotTypes.KHEPERA1.drive();
+        return read(text, source, x, y, headingDeg, d.mmPerPulse(), d.wheelBaseMm(), notes);
+    }
+
+    /**
+     * As {@link #read(String, String, double, double, double, List)}, dead-reckoned with these wheels.
+     *
+     * @param mmPerPulse the robot's wheel travel per encoder pulse, mm
+     * @param wheelBaseMm its wheel base, mm
+     */
+    static RobotSeries read(String text, String source, double x, double y, double headingDeg, double mmPerPulse,
+            double wheelBaseMm, List<String> notes) {
         String[] lines = text.split("\n", -1);
         int end = lines.length - 1;
         if (!text.endsWith("\n")) {
@@ -68,9 +81,9 @@ final class LinkRecordingReader {
                 ch[RobotSeries.SPEED] = Integer.parseInt(f[19]);
                 ch[RobotSeries.SPEED + 1] = Integer.parseInt(f[20]);
                 if (!first) {
-                    double dl = (posL - prevL) * RobotTypes.KHEPERA1.drive().mmPerPulse();
-                    double dr = (posR - prevR) * RobotTypes.KHEPERA1.drive().mmPerPulse();
-                    double turn = (dr - dl) / RobotTypes.KHEPERA1.drive().wheelBaseMm();
+                    double dl = (posL - prevL) * mmPerPulse;
+                    double dr = (posR - prevR) * mmPerPulse;
+                    double turn = (dr - dl) / wheelBaseMm;
                     double mid = heading + turn / 2;
                     x += (dl + dr) / 2 * StrictMath.cos(mid);
                     y += (dl + dr) / 2 * StrictMath.sin(mid);

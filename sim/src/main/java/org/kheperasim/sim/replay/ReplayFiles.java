@@ -64,15 +64,18 @@ public final class ReplayFiles {
      * @param source what the page names as made from
      * @param arena the arena the run took place in
      * @param start where both started
+     * @param mmPerPulse the robot's wheel travel per encoder pulse, mm (its type's or its calibration's)
+     * @param wheelBaseMm its wheel base, mm
      * @return the two runs, to play
      * @throws org.kheperasim.sim.files.InputFileException naming the recording and line at fault
      */
     public static Replay sideBySide(String real, String simulated, String source, Arena arena,
-            org.kheperasim.sim.arena.Pose start) {
+            org.kheperasim.sim.arena.Pose start, double mmPerPulse, double wheelBaseMm) {
         List<String> notes = new ArrayList<>();
-        RobotSeries r = LinkRecordingReader.read(real, source, start.x(), start.y(), start.headingDeg(), notes);
+        RobotSeries r = LinkRecordingReader.read(real, source, start.x(), start.y(), start.headingDeg(), mmPerPulse,
+                wheelBaseMm, notes);
         RobotSeries s = LinkRecordingReader.read(simulated, source + " (simulated)", start.x(), start.y(),
-                start.headingDeg(), notes);
+                start.headingDeg(), mmPerPulse, wheelBaseMm, notes);
         notes.add("robot 1 is the real robot, robot 2 its simulation; both paths are worked out from their encoders"
                 + " from the same start, so the real one drifts as odometry does");
         return new Replay(Replay.Kind.LINK_RECORDING, source, arena, List.of(), List.of(r, s), null, notes);

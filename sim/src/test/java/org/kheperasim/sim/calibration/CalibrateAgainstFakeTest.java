@@ -24,6 +24,7 @@ import org.kheperasim.sim.arena.Pose;
 import org.kheperasim.sim.engine.Engine;
 import org.kheperasim.sim.engine.SimRobot;
 import org.kheperasim.sim.engine.model.Settings;
+import org.kheperasim.sim.engine.robot.MeasuredTables;
 import org.kheperasim.sim.engine.robot.RobotType;
 import org.kheperasim.sim.engine.robot.RobotTypes;
 import org.kheperasim.sim.engine.space.World;
@@ -74,6 +75,20 @@ class CalibrateAgainstFakeTest {
         // A cap and another robot reflect what the fake's do, the wall being 1.
         assertEquals(scene.capReflectance(), c.measured().capReflectance(), 0.05, "cap reflectance");
         assertEquals(scene.robotReflectance(), c.measured().robotReflectance(), 0.05, "robot reflectance");
+        // Each sensor measured on its own: its own table, its noise from the repeats (the fake's is 3 counts).
+        MeasuredTables tables = c.measured().tables();
+        assertEquals(8, tables.sensors().size(), "a wall table a sensor");
+        assertEquals(1, tables.cap().size(), "the cap series' table");
+        assertEquals(1, tables.robot().size(), "the robot series' table");
+        assertEquals(3, c.proximity().noiseAbs(), 0.5, "the noise measured in the repeats");
+        // The lamp series is the light sensors' response: a lamp where the series put none reads as on the fake.
+        for (double lampMm : new double[] {75, 150, 300}) {
+            int[] light = lit(c, lampMm);
+            for (int i = 2; i <= 3; i++) {
+                double fake = 480 - 460 / (1 + StrictMath.pow(lampMm / 60, 2));
+                assertEquals(fake, light[i], 0.05 * 460, "sensor " + i + ", the lamp " + lampMm + " mm ahead");
+            }
+        }
         // Unsampled gaps: halfway between the calibration's 5, 8, 11, ... mm, at headings between its 15 degrees too.
         List<Double> errors = new ArrayList<>();
         List<Double> lit = new ArrayList<>();
@@ -150,6 +165,10 @@ class CalibrateAgainstFakeTest {
                     // The robot 5 mm from the wall, straight on; a cap, then a robot, at 5, 10, 15, 20 mm.
                     if (l.endsWith("(wall.placed): ")) {
                         scene.place(5, 0);
+                    } else if (l.matches(".*\\(lamp\\.[0-9]+\\): $")) {
+                        // The lamp at 50, 100, 200, 400 mm ahead of the robot's front.
+                        int d = Integer.parseInt(l.substring(l.lastIndexOf('.') + 1, l.lastIndexOf(')')));
+                        scene.setLampMm(50 * (1 << d));
                     } else if (l.matches(".*\\((cap|robot)\\.placed\\.[0-9]+\\): $")) {
                         String key = l.substring(l.lastIndexOf('(') + 1, l.lastIndexOf(')'));
                         int d = Integer.parseInt(key.substring(key.lastIndexOf('.') + 1));
@@ -240,6 +259,22 @@ class CalibrateAgainstFakeTest {
             k.setScene(scene);
             return k.start();
         });
+    }
+
+    /** @return the ambient readings with a lamp {@code lampMm} ahead of the body */
+    private static int[] lit(RobotType c, double lampMm) {
+        World world = new World(ArenaFormat.parse(String.format(Locale.ROOT, "khepera-arena 1\nname lamp\n"
+                + "size 1219.2 1219.2\nrobot 300 600 0\nlight %s 600 range 1000\n", 300 + 27.5 + lampMm), "lamp.arena"));
+        Engine engine = new Engine(world, 7);
+        SimRobot robot = engine.addRobot("r", new Pose(300, 600, 0), QUIET, c);
+        for (int t = 0; t < 100; t++) {
+            engine.step();
+        }
+        int[] out = new int[8];
+        for (int i = 0; i < 8; i++) {
+            out[i] = robot.controls().visibleLight(i);
+        }
+        return out;
     }
 
     private static int[] simulate(RobotType c, double gap, double right) {

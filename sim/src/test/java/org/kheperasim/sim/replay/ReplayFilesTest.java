@@ -151,6 +151,28 @@ class ReplayFilesTest {
         assertTrue(e.getMessage().startsWith(rec + ":16: "), e.getMessage());
     }
 
+    /** compare's page dead-reckons both runs with the robot's own wheels: an e-puck's 0.1288 mm steps, not 0.08 mm. */
+    @Test
+    void compareSideBySideUsesTheRobotsWheels() {
+        StringBuilder b = new StringBuilder("# khepera-link recording v2, started 2026-11-23T08:00:00Z\n");
+        for (int k = 0; k <= 10; k++) {
+            b.append(line(k * 0.1, k * 100, k * 100, 200));
+        }
+        // Then a quarter turn on the spot on the e-puck's 53 mm wheel base.
+        int turn = (int) StrictMath.round(StrictMath.PI / 2 * 26.5 / 0.1288);
+        b.append(line(1.5, 1000 - turn, 1000 + turn, 0));
+        org.kheperasim.sim.engine.robot.RobotType.Drive d =
+                org.kheperasim.sim.engine.robot.RobotTypes.named("epuck").drive();
+        org.kheperasim.sim.arena.Arena arena = org.kheperasim.sim.arena.ArenaFormat.resolve("maze");
+        Replay r = ReplayFiles.sideBySide(b.toString(), b.toString(), "epuck.rec", arena,
+                new org.kheperasim.sim.arena.Pose(300, 300, 0), d.mmPerPulse(), d.wheelBaseMm());
+        for (int robot = 0; robot < 2; robot++) {
+            RobotView straight = r.at(1.0).robots().get(robot);
+            assertEquals(300 + 1000 * 0.1288, straight.x(), 1e-3, "1000 steps of 0.1288 mm ahead");
+            assertEquals(90, r.at(2).robots().get(robot).headingDeg(), 0.3, "a quarter turn on 53 mm");
+        }
+    }
+
     private static String line(double t, int l, int r, int speed) {
         return String.format(java.util.Locale.ROOT, "%.4f 1 2 3 4 5 6 7 8 500 500 500 500 500 500 500 500 %d %d %d %d%n",
                 t, l, r, speed, speed);

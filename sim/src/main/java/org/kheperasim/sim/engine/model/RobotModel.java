@@ -141,7 +141,8 @@ public record RobotModel(RobotType type, Stepping stepping, Link link, Noise noi
             // The per-sensor settings name sensors 0..7; a ninth sensor and beyond keep the neutral values.
             boolean named = i < Settings.PER_SENSOR;
             proxGain[i] = (named ? s.number("prox." + i + ".gain") : 1) * (m == null ? 1 : m.gain(i));
-            proxNoise[i] = named ? s.number("prox." + i + ".noise") : 1;
+            // A measured sensor's own noise, over the type's, times the settings' (1 unless set).
+            proxNoise[i] = (named ? s.number("prox." + i + ".noise") : 1) * (m == null ? 1 : m.tables().noiseScale(i));
             proxDead[i] = named && s.flag("prox." + i + ".dead");
             lightGain[i] = named ? s.number("light." + i + ".gain") : 1;
             lightDead[i] = named && s.flag("light." + i + ".dead");

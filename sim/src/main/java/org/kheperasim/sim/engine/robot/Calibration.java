@@ -1,5 +1,6 @@
 package org.kheperasim.sim.engine.robot;
 
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -49,11 +50,12 @@ public record Calibration(String robot, String date, RobotType type, SampleFit.R
         String date = null;
         String wall = null;
         RobotType base = RobotTypes.KHEPERA1;
-        RobotType.Drive d = base.drive();
-        double mmPerPulse = d.mmPerPulse();
-        double wheelBase = d.wheelBaseMm();
-        double unit = d.mmPerSecondPerUnit();
+        double mmPerPulse = Double.NaN;
+        double wheelBase = Double.NaN;
+        double unit = Double.NaN;
         double rightOverLeft = 1;
+        String samples = null;
+        Series series = new Series();
         double cap = Double.NaN;
         double other = Double.NaN;
         for (int n = 1; n < lines.size(); n++) {
@@ -67,24 +69,18 @@ public record Calibration(String robot, String date, RobotType type, SampleFit.R
                 case "robot" -> robot = v;
                 case "date" -> date = v;
                 case "wall" -> wall = v;
-                case "base" -> {
-                    if (!v.equals("khepera1")) {
-                        throw new RobotFileException(source, n + 1,
-                                "base " + v + ": only khepera1 calibrations are read"
-                                + " in this version");
-                    }
-                }
+                case "base" -> base = base(source, n, v);
                 case "drive.mmPerPulse" -> mmPerPulse = number(source, n, v, 0.001, 10);
                 case "drive.wheelBaseMm" -> wheelBase = number(source, n, v, 1, 1000);
                 case "drive.mmPerSecondPerUnit" -> unit = number(source, n, v, 0.001, 1000);
                 case "motor.rightOverLeft" -> rightOverLeft = number(source, n, v, 0.5, 2);
                 case "reflect.cap" -> cap = number(source, n, v, 0, 10);
                 case "reflect.robot" -> other = number(source, n, v, 0, 10);
-                case "samples", "lamp" -> {
-                    // the raw readings and the lamp series are kept for people; the engine's lamps take no table
-                }
+                case "samples" -> samples = v;
+                case "cap.series", "robot.series", "lamp" -> series.add(source, n, kv[0], v);
                 default -> throw new RobotFileException(source, n + 1, "'" + kv[0] + "': the keys are robot, date,"
-                        + " base, wall, samples, drive.*, motor.rightOverLeft, reflect.cap, reflect.robot and lamp");
+                        + " base, wall, samples, drive.*, motor.rightOverLeft, reflect.cap, reflect.robot,"
+                        + " cap.series, robot.series and lamp");
             }
         }
         if (robot == null || date == null || wall == null) {
@@ -95,23 +91,104 @@ public record Calibration(String robot, String date, RobotType type, SampleFit.R
             throw new RobotFileException(source, 0, "robot '" + robot + "' or date '" + date + "' is not allowed: the"
                     + " robot is 1 to 40 letters, digits, '_' or '-', the date YYYY-MM-DD");
         }
-        Path wallFile = file.toAbsolutePath().getParent().resolve(wall);
+        Path dir = file.toAbsolutePath().getParent();
+        Path wallFile = dir.resolve(wall);
         SampleFit.Result fit;
+        List<SampleFit.Sample> readings;
+        double[] noise = null;
         try {
-            fit = SampleFit.fit(base, SampleResponses.samples(SampleTable.read(wallFile), base));
+            readings = SampleResponses.samples(SampleTable.read(wallFile), base);
+            fit = SampleFit.fit(base, readings);
+            if (samples != null && Files.isRegularFile(dir.resolve(samples))) {
+                noise = CalibrationTables.noise(dir.resolve(samples), base.sensorCount(), fit.offset());
+            }
         } catch (java.io.IOException e) {
-            throw new RobotFileException(source, 0, "its wall file " + wallFile + " cannot be read (" + e.getMessage()
-                    + "): keep the .sample file 'khepera-link calibrate' wrote beside it");
+            throw new RobotFileException(source, 0, "its wall file " + wallFile + " or samples file cannot be read ("
+                    + e.getMessage() + "): keep the files 'khepera-link calibrate' wrote beside it");
+        } catch (IllegalArgumentException e) {
+            throw new RobotFileException(source, 0, e.getMessage());
         }
+        // Each sensor measured on its own: its own table (its level in it, so its gain is 1), its own noise.
+        List<Response> own = SampleResponses.perSensor(base, readings, fit);
         List<Double> gains = new ArrayList<>();
-        for (double g : fit.gains()) {
-            gains.add(StrictMath.min(10, g));
+        List<Double> scales = new ArrayList<>();
+        for (int i = 0; i < base.sensorCount(); i++) {
+            gains.add(1.0);
+            scales.add(noise == null ? 1 : noise[2 + i]);
         }
+        int[] front = CalibrationTables.front(base);
+        double frontGain = (fit.gains()[front[0]] + fit.gains()[front[front.length - 1]]) / 2;
+        MeasuredTables tables = MeasuredTables.NONE.withSensors(own).withNoise(noise == null ? List.of() : scales)
+                .withObjects(series.table("cap.series", base, fit, frontGain),
+                        series.table("robot.series", base, fit, frontGain))
+                .withLamp(CalibrationTables.lamp(base, series.mm("lamp"), series.means("lamp")));
         RobotType.Measured measured = new RobotType.Measured(robot, date, gains, 2 / (1 + rightOverLeft),
-                2 * rightOverLeft / (1 + rightOverLeft), cap, other);
+                2 * rightOverLeft / (1 + rightOverLeft), cap, other, tables);
+        RobotType.Drive d = base.drive();
         RobotType type = base.calibrated("calibration of " + robot + " on " + date + " (" + file.getFileName() + ")",
-                wheelBase, unit, mmPerPulse, fit.table(), fit.offset(), fit.noiseAbs(), fit.noiseRel(), measured);
+                Double.isNaN(wheelBase) ? d.wheelBaseMm() : wheelBase,
+                Double.isNaN(unit) ? d.mmPerSecondPerUnit() : unit,
+                Double.isNaN(mmPerPulse) ? d.mmPerPulse() : mmPerPulse, fit.table(), fit.offset(),
+                noise == null ? fit.noiseAbs() : noise[0], noise == null ? fit.noiseRel() : noise[1], measured);
         return new Calibration(robot, date, type, fit);
+    }
+
+    private static RobotType base(String source, int n, String v) {
+        if (!RobotTypes.BUNDLED.contains(v)) {
+            throw new RobotFileException(source, n + 1, "base " + v + ": a calibration overlays a bundled robot,"
+                    + " one of "
+                    + String.join(", ", RobotTypes.BUNDLED));
+        }
+        return RobotTypes.named(v);
+    }
+
+    /** A calibration's straight-ahead series: {@code cap.series GAP m0 ..}, {@code robot.series ..} and lamp. */
+    private static final class Series {
+        private final java.util.Map<String, List<double[]>> lines = new java.util.HashMap<>();
+
+        void add(String source, int n, String kind, String v) {
+            String[] f = v.trim().split("\\s+");
+            double[] x = new double[f.length];
+            try {
+                for (int k = 0; k < f.length; k++) {
+                    x[k] = Double.parseDouble(f[k]);
+                }
+            } catch (NumberFormatException e) {
+                throw new RobotFileException(source, n + 1, "'" + kind + " " + v + "': give the distance, mm, then"
+                        + " each sensor's mean reading");
+            }
+            lines.computeIfAbsent(kind, k -> new ArrayList<>()).add(x);
+        }
+
+        double[] mm(String kind) {
+            return lines.getOrDefault(kind, List.of()).stream().mapToDouble(x -> x[0]).toArray();
+        }
+
+        double[][] means(String kind) {
+            return lines.getOrDefault(kind, List.of()).stream().map(x -> java.util.Arrays.copyOfRange(x, 1, x.length))
+                    .toArray(double[][]::new);
+        }
+
+        Response.Table table(String kind, RobotType type, SampleFit.Result fit, double gain) {
+            double[][] m = means(kind);
+            for (double[] row : m) {
+                if (row.length != type.sensorCount()) {
+                    throw new IllegalArgumentException("a '" + kind + "' line has " + row.length + " readings but "
+                            + type.name() + " has " + type.sensorCount() + " sensors");
+                }
+            }
+            Response.Table t = m.length == 0 ? null : CalibrationTables.object(type, fit, mm(kind), m);
+            if (t == null) {
+                return null;
+            }
+            double[][] v = t.values();
+            for (double[] row : v) {
+                for (int c = 0; c < row.length; c++) {
+                    row[c] *= gain;
+                }
+            }
+            return new Response.Table(t.distancesMm(), t.anglesDeg(), v);
+        }
     }
 
     private static double number(String source, int n, String v, double min, double max) {

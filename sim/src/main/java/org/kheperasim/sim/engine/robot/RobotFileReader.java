@@ -25,8 +25,6 @@ public final class RobotFileReader {
             Set.of("response", "sample", "angles", "weights", "distances", "values", "offset",
             "noise_std_dev", "noise_relative", "max_reading");
     private static final Set<String> LIGHT = Set.of("dark", "bright", "noise_relative");
-    private static final Set<String> MEASURED = Set.of("robot", "date", "gains", "wheel_calibration", "cap_reflectance",
-            "robot_reflectance");
 
     private final String source;
     private final java.nio.file.Path folder;
@@ -119,45 +117,14 @@ public final class RobotFileReader {
                 number(need(p, "noise_std_dev"), 0, 100_000, "counts"),
                 number(need(p, "noise_relative"), 0, 10, "(relative)"),
                 integer(need(p, "max_reading"), 1, 100_000, "counts"));
-        RobotType.Measured measured = root.keys.containsKey("measured") ? measured(section(root, "measured", MEASURED),
-                sensors.size()) : null;
-        return new RobotType(name, src, body, drive, sensors, proximity, light, turrets, dialect, measured);
-    }
-
-    /** The section a calibration adds: the one robot measured, its day, its sensors' gains and wheels' calibrations. */
-    private RobotType.Measured measured(RobotFileLines.Entry m, int sensorCount) {
-        String robot = text(need(m, "robot"));
-        if (!robot.matches("[A-Za-z0-9_.-]{1,40}")) {
-            throw error(need(m, "robot"),
-                    "robot '" + robot + "' is not a label; use 1 to 40 letters, digits, '_' or '-'");
+        RobotType kind = new RobotType(name, src, body, drive, sensors, proximity, light, turrets, dialect);
+        RobotType.Measured measured = root.keys.containsKey("measured")
+                ? new MeasuredReader(this, kind).read(section(root, "measured", MeasuredReader.KEYS)) : null;
+        try {
+            return new RobotType(name, src, body, drive, sensors, proximity, light, turrets, dialect, measured);
+        } catch (IllegalArgumentException e) {
+            throw error(root.keys.get("measured"), e.getMessage());
         }
-        String date = text(need(m, "date"));
-        if (!date.matches("\\d{4}-\\d{2}-\\d{2}")) {
-            throw error(need(m, "date"), "date '" + date + "' is not a day; write it YYYY-MM-DD");
-        }
-        RobotFileLines.Entry g = need(m, "gains");
-        double[] gains = numbers(g, sensorCount, sensorCount);
-        List<Double> list = new ArrayList<>();
-        for (double v : gains) {
-            if (!(v > 0 && v <= 10)) {
-                throw error(g, "gain " + fmt(v)
-                        + " is out of range; give each sensor's gain in 0..10 (1: the type's response)");
-            }
-            list.add(v);
-        }
-        double[] wheels = numbers(need(m, "wheel_calibration"), 2, 2);
-        for (double v : wheels) {
-            if (!(v >= 0.5 && v <= 2)) {
-                throw error(need(m, "wheel_calibration"), "wheel calibration " + fmt(v) + " is out of range; give the"
-                        + " left and right wheels' actual over commanded speed, each in 0.5..2");
-            }
-        }
-        double cap = m.keys.containsKey("cap_reflectance")
-                ? number(m.keys.get("cap_reflectance"), 0, 10, "(the wall: 1)")
-                : Double.NaN;
-        double other = m.keys.containsKey("robot_reflectance")
-                ? number(m.keys.get("robot_reflectance"), 0, 10, "(the wall: 1)") : Double.NaN;
-        return new RobotType.Measured(robot, date, list, wheels[0], wheels[1], cap, other);
     }
 
     private List<RobotType.Sensor> sensors(RobotFileLines.Entry s, RobotType.Body body) {
@@ -216,15 +183,18 @@ public final class RobotFileReader {
      */
     private Response sampled(RobotFileLines.Entry p, RobotType shape) {
         RobotFileLines.Entry e = need(p, "sample");
-        java.nio.file.Path file = java.nio.file.Path.of(text(e));
-        if (!file.isAbsolute() && folder != null) {
-            file = folder.resolve(file);
-        }
+        java.nio.file.Path file = path(e);
         try {
             return SampleResponses.fit(file.toString(), shape).table();
         } catch (IllegalArgumentException ex) {
             throw error(e, ex.getMessage());
         }
+    }
+
+    /** @return the path an entry gives, from the robot file's folder when it is relative */
+    java.nio.file.Path path(RobotFileLines.Entry e) {
+        java.nio.file.Path file = java.nio.file.Path.of(text(e));
+        return !file.isAbsolute() && folder != null ? folder.resolve(file) : file;
     }
 
     private Response response(RobotFileLines.Entry p, String robot) {
@@ -269,7 +239,7 @@ public final class RobotFileReader {
 
     // ------------------------------------------------------------------ fields
 
-    private RobotFileLines.Entry section(RobotFileLines.Entry root, String key, Set<String> keys) {
+    RobotFileLines.Entry section(RobotFileLines.Entry root, String key, Set<String> keys) {
         RobotFileLines.Entry s = need(root, key);
         if (!s.value.isEmpty() || !s.items.isEmpty()) {
             throw error(s, "'" + key + ":' starts a section; put its keys on the lines below, indented two spaces");
@@ -287,7 +257,7 @@ public final class RobotFileReader {
         }
     }
 
-    private RobotFileLines.Entry need(RobotFileLines.Entry e, String key) {
+    RobotFileLines.Entry need(RobotFileLines.Entry e, String key) {
         RobotFileLines.Entry k = e.keys.get(key);
         if (k == null) {
             throw new RobotFileException(source, e.line, "'" + key + "' is missing" + (e.line == 0 ? "" : " here")
@@ -296,14 +266,14 @@ public final class RobotFileReader {
         return k;
     }
 
-    private String text(RobotFileLines.Entry e) {
+    String text(RobotFileLines.Entry e) {
         if (e.value.isEmpty()) {
             throw error(e, "'" + e.key + "' has no value; write '" + e.key + ": <value>'");
         }
         return e.value;
     }
 
-    private double number(RobotFileLines.Entry e, double min, double max, String unit) {
+    double number(RobotFileLines.Entry e, double min, double max, String unit) {
         double v = parse(e, text(e));
         if (!(v >= min && v <= max)) {
             throw error(e, e.key + " " + text(e) + " is out of range; use " + fmt(min) + " to "
@@ -355,7 +325,7 @@ public final class RobotFileReader {
         return out;
     }
 
-    private double[] numbers(RobotFileLines.Entry e, int min, int max) {
+    double[] numbers(RobotFileLines.Entry e, int min, int max) {
         List<String> parts = flow(e);
         String what = e.key.equals("-") ? "the row" : e.key;
         if (parts.size() < min || parts.size() > max) {
@@ -369,7 +339,7 @@ public final class RobotFileReader {
         return out;
     }
 
-    private RobotFileException error(RobotFileLines.Entry e, String what) {
+    RobotFileException error(RobotFileLines.Entry e, String what) {
         return new RobotFileException(source, e.line, what);
     }
 

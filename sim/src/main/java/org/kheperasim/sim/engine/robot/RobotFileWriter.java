@@ -92,8 +92,46 @@ public final class RobotFileWriter {
             if (!Double.isNaN(m.robotReflectance())) {
                 key(sb, "robot_reflectance", m.robotReflectance());
             }
+            tables(sb, m.tables());
         }
         return sb.toString();
+    }
+
+    /** A measured robot's tables, written out (a file that pointed at sample files is saved with their fits). */
+    private static void tables(StringBuilder sb, MeasuredTables t) {
+        if (!t.noiseScale().isEmpty()) {
+            sb.append("  noise_scale: ").append(list(t.noiseScale().stream().mapToDouble(Double::doubleValue)
+                    .toArray())).append('\n');
+        }
+        Response.Table grid = t.grid();
+        if (grid != null) {
+            sb.append("  table_angles: ").append(list(grid.anglesDeg())).append('\n');
+            sb.append("  table_distances: ").append(list(grid.distancesMm())).append('\n');
+            if (!t.sensors().isEmpty()) {
+                sb.append("  sensor_tables:\n");
+                for (Response r : t.sensors()) {
+                    rows(sb, r);
+                }
+            }
+            if (!t.cap().isEmpty()) {
+                sb.append("  cap_table:\n");
+                t.cap().forEach(r -> rows(sb, r));
+            }
+            if (!t.robot().isEmpty()) {
+                sb.append("  robot_table:\n");
+                t.robot().forEach(r -> rows(sb, r));
+            }
+        }
+        if (t.lamp() != null) {
+            sb.append("  lamp_distances: ").append(list(t.lamp().distancesMm())).append('\n');
+            sb.append("  lamp_activations: ").append(list(t.lamp().activations())).append('\n');
+        }
+    }
+
+    private static void rows(StringBuilder sb, Response r) {
+        for (double[] row : ((Response.Table) r).values()) {
+            sb.append("    - ").append(list(row)).append('\n');
+        }
     }
 
     private static void key(StringBuilder sb, String key, double v) {

@@ -50,6 +50,9 @@ public record RobotType(String name, String source, Body body, Drive drive, List
                     + " sensors but its calibration "
                     + measured.proxGains().size() + " gains: give one gain a sensor");
         }
+        if (measured != null) {
+            measured.tables().check(name, sensors.size());
+        }
     }
 
     /** A kind of robot, not one measured robot ({@link #measured()} null). */
@@ -112,13 +115,29 @@ public record RobotType(String name, String source, Body body, Drive drive, List
      * @param rightCalibration the right wheel's actual over commanded speed
      * @param capReflectance how much a cap reflects, the wall being 1 (NaN: not measured, the settings' figure)
      * @param robotReflectance how much another robot reflects, the wall being 1 (NaN: not measured)
+     * @param tables its measured tables: per sensor, per kind of object, its noise, its lamp response
+     *     ({@link MeasuredTables#NONE}: none, the kind's response with the gains above)
      */
     public record Measured(String robot, String date, List<Double> proxGains, double leftCalibration,
-            double rightCalibration, double capReflectance, double robotReflectance) {
+            double rightCalibration, double capReflectance, double robotReflectance, MeasuredTables tables) {
         public Measured {
             Objects.requireNonNull(robot, "robot");
             Objects.requireNonNull(date, "date");
             proxGains = List.copyOf(proxGains);
+            tables = tables == null ? MeasuredTables.NONE : tables;
+        }
+
+        /** A measured robot without tables of its own: the kind's response, with these gains. */
+        public Measured(String robot, String date, List<Double> proxGains, double leftCalibration,
+                double rightCalibration, double capReflectance, double robotReflectance) {
+            this(robot, date, proxGains, leftCalibration, rightCalibration, capReflectance, robotReflectance,
+                    MeasuredTables.NONE);
+        }
+
+        /** @param t tables @return this measurement with them */
+        public Measured withTables(MeasuredTables t) {
+            return new Measured(robot, date, proxGains, leftCalibration, rightCalibration, capReflectance,
+                    robotReflectance, t);
         }
 
         /** @param i a sensor @return its gain */

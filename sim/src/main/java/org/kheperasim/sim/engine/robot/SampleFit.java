@@ -25,6 +25,45 @@ public final class SampleFit {
     public record Sample(int sensor, double gapMm, double objectRightDeg, double counts) {
     }
 
+    /** Where a sampled object lies along a sensor's beam: a straight wall, or a disc (a cap, a robot). */
+    @FunctionalInterface
+    public interface Geometry {
+        /** A straight wall ({@link WallReading#beamDistanceMm}). */
+        Geometry WALL = WallReading::beamDistanceMm;
+
+        /**
+         * @param type the robot
+         * @param sensor a sensor
+         * @param gapMm the object's gap from the body's surface, mm
+         * @param objectRightDeg where its nearest point lies, degrees to the right of ahead
+         * @param beamDeg a beam's angle off the sensor's axis, degrees counter-clockwise
+         * @return the distance along the beam to the object, mm; infinity if the beam misses it
+         */
+        double beamDistanceMm(RobotType type, int sensor, double gapMm, double objectRightDeg, double beamDeg);
+
+        /** @param radiusMm the disc's radius, mm @return an upright cylinder of that radius (a cap, a robot's body) */
+        static Geometry disc(double radiusMm) {
+            return (type, sensor, gapMm, objectRightDeg, beamDeg) -> {
+                RobotType.Sensor s = type.sensor(sensor);
+                double th = StrictMath.toRadians(objectRightDeg);
+                double c = type.body().radiusMm() + gapMm + radiusMm;
+                double wx = s.xMm() - c * StrictMath.cos(th);
+                double wy = s.yMm() + c * StrictMath.sin(th);
+                double b = StrictMath.toRadians(s.headingDeg() + beamDeg);
+                double wb = wx * StrictMath.cos(b) + wy * StrictMath.sin(b);
+                double ww = wx * wx + wy * wy - radiusMm * radiusMm;
+                if (ww <= 0) {
+                    return 0;
+                }
+                double disc = wb * wb - ww;
+                if (disc < 0 || wb > 0) {
+                    return Double.POSITIVE_INFINITY;
+                }
+                return -wb - StrictMath.sqrt(disc);
+            };
+        }
+    }
+
     /**
      * The fit.
      *
@@ -86,6 +125,32 @@ public final class SampleFit {
 
     /** As {@link #fit(RobotType, List)}; without {@code perSensorGains} every gain stays 1. */
     static Result fit(RobotType type, List<Sample> samples, boolean perSensorGains) {
+        return fit(type, samples, Geometry.WALL, perSensorGains, Double.NaN);
+    }
+
+    /**
+     * @param type the robot the readings come from
+     * @param samples its readings of one kind of object
+     * @param geometry where that object lies along the beams
+     * @param perSensorGains fit a gain per sensor (else every gain stays 1)
+     * @param fixedOffset the reading with nothing in range, counts, or NaN: the median of the far readings
+     * @return the fitted response
+     */
+    public static Result fit(RobotType type, List<Sample> samples, Geometry geometry, boolean perSensorGains,
+            double fixedOffset) {
+        return fit(type, samples, geometry, perSensorGains, fixedOffset, null);
+    }
+
+    /**
+     * As {@link #fit(RobotType, List, Geometry, boolean, double)}, refining a given table (on this fit's grid)
+     * instead of one binned from the readings: cells the readings never reach keep the start's values, so a
+     * sensor fitted on its own readings keeps the shared table where it saw nothing.
+     *
+     * @param start the table to start from, {@code [angle][distance]} on {@link #ANGLES_DEG} and
+     *     {@link #DISTANCES_MM}, or null: binned from the readings
+     */
+    public static Result fit(RobotType type, List<Sample> samples, Geometry geometry, boolean perSensorGains,
+            double fixedOffset, double[][] start) {
         int nd = DISTANCES_MM.length;
         int na = ANGLES_DEG.length;
         int rays = 2 * na - 1;
@@ -100,7 +165,7 @@ public final class SampleFit {
             double best = Double.POSITIVE_INFINITY;
             for (int r = 0; r < rays; r++) {
                 double deg = r == 0 ? 0 : r % 2 == 1 ? ANGLES_DEG[(r + 1) / 2] : -ANGLES_DEG[(r + 1) / 2];
-                dist[p][r] = WallReading.beamDistanceMm(type, s.sensor(), s.gapMm(), s.objectRightDeg(), deg);
+                dist[p][r] = geometry.beamDistanceMm(type, s.sensor(), s.gapMm(), s.objectRightDeg(), deg);
                 best = StrictMath.min(best, dist[p][r]);
             }
             // The wall's angle off the axis: the beam that meets it nearest is the one along its normal.
@@ -112,12 +177,12 @@ public final class SampleFit {
                 far.add(s.counts());
             }
         }
-        double offset = far.isEmpty() ? 0 : median(far);
+        double offset = !Double.isNaN(fixedOffset) ? fixedOffset : far.isEmpty() ? 0 : median(far);
         double[] y = new double[n];
         for (int p = 0; p < n; p++) {
             y[p] = samples.get(p).counts() - offset;
         }
-        double[][] t = initial(axisDeg, axisMm, y);
+        double[][] t = start != null ? copy(start) : initial(axisDeg, axisMm, y);
         double[] gains = new double[sensors];
         Arrays.fill(gains, 1);
         int[] bestRay = new int[n];
@@ -170,6 +235,14 @@ public final class SampleFit {
         double noiseAbs = dark.isEmpty() ? 0 : 1.4826 * median(dark);
         double noiseRel = rel.isEmpty() ? 0 : StrictMath.min(1, 1.4826 * median(rel));
         return new Result(new Response.Table(DISTANCES_MM, ANGLES_DEG, t), gains, offset, noiseAbs, noiseRel);
+    }
+
+    private static double[][] copy(double[][] v) {
+        double[][] c = new double[v.length][];
+        for (int j = 0; j < v.length; j++) {
+            c[j] = v[j].clone();
+        }
+        return c;
     }
 
     /** Bins the readings by their wall's angle off the axis and distance, and fills the gaps. */

@@ -6,6 +6,7 @@ import org.kheperasim.sim.arena.OccupancyGrid;
 import org.kheperasim.sim.engine.model.Miscalibration;
 import org.kheperasim.sim.engine.model.RobotModel;
 import org.kheperasim.sim.engine.noise.CounterNoise;
+import org.kheperasim.sim.engine.robot.LampResponse;
 import org.kheperasim.sim.engine.space.World;
 
 /**
@@ -29,6 +30,8 @@ public final class LightSensing {
     private final double flickerDepth;
     private final double noiseRel;
     private final CounterNoise[] noise;
+    /** A measured robot's response to a lamp, in place of the modelled fall-off; null: the model's. */
+    private final LampResponse lamp;
     /**
      * Characters the eight values of a sample in darkness take in a reply, or -1 when that depends
      * on the flicker (a dark level close to a power of ten): then darkness is read at once.
@@ -50,6 +53,7 @@ public final class LightSensing {
         this.flickerDepth = l.flickerDepth();
         this.noiseRel = l.noiseRel() * reading;
         this.noise = noise;
+        this.lamp = model.type().measured() == null ? null : model.type().measured().tables().lamp();
         this.darkChars = darkChars();
     }
 
@@ -166,6 +170,9 @@ public final class LightSensing {
         }
         if (!grid.lightReaches(px, py, light.x(), light.y())) {
             return 0;
+        }
+        if (lamp != null) {
+            return light.intensity() * facing * lamp.activation(r);
         }
         double falloff = 1 - r / light.range();
         return light.intensity() * facing * falloff * falloff;

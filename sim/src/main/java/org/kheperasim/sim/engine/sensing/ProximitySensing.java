@@ -8,7 +8,7 @@ import org.kheperasim.sim.engine.body.GripperModel;
 import org.kheperasim.sim.engine.model.Miscalibration;
 import org.kheperasim.sim.engine.model.RobotModel;
 import org.kheperasim.sim.engine.noise.CounterNoise;
-import org.kheperasim.sim.engine.robot.ProximityProfile;
+import org.kheperasim.sim.engine.robot.BeamResponse;
 import org.kheperasim.sim.engine.robot.Response;
 import org.kheperasim.sim.engine.space.Caps;
 import org.kheperasim.sim.engine.space.ClearanceProof;
@@ -34,9 +34,8 @@ public final class ProximitySensing {
     private final SensorPlacement placement;
     /** How many sensors the robot has. */
     private final int count;
-    /** Each beam's response along it, and its weight: the axis first, then each pair. */
-    private final ProximityProfile[] rayProfile;
-    private final double[] rayWeight;
+    /** What a beam's hit reads, by sensor, beam (the axis first, then each pair), kind of object and distance. */
+    private final BeamResponse response;
     private final double range;
     /** No sensor sits farther than this from the robot's centre, mm. */
     private final double reach;
@@ -48,8 +47,6 @@ public final class ProximitySensing {
     private final double coneMid;
     private final double[] rayCos;
     private final double[] raySin;
-    private final double[] reflectance;
-    private final double maxReflectance;
     private final double[] gain;
     private final double[] offset;
     private final double[] noiseScale;
@@ -116,23 +113,18 @@ public final class ProximitySensing {
         int rays = 2 * angles.length - 1;
         rayCos = new double[rays];
         raySin = new double[rays];
-        rayProfile = new ProximityProfile[rays];
-        rayWeight = new double[rays];
         // The axis, then +a and -a for each further angle a: for the Khepera 0, 12, -12, 24, -24.
         for (int r = 0; r < rays; r++) {
             int j = (r + 1) / 2;
             double deg = r == 0 ? 0 : r % 2 == 1 ? angles[j] : -angles[j];
             rayCos[r] = StrictMath.cos(StrictMath.toRadians(deg));
             raySin[r] = StrictMath.sin(StrictMath.toRadians(deg));
-            rayProfile[r] = response.along(j);
-            rayWeight[r] = response.weight(j);
         }
+        this.response = new BeamResponse(response, p.reflectance(),
+                model.type().measured() == null ? null : model.type().measured().tables(), count);
         this.coneMid = range / (2 * StrictMath.cos(StrictMath.toRadians(angles[angles.length - 1])));
         this.noiseScale = new double[count];
         this.armBlinds = new boolean[count];
-        this.reflectance = p.reflectance();
-        this.maxReflectance = StrictMath.max(StrictMath.max(reflectance[1], reflectance[4]),
-                StrictMath.max(reflectance[2], reflectance[3]));
         this.gain = calibration.proxGain;
         this.offset = calibration.proxOffset;
         for (int i = 0; i < count; i++) {
@@ -250,11 +242,11 @@ public final class ProximitySensing {
                 free = StrictMath.min(free, robots.nearestSurface(px, py));
             }
             if (!shortcuts) {
-                raw = beams(px, py, dx, dy, 0, false, false);
+                raw = beams(i, px, py, dx, dy, 0, false, false);
             } else if (free - DriveBody.NEAR_MM < range) {
                 // The field's clearance is that of the nearest cell by the cells' centres: a cell up
                 // to NEAR_MM nearer may still meet a beam, so the beams start there.
-                raw = beams(px, py, dx, dy, StrictMath.max(0, free - DriveBody.NEAR_MM), noCaps, coneFree);
+                raw = beams(i, px, py, dx, dy, StrictMath.max(0, free - DriveBody.NEAR_MM), noCaps, coneFree);
             }
             out[i] = reading(i, raw, sample);
         }
@@ -282,7 +274,7 @@ public final class ProximitySensing {
     /** Sensor i's reading for a beam response {@code raw}: gain, offset, noise and spikes. */
     private int reading(int i, double raw, long sample) {
         if (arm != null && armBlinds[i] && arm.armLow()) {
-            raw = StrictMath.max(raw, reflectance[OccupancyGrid.WALL] * rayProfile[0].valueAt(0));
+            raw = StrictMath.max(raw, response.touching(i));
         }
         double value = raw * gain[i] + offset[i];
         if (noiseScale[i] > 0) {
@@ -303,12 +295,13 @@ public final class ProximitySensing {
      * {@code coneFree} the field has proven the sensor's cone free of walls and lamps (and there
      * are no caps within reach), so only the other robots are looked at.
      */
-    private double beams(double px, double py, double dx, double dy, double skip, boolean noCaps, boolean coneFree) {
+    private double beams(int sensor, double px, double py, double dx, double dy, double skip, boolean noCaps,
+            boolean coneFree) {
         double raw = 0;
         for (int r = 0; r < rayCos.length; r++) {
             // A hit beyond `reach` could not beat the strongest response so far: march no farther.
             double reach = raw == 0 || !shortcuts ? range
-                    : rayProfile[r].distanceBeyondWhichAtMost(raw / (rayWeight[r] * maxReflectance)) + 1e-9;
+                    : response.beyondAtMost(sensor, r, raw) + 1e-9;
             if (reach <= skip) {
                 continue;
             }
@@ -316,7 +309,7 @@ public final class ProximitySensing {
             double ry = dy * rayCos[r] + dx * raySin[r];
             double limit = StrictMath.min(range, reach);
             double d;
-            double reflect;
+            int kind;
             // Where the march starts: the field may prove the beam empty farther than `skip`.
             double from = coneFree || !noCaps ? skip : emptyUntil(px, py, rx, ry, skip, limit);
             if (coneFree || from > limit) {
@@ -325,20 +318,20 @@ public final class ProximitySensing {
                     continue;
                 }
                 d = Double.POSITIVE_INFINITY;
-                reflect = 0;
+                kind = BeamResponse.FLOOR;
             } else {
                 d = from + grid.castRay(px + from * rx, py + from * ry, rx, ry, limit - from, hit);
-                reflect = d == Double.POSITIVE_INFINITY ? 0 : reflectanceOf(hit.id);
+                kind = d == Double.POSITIVE_INFINITY ? BeamResponse.FLOOR : kindOf(hit.id);
             }
             if (robots.inConeCount() > 0) {
                 double dr = robots.along(px, py, rx, ry);
                 if (dr < d && dr <= limit) {
                     d = dr;
-                    reflect = reflectance[ROBOT];
+                    kind = BeamResponse.ROBOT;
                 }
             }
             if (d != Double.POSITIVE_INFINITY) {
-                double v = rayWeight[r] * reflect * rayProfile[r].valueAt(d);
+                double v = response.value(sensor, r, kind, d);
                 if (v > raw) {
                     raw = v;
                 }
@@ -395,9 +388,6 @@ public final class ProximitySensing {
         return best;
     }
 
-    /** Index of another robot's body in the reflectance table. */
-    private static final int ROBOT = 4;
-
     /**
      * The samples to come may see only robots {@code ids[from .. to)}, or any (null); see {@link RobotsInReach#scope}.
      */
@@ -405,7 +395,7 @@ public final class ProximitySensing {
         robots.scope(ids, from, to);
     }
 
-    private double reflectanceOf(int cellId) {
-        return cellId >= OccupancyGrid.FIRST_CAP ? reflectance[3] : reflectance[cellId];
+    private static int kindOf(int cellId) {
+        return cellId >= OccupancyGrid.FIRST_CAP ? BeamResponse.CAP : cellId;
     }
 }
