@@ -17,6 +17,8 @@
  *       of cell ids, with ray casting and line-of-sight tests.</li>
  *   <li>{@link org.kheperasim.sim.arena.DistanceField}: clearance from every point to the nearest
  *       obstacle, for collisions.</li>
+ *   <li>{@link org.kheperasim.sim.arena.ShapeIndex}: the walls and lamps as their exact shapes
+ *       (capsules, discs) in buckets, which the proximity beams are cast against.</li>
  *   <li>{@link org.kheperasim.sim.arena.ArenaFiles}: a file of either format becomes an arena; WSU
  *       world files are read through {@link org.kheperasim.sim.arena.WsuWorldReader}, implemented
  *       by the importer in {@code arena.wsu}, which builds on this package (never the other way).</li>

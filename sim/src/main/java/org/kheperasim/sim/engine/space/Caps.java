@@ -11,9 +11,10 @@ import org.kheperasim.sim.engine.view.CapView;
 /**
  * The bottle caps: discs on the floor that robots push, and that grippers pick up and put down.
  *
- * <p>A cap on the floor is painted into the occupancy grid under its own id, so the proximity
- * beams see it; the distance field holds only walls and lights, so moving a cap costs a few dozen
- * cell writes and no field update. Collisions with caps are tested disc by disc.
+ * <p>A cap on the floor is painted into the occupancy grid under its own id (the gripper's barrier
+ * and the vision turret see it there; the proximity beams meet its disc); the distance field holds
+ * only walls and lights, so moving a cap costs a few dozen cell writes and no field update.
+ * Collisions with caps are tested disc by disc.
  *
  * <p>A push moves a cap by a displacement as far as it can go: it stops at walls and lights, and
  * shoves the caps it meets ahead of it along the line between their centres (a row of up to

@@ -5,12 +5,13 @@ import java.util.Map;
 import org.kheperasim.sim.arena.Arena;
 import org.kheperasim.sim.arena.DistanceField;
 import org.kheperasim.sim.arena.OccupancyGrid;
+import org.kheperasim.sim.arena.ShapeIndex;
 import org.kheperasim.sim.engine.view.CapView;
 
 /**
  * The world the robots live in: the arena, its occupancy grid, the grid's distance field (which
- * makes collision tests one lookup and lets a sensor skip its beams when nothing is near), and the
- * bottle caps, which move.
+ * makes collision tests one lookup), the walls' and lamps' shapes in buckets (which the proximity
+ * beams are cast against), and the bottle caps, which move.
  *
  * <p>The arena can be edited during a run ({@link org.kheperasim.sim.engine.Engine#edit}); the grid and the field are
  * updated in place, so everything holding them sees the edit.
@@ -19,13 +20,14 @@ public final class World {
     private Arena arena;
     private final OccupancyGrid grid;
     private final DistanceField field;
+    private ShapeIndex shapes;
     private int freeCells;
 
     private final Caps caps;
     private final Bodies bodies;
 
     /** What rasterising an arena gives: the same for every run of it. */
-    private record Raster(OccupancyGrid grid, DistanceField field, int freeCells) {
+    private record Raster(OccupancyGrid grid, DistanceField field, ShapeIndex shapes, int freeCells) {
     }
 
     /** The walls, lights and caps a raster is made from. */
@@ -61,12 +63,13 @@ public final class World {
         Raster raster = RASTERS.get(layout);
         if (raster == null) {
             OccupancyGrid g = OccupancyGrid.of(arena);
-            raster = new Raster(g, DistanceField.of(g), countFree(g));
+            raster = new Raster(g, DistanceField.of(g), new ShapeIndex(arena, g), countFree(g));
             RASTERS.put(layout, raster);
         }
         // The run's own copies: an edit or a moving cap changes them, never the shared raster.
         this.grid = raster.grid().copy();
         this.field = raster.field().copyFor(grid);
+        this.shapes = raster.shapes();
         this.bodies = new Bodies(arena.width(), arena.height());
         this.caps = new Caps(grid, field, bodies);
         caps.load(arena.caps());
@@ -101,6 +104,7 @@ public final class World {
         caps.load(edited.caps());
         caps.paintAll();
         field.recompute();
+        shapes = new ShapeIndex(fixed, grid);
         freeCells = countFree(grid);
     }
 
@@ -117,6 +121,11 @@ public final class World {
     /** @return the distance field of the grid's obstacles */
     public DistanceField field() {
         return field;
+    }
+
+    /** @return the walls' and lamps' shapes (as last edited; immutable, so look it up again after an edit) */
+    public ShapeIndex shapes() {
+        return shapes;
     }
 
     /** @return the number of floor cells */

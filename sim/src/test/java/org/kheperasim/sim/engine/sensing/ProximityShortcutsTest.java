@@ -25,13 +25,13 @@ import org.kheperasim.sim.engine.robot.RobotTypes;
 import org.kheperasim.sim.engine.space.World;
 
 /**
- * The proximity sensors' shortcuts change no reading: a sample with nothing in reach, a cone the
- * distance field proves empty, beams started where the field proves them empty, a march cut short
- * where no farther hit could beat the strongest, robots outside a cone left out. Each bundled
- * arena, with caps and other robots scattered over its floor, is sampled at random poses (many of
- * them close to a wall, a cap or a robot) both with the shortcuts and the long way (every beam
- * marched over the grid from its sensor to its range, every robot within reach looked at), with the
- * same noise draws; the readings must be the same.
+ * The proximity sensors' shortcuts change no reading: a sample with nothing in reach (the shapes'
+ * clearance lattice, the nearest cap, the robots around), the walls and lamps taken from the
+ * buckets around the robot and narrowed to each sensor's cone, caps and robots outside a cone left
+ * out. Each bundled arena, with caps and other robots scattered over its floor, is sampled at random
+ * poses (many of them close to a wall, a cap or a robot) both with the shortcuts and by brute force
+ * (every beam cast against every wall, lamp and cap on the floor and the floor's edge, every robot
+ * within reach looked at), with the same noise draws; the readings must be the same.
  */
 class ProximityShortcutsTest {
 
@@ -48,8 +48,7 @@ class ProximityShortcutsTest {
         List<Cap> caps = new ArrayList<>(bare.caps());
         for (int k = 0; k < 40; k++) {
             double[] at = freeSpot(bare, bareField, random, Cap.DEFAULT_RADIUS + 1);
-            // A quarter of them smaller than a cell: the cell holding a cap's centre is always
-            // the cap's, so its cells reach farther beyond its disc.
+            // A quarter of them tiny.
             caps.add(k % 4 == 0 ? new Cap(at[0], at[1], random.nextDouble(0.2, OccupancyGrid.CELL_MM))
                     : new Cap(at[0], at[1]));
         }
@@ -98,13 +97,12 @@ class ProximityShortcutsTest {
     }
 
     /**
-     * A cap smaller than a cell, its centre near a cell's corner: the cell holding its centre is
-     * the cap's, and that cell's far corner lies nearly a whole diagonal from the centre. A robot
-     * stands on that corner's side, at every distance (0.05 mm apart) where its reach ends around
-     * that corner, turned every way (1° apart).
+     * A tiny cap at the very end of the sensors' reach: a robot stands at every distance (0.05 mm
+     * apart) where its reach ends around the cap's disc, turned every way (1° apart); the shortcuts
+     * must not leave out a cap that a beam's end just touches.
      */
     @org.junit.jupiter.api.Test
-    void aCapSmallerThanACellIsSeenWhereItsCellIs() {
+    void aCapAtTheEndOfTheSensorsReachIsSeen() {
         double cell = OccupancyGrid.CELL_MM;
         double capX = 200 * cell + 0.01;
         double capY = 200 * cell + 0.01;
@@ -162,9 +160,8 @@ class ProximityShortcutsTest {
     }
 
     /**
-     * A robot centre whose sensors' reach ends just around a cap's edge: a cap's cells on the grid
-     * stick out of its disc (by up to a cell's diagonal for a cap smaller than a cell), which the
-     * shortcuts must allow for.
+     * A robot centre whose sensors' reach ends just around a cap's edge, where the shortcuts' bound
+     * of the nearest cap decides.
      *
      * @return the centre and the heading that faces the cap, or null when none was found
      */
