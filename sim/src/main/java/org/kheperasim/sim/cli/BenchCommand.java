@@ -116,16 +116,33 @@ final class BenchCommand implements Callable<Integer> {
                 + (scenario.robots().size() >= 64 ? "; world step on " + hostOptions.engineThreads() + " thread"
                         + (hostOptions.engineThreads() == 1 ? "" : "s") : ""));
         List<Double> factors = new ArrayList<>();
+        List<Double> cpuPerRobotSecond = new ArrayList<>();
         for (int i = 0; i < runs; i++) {
+            long cpu0 = processCpuNanos();
             RunResult r = run(seed + i);
+            long cpu = processCpuNanos() - cpu0;
             factors.add(r.realTimeFactor());
-            System.out.printf(Locale.ROOT, "run %d: seed %d, %.1f s simulated in %.3f s wall = %,.0f x real time%n",
-                    i + 1, r.seed(), r.simulatedSeconds(), r.wallSeconds(), r.realTimeFactor());
+            double robotSeconds = r.simulatedSeconds() * r.robots().size();
+            String cpuText = "";
+            if (cpu0 >= 0 && robotSeconds > 0) {
+                cpuPerRobotSecond.add(cpu / 1e3 / robotSeconds);
+                cpuText = String.format(Locale.ROOT, "; process CPU %.3f s = %.1f us per robot-second", cpu / 1e9,
+                        cpu / 1e3 / robotSeconds);
+            }
+            System.out.printf(Locale.ROOT, "run %d: seed %d, %.1f s simulated in %.3f s wall = %,.0f x real time%s%n",
+                    i + 1, r.seed(), r.simulatedSeconds(), r.wallSeconds(), r.realTimeFactor(), cpuText);
         }
         List<Double> sorted = new ArrayList<>(factors);
         sorted.sort(null);
         System.out.printf(Locale.ROOT, "median: %,.0f simulated seconds per wall second (min %,.0f, max %,.0f)%n",
                 sorted.get(sorted.size() / 2), sorted.get(0), sorted.get(sorted.size() - 1));
+        if (!cpuPerRobotSecond.isEmpty()) {
+            cpuPerRobotSecond.sort(null);
+            System.out.printf(Locale.ROOT, "median CPU: %.1f us per robot-second (min %.1f, max %.1f), the whole"
+                    + " process's (the JIT's and collector's threads included)%n",
+                    cpuPerRobotSecond.get(cpuPerRobotSecond.size() / 2), cpuPerRobotSecond.get(0),
+                    cpuPerRobotSecond.get(cpuPerRobotSecond.size() - 1));
+        }
         System.out.println(load());
         Swarm.printSetUpAndMemory(() -> run(seed + runs, 0.001),
                 whileRunning -> Simulation.builder().arena(scenario).controller(controller)
@@ -134,6 +151,12 @@ final class BenchCommand implements Callable<Integer> {
                         .seed(seed + runs)
                         .listener(s -> whileRunning.run(), 1).run());
         return 0;
+    }
+
+    /** @return the CPU time this process has used, all its threads, ns; -1 when the JVM does not say */
+    private static long processCpuNanos() {
+        return java.lang.management.ManagementFactory.getOperatingSystemMXBean()
+                instanceof com.sun.management.OperatingSystemMXBean os ? os.getProcessCpuTime() : -1;
     }
 
     /**
