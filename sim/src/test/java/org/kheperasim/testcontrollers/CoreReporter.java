@@ -6,7 +6,8 @@ import org.kheperasim.api.CurrentRobotState;
 import org.kheperasim.api.MessagePasser;
 
 /**
- * Sleeps five times (so it has waited for its turn), starts a thread that sleeps 20 s of real time,
+ * Sleeps five times (so it has waited for its turn), starts a thread that sleeps 90 s of real time
+ * (a daemon: it outlives the test's look at it on a machine however busy),
  * then reports the cores the operating system lets its own thread run on (Linux; a trusted run,
  * since it reads a file). CpuAffinityTest.
  */
@@ -26,7 +27,7 @@ public class CoreReporter extends Thread {
             // A thread it creates now starts on its core too (Linux hands the cores down); it outlives the run.
             Thread child = new Thread(() -> {
                 try {
-                    Thread.sleep(20_000);
+                    Thread.sleep(90_000);
                 } catch (InterruptedException e) {
                     // ends
                 }

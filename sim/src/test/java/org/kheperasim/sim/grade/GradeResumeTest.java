@@ -150,8 +150,15 @@ class GradeResumeTest {
         }
     }
 
+    /**
+     * Simulated seconds a run: long enough that the runs after the one the test waits for are still going
+     * when it looks (grade journals, judges and starts runs beside each other, and on a busy machine the
+     * test's own polling may lag a whole run behind).
+     */
+    private static final double SECONDS = 60;
+
     private static Grader.Options options(Path subs, Path out, boolean box) {
-        return new Grader.Options(subs, List.of("maze"), 2, 2, out, GradePlan.Shard.ALL, 256, 120, 5, 20.0, false,
+        return new Grader.Options(subs, List.of("maze"), 2, 2, out, GradePlan.Shard.ALL, 256, 120, 5, SECONDS, false,
                 new PrintStream(OutputStream.nullOutputStream()), false, box, false);
     }
 
@@ -162,7 +169,7 @@ class GradeResumeTest {
     private static void interrupt(Path subs, Path out, boolean box, int runs, boolean kill9) throws Exception {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
                 System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main", "grade", "--submissions", subs.toString(),
-                "--arenas", "maze", "--seeds", "2", "--seconds", "20", "--jobs", "2", "--out", out.toString()));
+                "--arenas", "maze", "--seeds", "2", "--seconds", String.valueOf(SECONDS), "--jobs", "2", "--out", out.toString()));
         if (!box) {
             cmd.add("--no-sandbox");
         }

@@ -150,7 +150,7 @@ class CpuAffinityTest {
         assertTrue(cores.get(0).matches("cores \\d+"), "one core: " + cores);
         assertEquals(List.of(cores.get(0), cores.get(0), cores.get(0)), cores, "all on the same core");
         // After the run: the threads the controllers created from their pinned threads (alive for
-        // 20 s) are free again, and no thread of this process is kept on that core alone.
+        // 90 s) are free again, and no thread of this process is kept on that core alone.
         String core = cores.get(0).substring("cores ".length());
         Set<String> children = new HashSet<>();
         try (Stream<Path> tasks = Files.list(Path.of("/proc/self/task"))) {

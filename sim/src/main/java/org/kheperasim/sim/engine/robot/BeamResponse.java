@@ -71,6 +71,19 @@ public final class BeamResponse {
         robot = kind(tables.robot(), sensors, rayDeg);
     }
 
+    /**
+     * The beams' response of a robot: its measured tables when it has some, else the kind's response.
+     *
+     * @param type the robot (its sensors, and what was measured on it)
+     * @param response the proximity response the run uses (the robot's, or the settings' in its place)
+     * @param reflectance by kind of object, the wall being the reference
+     * @return its beams' response
+     */
+    public static BeamResponse of(RobotType type, Response response, double[] reflectance) {
+        return new BeamResponse(response, reflectance, type.measured() == null ? null : type.measured().tables(),
+                type.sensorCount());
+    }
+
     /** @return how far the beams reach, mm: the robot's response's range */
     public double rangeMm() {
         return range;

@@ -101,8 +101,7 @@ public final class ProximitySensing {
         this.coneMid = range / (2 * StrictMath.cos(StrictMath.toRadians(angles[angles.length - 1])));
         this.noiseScale = new double[count];
         this.armBlinds = new boolean[count];
-        this.response = new BeamResponse(response, p.reflectance(),
-                model.type().measured() == null ? null : model.type().measured().tables(), count);
+        this.response = BeamResponse.of(model.type(), response, p.reflectance());
         this.gain = calibration.proxGain;
         this.offset = calibration.proxOffset;
         for (int i = 0; i < count; i++) {
