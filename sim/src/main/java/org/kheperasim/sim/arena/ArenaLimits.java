@@ -3,21 +3,22 @@ package org.kheperasim.sim.arena;
 /**
  * The largest arena the simulator reads, and the range of every quantity in an arena file. They
  * keep any file, however made, from exhausting memory or time: the floor is drawn as a grid of
- * {@link OccupancyGrid#CELL_MM} cells with a distance field beside it (about 10 bytes a cell), so
- * the floor's area bounds the memory, and the walls' total area bounds the time to draw them.
+ * {@link OccupancyGrid#CELL_MM} cells (2 bytes a cell; the distance field beside it keeps only the
+ * tiles near walls), so the floor's area bounds the memory, and the walls' total area bounds the
+ * time to draw them.
  * Documented in {@code docs/arena-format.md}; the file reader checks them and names the line.
  */
 public final class ArenaLimits {
 
-    /** Longest side of an arena, mm (10 m). */
-    public static final double MAX_SIDE_MM = 10_000;
+    /** Longest side of an arena, mm (30 m). */
+    public static final double MAX_SIDE_MM = 30_000;
     /**
-     * Largest floor, mm² (50 m², e.g. 7.07 x 7.07 m: about 8.4 million grid cells; a swarm of 1,000 robots in 200 mm
-     * cells needs 40 m²).
+     * Largest floor, mm² (500 m², e.g. 22.4 x 22.4 m: about 84 million grid cells, 170 MB; a swarm of 10,000 robots in
+     * 200 mm cells needs 400 m²).
      */
-    public static final double MAX_AREA_MM2 = 50_000_000;
+    public static final double MAX_AREA_MM2 = 500_000_000;
     /** Most robots in one arena (each runs its own controller). */
-    public static final int MAX_ROBOTS = 1024;
+    public static final int MAX_ROBOTS = 16_384;
     /** Most walls in one arena file. */
     public static final int MAX_WALLS = 10_000;
     /** Most lamps. */

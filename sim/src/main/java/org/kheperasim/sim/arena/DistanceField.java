@@ -7,38 +7,54 @@ package org.kheperasim.sim.arena;
  * Caps move, so they take no part: the engine tests them one by one, as discs.
  *
  * <p>Computed in linear time by Felzenszwalb and Huttenlocher's method: the squared distance is
- * the lower envelope of parabolas, taken first down each column and then along each row, on a copy
- * of the grid padded by one obstacle cell on every side. A 500 x 500 grid takes a few
- * milliseconds. Queries are O(1) and allocate nothing.
+ * the lower envelope of parabolas, taken first down each column (here from the obstacles' runs of
+ * rows, {@link ObstacleRuns}) and then along each row, on the grid padded by one obstacle cell on
+ * every side. A 500 x 500 grid takes a few milliseconds.
+ *
+ * <p>Kept in tiles of {@value #TILE} x {@value #TILE} cells, and only the tiles within
+ * {@value #KEPT_CELLS} cells of an obstacle: memory grows with the walls, not with the floor. A cell
+ * of a tile not kept is farther than that from every obstacle; its lower bound ({@link
+ * #clearanceBelow}) is the saturated one, and its nearest obstacle is worked out from the runs when
+ * asked, the same cell the sweeps would have found (a test compares them cell by cell). Queries
+ * allocate nothing; those in kept tiles are O(1).
  *
  * <p>The field is a snapshot: after editing the grid's walls or lights call {@link #recompute()}.
- * Not thread-safe.
+ * Queries only read, so several threads may ask at once; {@link #recompute()} is not thread-safe.
  */
 public final class DistanceField {
 
     private static final int INF = Integer.MAX_VALUE;
+    /** Cells along a tile's side, and its power of two. */
+    static final int TILE = 64;
+    private static final int TILE_SHIFT = 6;
+    private static final int TILE_MASK = TILE - 1;
+    /**
+     * A tile is kept when one of its cells is within this many cells (about 312 mm) of an obstacle:
+     * more than the 155 mm where {@link #clearanceBelow} saturates, so that a robot's contacts and
+     * most of its clearance look-ups stay in kept tiles.
+     */
+    static final int KEPT_CELLS = 128;
 
     private final OccupancyGrid grid;
     /** Padded width and height: the grid plus one obstacle cell on every side. */
     private final int pw;
     private final int ph;
-    /** Squared distance in cells from each padded cell's centre to its nearest obstacle centre. */
-    private int[] dist2;
+    private final int tilesAcross;
+    /** The obstacles as runs: the column sweeps read them, and the cells of tiles not kept ask them. */
+    private ObstacleRuns runs;
     /**
-     * For each padded cell, the lower bound of the clearance that {@link #clearanceBelow} returns
-     * for a point in it, in steps of {@link #BELOW_STEP_MM} (unsigned, saturating): a byte, so that
-     * the table is a quarter of the grid's size and stays in the cache.
+     * Per tile (row-major), for each of its padded cells, the lower bound of the clearance that
+     * {@link #clearanceBelow} returns for a point in it, in steps of {@link #BELOW_STEP_MM}
+     * (unsigned, saturating); null where the tile is not kept (all saturated).
      */
-    private byte[] below;
+    private byte[][] below;
     /**
-     * Padded column and row of each padded cell's nearest obstacle cell, packed as
-     * {@code row << 16 | col} (a grid has fewer than 65,534 columns), so reading them takes no division.
+     * Per tile, each padded cell's nearest obstacle cell, packed as {@code row << 16 | col} (padded;
+     * a grid has fewer than 65,534 columns), so reading it takes no division; null where not kept.
      */
-    private int[] nearest;
-    /** The three arrays above are shared with the field this one was copied from until it is recomputed. */
-    private boolean shared;
+    private int[][] nearest;
 
-    // Scratch for the one-dimensional transform and the column sweeps, a row long.
+    // Scratch for the one-dimensional transform, a row long.
     private final int[] f;
     private final int[] out;
     private final int[] arg;
@@ -46,11 +62,7 @@ public final class DistanceField {
     private final double[] bound;
     private final int[] lineNearest;
 
-    private DistanceField(OccupancyGrid grid) {
-        this(grid, null);
-    }
-
-    /** @param from a field of a grid with the same cells, whose arrays this one shares; null to make its own */
+    /** @param from a field of a grid with the same cells, whose tiles this one shares; null to make its own */
     private DistanceField(OccupancyGrid grid, DistanceField from) {
         this.grid = grid;
         this.pw = grid.cols() + 2;
@@ -59,11 +71,12 @@ public final class DistanceField {
             throw new IllegalArgumentException("a distance field holds at most 65,533 x 65,533 cells, not "
                     + grid.cols() + " x " + grid.rows());
         }
-        this.dist2 = from != null ? from.dist2 : new int[pw * ph];
-        this.below = from != null ? from.below : new byte[pw * ph];
-        this.nearest = from != null ? from.nearest : new int[pw * ph];
-        this.shared = from != null;
-        // Only rows go through the envelope, and the column sweeps keep one value per column.
+        this.tilesAcross = (pw + TILE - 1) >> TILE_SHIFT;
+        if (from != null) {
+            this.runs = from.runs;
+            this.below = from.below;
+            this.nearest = from.nearest;
+        }
         this.f = new int[pw];
         this.out = new int[pw];
         this.arg = new int[pw];
@@ -80,7 +93,7 @@ public final class DistanceField {
      * @return the field, up to date with the grid as it is now
      */
     public static DistanceField of(OccupancyGrid grid) {
-        DistanceField field = new DistanceField(grid);
+        DistanceField field = new DistanceField(grid, null);
         field.recompute();
         return field;
     }
@@ -96,84 +109,88 @@ public final class DistanceField {
         if (copy.cols() != grid.cols() || copy.rows() != grid.rows()) {
             throw new IllegalArgumentException("a field's copy needs a grid of the same size");
         }
-        // Shared until the copy is recomputed (an edit); this one must not be recomputed after.
+        // The tiles are never written after they are made: a recompute makes new ones.
         return new DistanceField(copy, this);
     }
 
-    /** Recomputes the whole field from the grid's current cells, reusing all storage. */
+    /** Recomputes the whole field from the grid's current cells, in new tiles. */
     public void recompute() {
-        if (shared) {
-            dist2 = new int[dist2.length];
-            below = new byte[below.length];
-            nearest = new int[nearest.length];
-            shared = false;
+        runs = ObstacleRuns.of(grid);
+        int tilesDown = (ph + TILE - 1) >> TILE_SHIFT;
+        below = new byte[tilesAcross * tilesDown][];
+        nearest = new int[tilesAcross * tilesDown][];
+        int[] run = new int[pw];
+        for (int x = 0; x < pw; x++) {
+            run[x] = runs.firstRun(x);
         }
-        // Pass 1, down each padded column: distance to the nearest obstacle in the same column (the
-        // one above on a tie). Obstacles have no extent here, so two sweeps over the rows find it,
-        // reading the grid in its own order: downwards the nearest above, upwards the nearest below.
-        // (A method per row, so that a cold JVM compiles it soon.)
-        for (int y = 0; y < ph; y++) {
-            nearestAbove(y);
-        }
-        for (int y = ph - 1; y >= 0; y--) {
-            nearestBelow(y);
-        }
-        // Pass 2, along each padded row: combine the column distances.
-        for (int y = 0; y < ph; y++) {
-            combineRow(y * pw);
-            belowRow(y * pw);
+        int[] bandNearest = new int[TILE * pw];
+        byte[] bandBelow = new byte[TILE * pw];
+        int[] tileLeast = new int[tilesAcross];
+        for (int ty = 0; ty < tilesDown; ty++) {
+            java.util.Arrays.fill(tileLeast, INF);
+            int y0 = ty << TILE_SHIFT;
+            int y1 = StrictMath.min(ph, y0 + TILE);
+            for (int y = y0; y < y1; y++) {
+                sweepRow(y, run);
+                int base = (y - y0) * pw;
+                for (int x = 0; x < pw; x++) {
+                    int q = arg[x];
+                    int d2 = out[x];
+                    bandNearest[base + x] = lineNearest[q] << 16 | q;
+                    bandBelow[base + x] = d2 < BELOW_OF.length ? BELOW_OF[d2] : (byte) 255;
+                    if (d2 < tileLeast[x >> TILE_SHIFT]) {
+                        tileLeast[x >> TILE_SHIFT] = d2;
+                    }
+                }
+            }
+            keepTiles(ty, y1 - y0, tileLeast, bandNearest, bandBelow);
         }
     }
 
-    /** Pass 2 along the row starting at {@code base}: the nearest obstacle of all the columns'. */
-    private void combineRow(int base) {
+    /** Padded row y: the columns' nearest obstacles from the runs, then their lower envelope along the row. */
+    private void sweepRow(int y, int[] run) {
         for (int x = 0; x < pw; x++) {
-            f[x] = dist2[base + x];
-            lineNearest[x] = nearest[base + x];
+            int r = runs.advance(x, run[x], y);
+            run[x] = r;
+            long c = runs.nearestInColumn(r, y);
+            f[x] = (int) (c >>> 32);
+            lineNearest[x] = (int) c;
         }
         envelope(pw);
-        for (int x = 0; x < pw; x++) {
-            int q = arg[x];
-            dist2[base + x] = out[x];
-            nearest[base + x] = lineNearest[q] << 16 | q;
+    }
+
+    /** Keeps the tiles of tile row {@code ty} that have a cell within {@link #KEPT_CELLS} of an obstacle. */
+    private void keepTiles(int ty, int bandRows, int[] tileLeast, int[] bandNearest, byte[] bandBelow) {
+        for (int tx = 0; tx < tilesAcross; tx++) {
+            if (tileLeast[tx] >= KEPT_CELLS * KEPT_CELLS) {
+                continue;
+            }
+            int[] n = new int[TILE * TILE];
+            byte[] b = new byte[TILE * TILE];
+            int x0 = tx << TILE_SHIFT;
+            int w = StrictMath.min(pw, x0 + TILE) - x0;
+            for (int r = 0; r < bandRows; r++) {
+                System.arraycopy(bandNearest, r * pw + x0, n, r << TILE_SHIFT, w);
+                System.arraycopy(bandBelow, r * pw + x0, b, r << TILE_SHIFT, w);
+            }
+            nearest[ty * tilesAcross + tx] = n;
+            below[ty * tilesAcross + tx] = b;
         }
     }
 
-    /** Row y of pass 1, downwards: {@code lineNearest[x]} is the last obstacle row seen in column x. */
-    private void nearestAbove(int y) {
-        int base = y * pw;
-        for (int x = 0; x < pw; x++) {
-            if (isObstacle(x, y)) {
-                lineNearest[x] = y;
-            }
-            long d = y - lineNearest[x];   // row 0 is padding: an obstacle above is always found
-            // Far above, the square may pass an int's range; the obstacle below is then nearer (the
-            // nearest of the two is at most half a column away, 32,767 cells) and replaces it.
-            dist2[base + x] = (int) StrictMath.min(d * d, Integer.MAX_VALUE);
-            nearest[base + x] = lineNearest[x];   // for now: the obstacle's row
-        }
+    /** @return the nearest obstacle of padded cell (px, py), packed as {@link #nearest} keeps it */
+    private int nearestOf(int px, int py) {
+        int[] tile = nearest[(py >> TILE_SHIFT) * tilesAcross + (px >> TILE_SHIFT)];
+        return tile != null ? tile[(py & TILE_MASK) << TILE_SHIFT | px & TILE_MASK] : runs.nearest(px, py);
     }
 
-    /** Row y of pass 1, upwards: an obstacle below that is strictly nearer replaces the one above. */
-    private void nearestBelow(int y) {
-        int base = y * pw;
-        for (int x = 0; x < pw; x++) {
-            if (dist2[base + x] == 0) {
-                lineNearest[x] = y;
-            }
-            long d = lineNearest[x] - y;   // the last row is padding too
-            if (d * d < dist2[base + x]) {
-                dist2[base + x] = (int) (d * d);
-                nearest[base + x] = lineNearest[x];
-            }
+    /** @return how many tiles the field keeps, and how many it has in all (for tests and figures) */
+    int[] tilesKept() {
+        int kept = 0;
+        for (int[] t : nearest) {
+            kept += t != null ? 1 : 0;
         }
-    }
-
-    private void belowRow(int base) {
-        for (int i = base; i < base + pw; i++) {
-            int d2 = dist2[i];
-            below[i] = d2 < BELOW_OF.length ? BELOW_OF[d2] : (byte) 255;
-        }
+        return new int[] {kept, nearest.length};
     }
 
     /**
@@ -191,7 +208,7 @@ public final class DistanceField {
         if (c < 0 || r < 0 || c >= grid.cols() || r >= grid.rows()) {
             return 0;
         }
-        int n = nearest[(r + 1) * pw + c + 1];
+        int n = nearestOf(c + 1, r + 1);
         double left = ((n & 0xFFFF) - 1) * OccupancyGrid.CELL_MM;
         double bottom = ((n >>> 16) - 1) * OccupancyGrid.CELL_MM;
         double dx = Math.max(0, Math.max(left - x, x - (left + OccupancyGrid.CELL_MM)));
@@ -217,7 +234,11 @@ public final class DistanceField {
             return 0;
         }
         // The point may lie a rounding error outside cell (c, r): the hair covers that too.
-        return (below[(r + 1) * pw + c + 1] & 0xFF) * BELOW_STEP_MM;
+        int px = c + 1;
+        int py = r + 1;
+        byte[] tile = below[(py >> TILE_SHIFT) * tilesAcross + (px >> TILE_SHIFT)];
+        int steps = tile == null ? 255 : tile[(py & TILE_MASK) << TILE_SHIFT | px & TILE_MASK] & 0xFF;
+        return steps * BELOW_STEP_MM;
     }
 
     private static final double INV_CELL = 1 / OccupancyGrid.CELL_MM;
@@ -260,9 +281,8 @@ public final class DistanceField {
         }
         double best = Double.POSITIVE_INFINITY;
         for (int dr = 0; dr <= 2; dr++) {
-            int base = (r + dr) * pw + c;
             for (int dc = 0; dc <= 2; dc++) {
-                int n = nearest[base + dc];
+                int n = nearestOf(c + dc, r + dr);
                 double left = ((n & 0xFFFF) - 1) * OccupancyGrid.CELL_MM;
                 double bottom = ((n >>> 16) - 1) * OccupancyGrid.CELL_MM;
                 double dx = Math.max(0, Math.max(left - x, x - (left + OccupancyGrid.CELL_MM)));
@@ -289,7 +309,7 @@ public final class DistanceField {
         if (c < 0 || r < 0 || c >= grid.cols() || r >= grid.rows()) {
             return grid.cellCentreX(c);
         }
-        return grid.cellCentreX((nearest[(r + 1) * pw + c + 1] & 0xFFFF) - 1);
+        return grid.cellCentreX((nearestOf(c + 1, r + 1) & 0xFFFF) - 1);
     }
 
     /**
@@ -304,16 +324,7 @@ public final class DistanceField {
         if (c < 0 || r < 0 || c >= grid.cols() || r >= grid.rows()) {
             return grid.cellCentreY(r);
         }
-        return grid.cellCentreY((nearest[(r + 1) * pw + c + 1] >>> 16) - 1);
-    }
-
-    private boolean isObstacle(int px, int py) {
-        return px == 0 || py == 0 || px == pw - 1 || py == ph - 1
-                || isFixed(grid.id(px - 1, py - 1));
-    }
-
-    private static boolean isFixed(int id) {
-        return id != OccupancyGrid.FLOOR && id < OccupancyGrid.FIRST_CAP;
+        return grid.cellCentreY((nearestOf(c + 1, r + 1) >>> 16) - 1);
     }
 
     /**

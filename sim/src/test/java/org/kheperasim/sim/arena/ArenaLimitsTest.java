@@ -27,11 +27,11 @@ class ArenaLimitsTest {
     static Stream<Arguments> beyondTheLimits() {
         return Stream.of(
                 bad("the 60-byte file that ran out of memory", "khepera-arena 1\nsize 100000 100000\nrobot 50 50 0\n", 2,
-                        "arena size 100000 x 100000 mm is too large: each side may be at most 10000 mm"),
+                        "arena size 100000 x 100000 mm is too large: each side may be at most 30000 mm"),
                 bad("the height that overflowed the grid", "khepera-arena 1\nsize 1219.2 2147483648\nrobot 50 50 0\n", 2,
                         "arena size 1219.2 x 2147483648 mm is too large"),
-                bad("floor larger than 50 m²", "khepera-arena 1\nsize 10000 9000\nrobot 50 50 0\n", 2,
-                        "the floor may be at most 50 m²"),
+                bad("floor larger than 500 m²", "khepera-arena 1\nsize 30000 17000\nrobot 50 50 0\n", 2,
+                        "the floor may be at most 500 m²"),
                 bad("wall too thick", HEAD + "wall 0 900 900 900 1001\n", 4, "wall thickness is 1001; it may be at most 1000 mm"),
                 bad("heading beyond a turn", HEAD.replace("robot 500 500 0", "robot 500 500 361"), 3,
                         "robot heading is 361 degrees; give an angle from -360 to 360"),
@@ -42,9 +42,9 @@ class ArenaLimitsTest {
                 bad("cap too large", HEAD + "cap 900 900 radius 51\n", 4, "cap radius is 51; it may be at most 50 mm"),
                 bad("number too long", HEAD + "cap 900 " + "9".repeat(1001) + "\n", 4, "longer than 1000 characters"),
                 bad("name too long", HEAD + "name " + "n".repeat(101) + "\n", 4, "at most 100 letters"),
-                bad("too many robots", "khepera-arena 1\nsize 2100 2100\n"
-                        + repeat(1025, i -> "robot " + (40 + 60 * (i % 33)) + " " + (40 + 60 * (i / 33)) + " 0\n"),
-                        2 + 1025, "too many robots: an arena may have at most 1024"),
+                bad("too many robots", "khepera-arena 1\nsize 7800 7800\n"
+                        + repeat(16_385, i -> "robot " + (40 + 60 * (i % 128)) + " " + (40 + 60 * (i / 128)) + " 0\n"),
+                        2 + 16_385, "too many robots: an arena may have at most 16384"),
                 bad("too many caps", HEAD + repeat(1001, i -> "cap 900 900\n"), 4 + 1000, "too many caps: an arena may have at most 1000"),
                 bad("too many lights", HEAD + repeat(257, i -> "light 900 900\n"), 4 + 256, "too many lights"),
                 bad("too many regions", HEAD + repeat(1001, i -> "region r" + i + " 0 0 10 10\n"), 4 + 1000, "too many regions"),

@@ -88,6 +88,59 @@ class DistanceFieldTest {
         }
     }
 
+    /**
+     * Far from every wall the field keeps no tiles and works a cell's nearest obstacle out when asked:
+     * it is the very cell the sweeps find, the nearest by centres, on a tie the leftmost column and in
+     * it the upper row (checked against every obstacle cell, in kept tiles and in the others).
+     */
+    @Test
+    void cellsOfTilesNotKeptHaveTheNearestObstacleTheSweepsFind() {
+        OccupancyGrid g = new OccupancyGrid(430, 400);
+        g.set(400, 380, WALL);
+        for (int c = 100; c < 140; c++) {
+            g.set(c, 20, WALL);   // a wall, and ties along it
+        }
+        DistanceField df = DistanceField.of(g);
+        int[] kept = df.tilesKept();
+        assertTrue(kept[0] > 0 && kept[0] < kept[1], "some tiles kept, some not: " + kept[0] + " of " + kept[1]);
+        java.util.List<int[]> obstacles = new java.util.ArrayList<>();
+        for (int r = -1; r <= g.rows(); r++) {
+            for (int c = -1; c <= g.cols(); c++) {
+                if (fixed(g.id(c, r))) {
+                    obstacles.add(new int[] {c, r});
+                }
+            }
+        }
+        for (int r = 0; r < g.rows(); r++) {
+            for (int c = 0; c < g.cols(); c++) {
+                long best = Long.MAX_VALUE;
+                int[] at = null;
+                for (int[] o : obstacles) {
+                    long d = (long) (o[0] - c) * (o[0] - c) + (long) (o[1] - r) * (o[1] - r);
+                    if (d < best || d == best && (o[0] < at[0] || o[0] == at[0] && o[1] < at[1])) {
+                        best = d;
+                        at = o;
+                    }
+                }
+                double x = g.cellCentreX(c);
+                double y = g.cellCentreY(r);
+                assertEquals(g.cellCentreX(at[0]), df.nearestObstacleX(x, y), EPS, "cell " + c + "," + r);
+                assertEquals(g.cellCentreY(at[1]), df.nearestObstacleY(x, y), EPS, "cell " + c + "," + r);
+            }
+        }
+    }
+
+    /** Open floor keeps only the tiles near its edges: a 6.3 m square (a swarm of 1,000) keeps under a quarter. */
+    @Test
+    void openFloorKeepsOnlyTheTilesNearItsWalls() {
+        DistanceField df = DistanceField.of(new OccupancyGrid(2600, 2600));
+        int[] kept = df.tilesKept();
+        assertTrue(kept[0] * 4 < kept[1], kept[0] + " of " + kept[1] + " tiles kept");
+        double mid = 1300.5 * CELL_MM;
+        assertEquals(1299.5 * CELL_MM, df.clearance(mid, mid), EPS);
+        assertEquals(255 * CELL_MM / 4, df.clearanceBelow(mid, mid), EPS);
+    }
+
     /** A column longer than 46,340 cells: a distance's square there passes an int's range. */
     @Test
     void aVeryLongColumnFindsItsNearestObstacle() {

@@ -61,9 +61,8 @@ public final class Coverage {
         this.world = world;
         this.grid = world.grid();
         this.tilesAcross = (grid.cols() + TILE - 1) >> TILE_SHIFT;
-        int tilesDown = (grid.rows() + TILE - 1) >> TILE_SHIFT;
-        this.tiles = new Tiles(tilesAcross, tilesDown);
-        this.centres = new Tiles(tilesAcross, tilesDown);
+        this.tiles = new Tiles(tilesAcross);
+        this.centres = new Tiles(tilesAcross);
         this.regions = world.arena().regions();
         this.entered = new long[regions.size()];
         Arrays.fill(entered, -1);
@@ -195,23 +194,20 @@ public final class Coverage {
         if (world.freeCells() == 0) {
             return 0;
         }
-        int visitedFree = 0;
-        for (int t = tiles.next(0); t >= 0; t = tiles.next(t + 1)) {
-            long[] tile = tiles.at(t);
-            int col0 = (t % tilesAcross) << TILE_SHIFT;
-            int row0 = (t / tilesAcross) << TILE_SHIFT;
+        int[] visitedFree = new int[1];
+        tiles.forEach((tile, col0, row0) -> {
             for (int w = 0; w < tile.length; w++) {
                 long bits = tile[w];
                 while (bits != 0) {
                     int bit = (w << 6) + Long.numberOfTrailingZeros(bits);
                     bits &= bits - 1;
                     if (grid.id(col0 + (bit & (TILE - 1)), row0 + (bit >> TILE_SHIFT)) == OccupancyGrid.FLOOR) {
-                        visitedFree++;
+                        visitedFree[0]++;
                     }
                 }
             }
-        }
-        return 100.0 * visitedFree / world.freeCells();
+        });
+        return 100.0 * visitedFree[0] / world.freeCells();
     }
 
     /** @return the regions entered, with the first entry's simulated time in seconds, in arena order */
@@ -226,33 +222,31 @@ public final class Coverage {
     }
 
     /**
-     * A bitmap's tiles, allocated on first use, behind a directory of blocks of 8 x 8 tiles, also
-     * allocated on first use: a robot of a large arena (a swarm's, 6.4 m a side: 83 x 83 tiles) pays
-     * for the blocks it has been in, not a reference per tile of the whole floor (55 KB a robot).
+     * A bitmap's tiles, allocated on first use, in blocks of 8 x 8 tiles, also allocated on first use
+     * and found through a small hash table of the blocks made: a robot pays for the blocks it has been
+     * in, not for the floor (a swarm of 10,000 robots has 33 x 33 blocks a side, which as a directory
+     * would cost every robot 9 KB).
      */
     private static final class Tiles {
         private static final int BLOCK_SHIFT = 3;
         private static final int BLOCK = 1 << BLOCK_SHIFT;
-        private final int across;
-        private final int down;
         private final int blocksAcross;
-        private final long[][][] blocks;
+        /** Open addressing: the block's index + 1 (0: empty slot), and the block. */
+        private int[] keys = new int[8];
+        private long[][][] blocks = new long[8][][];
+        private int size;
+        /** The last block asked for, and its index. */
+        private long[][] lastBlock;
+        private int lastKey = -1;
 
-        Tiles(int across, int down) {
-            this.across = across;
-            this.down = down;
+        Tiles(int across) {
             this.blocksAcross = (across + BLOCK - 1) >> BLOCK_SHIFT;
-            this.blocks = new long[blocksAcross * ((down + BLOCK - 1) >> BLOCK_SHIFT)][][];
         }
 
         /** @return tile (tc, tr), made empty if it was not there */
         long[] make(int tc, int tr) {
             int b = (tr >> BLOCK_SHIFT) * blocksAcross + (tc >> BLOCK_SHIFT);
-            long[][] block = blocks[b];
-            if (block == null) {
-                block = new long[BLOCK * BLOCK][];
-                blocks[b] = block;
-            }
+            long[][] block = b == lastKey ? lastBlock : block(b);
             int k = ((tr & (BLOCK - 1)) << BLOCK_SHIFT) | (tc & (BLOCK - 1));
             long[] tile = block[k];
             if (tile == null) {
@@ -262,31 +256,68 @@ public final class Coverage {
             return tile;
         }
 
-        /** @param t a tile's index (row-major over the tiles) @return the tile, or null when never made */
-        long[] at(int t) {
-            int tc = t % across;
-            int tr = t / across;
-            long[][] block = blocks[(tr >> BLOCK_SHIFT) * blocksAcross + (tc >> BLOCK_SHIFT)];
-            return block == null ? null : block[((tr & (BLOCK - 1)) << BLOCK_SHIFT) | (tc & (BLOCK - 1))];
+        /** @return block b, made empty if it was not there (and remembered as the last one) */
+        private long[][] block(int b) {
+            int mask = keys.length - 1;
+            int slot = (b * 0x9E3779B9 >>> 16) & mask;
+            while (keys[slot] != 0 && keys[slot] != b + 1) {
+                slot = (slot + 1) & mask;
+            }
+            if (keys[slot] == 0) {
+                if (2 * (size + 1) > keys.length) {
+                    grow();
+                    return block(b);
+                }
+                keys[slot] = b + 1;
+                blocks[slot] = new long[BLOCK * BLOCK][];
+                size++;
+            }
+            lastKey = b;
+            lastBlock = blocks[slot];
+            return lastBlock;
         }
 
-        /** @return the index of the first tile made at index {@code from} or after it, -1 when none */
-        int next(int from) {
-            int count = across * down;
-            for (int t = from; t < count; t++) {
-                int tc = t % across;
-                int tr = t / across;
-                if (blocks[(tr >> BLOCK_SHIFT) * blocksAcross + (tc >> BLOCK_SHIFT)] == null) {
-                    // Skip the rest of this block's row of tiles.
-                    t = tr * across + StrictMath.min(across, ((tc >> BLOCK_SHIFT) + 1) << BLOCK_SHIFT) - 1;
-                    continue;
-                }
-                if (at(t) != null) {
-                    return t;
+        private void grow() {
+            int[] oldKeys = keys;
+            long[][][] oldBlocks = blocks;
+            keys = new int[oldKeys.length * 2];
+            blocks = new long[keys.length][][];
+            int mask = keys.length - 1;
+            for (int i = 0; i < oldKeys.length; i++) {
+                if (oldKeys[i] != 0) {
+                    int slot = ((oldKeys[i] - 1) * 0x9E3779B9 >>> 16) & mask;
+                    while (keys[slot] != 0) {
+                        slot = (slot + 1) & mask;
+                    }
+                    keys[slot] = oldKeys[i];
+                    blocks[slot] = oldBlocks[i];
                 }
             }
-            return -1;
         }
+
+        /** Calls {@code visit} with every tile made and its first column and row, in no set order. */
+        void forEach(TileVisitor visit) {
+            for (int i = 0; i < keys.length; i++) {
+                if (keys[i] == 0) {
+                    continue;
+                }
+                int b = keys[i] - 1;
+                int bc = (b % blocksAcross) << BLOCK_SHIFT;
+                int br = (b / blocksAcross) << BLOCK_SHIFT;
+                long[][] block = blocks[i];
+                for (int k = 0; k < block.length; k++) {
+                    if (block[k] != null) {
+                        int tc = bc + (k & (BLOCK - 1));
+                        int tr = br + (k >> BLOCK_SHIFT);
+                        visit.tile(block[k], tc << TILE_SHIFT, tr << TILE_SHIFT);
+                    }
+                }
+            }
+        }
+    }
+
+    private interface TileVisitor {
+        void tile(long[] bits, int col0, int row0);
     }
 
     private static int[] footprint(double cell, double radius) {
