@@ -31,6 +31,8 @@ public final class OccupancyGrid {
     private final int rows;
     /** The cells; shared with the grid this one was copied from until this one first changes one. */
     private short[] cells;
+    /** Which cells are {@link #FLOOR}, kept with every write; shared as {@link #cells} are. */
+    private FloorBits floor;
     private boolean shared;
 
     /**
@@ -46,6 +48,7 @@ public final class OccupancyGrid {
         this.cols = cols;
         this.rows = rows;
         this.cells = new short[Math.multiplyExact(cols, rows)];
+        this.floor = new FloorBits(cols, rows);
     }
 
     /**
@@ -68,14 +71,15 @@ public final class OccupancyGrid {
      *     are copied only when either grid first changes one, and this one must not change after
      */
     public OccupancyGrid copy() {
-        OccupancyGrid g = new OccupancyGrid(cols, rows, cells);
+        OccupancyGrid g = new OccupancyGrid(cols, rows, cells, floor);
         return g;
     }
 
-    private OccupancyGrid(int cols, int rows, short[] sharedCells) {
+    private OccupancyGrid(int cols, int rows, short[] sharedCells, FloorBits sharedFloor) {
         this.cols = cols;
         this.rows = rows;
         this.cells = sharedCells;
+        this.floor = sharedFloor;
         this.shared = true;
     }
 
@@ -83,6 +87,7 @@ public final class OccupancyGrid {
     private void own() {
         if (shared) {
             cells = cells.clone();
+            floor = floor.copy();
             shared = false;
         }
     }
@@ -102,6 +107,7 @@ public final class OccupancyGrid {
         }
         own();
         java.util.Arrays.fill(cells, (short) FLOOR);
+        floor.fill();
         paint(arena);
     }
 
@@ -167,6 +173,11 @@ public final class OccupancyGrid {
         return cells[row * cols + col];
     }
 
+    /** @return which cells are floor, as they are now (read only; it follows the grid's writes) */
+    public FloorBits floorBits() {
+        return floor;
+    }
+
     /**
      * @param x point, mm
      * @param y point, mm
@@ -195,6 +206,7 @@ public final class OccupancyGrid {
         }
         own();
         cells[row * cols + col] = (short) id;
+        floor.set(col, row, id == FLOOR);
     }
 
     /**
@@ -387,6 +399,7 @@ public final class OccupancyGrid {
                 if (cells[i] == id) {
                     own();
                     cells[i] = FLOOR;
+                    floor.set(c, r, true);
                 }
             }
         }
@@ -421,6 +434,7 @@ public final class OccupancyGrid {
         if (cells[i] == FLOOR) {
             own();
             cells[i] = (short) id;
+            floor.set(col, row, id == FLOOR);
         }
     }
 

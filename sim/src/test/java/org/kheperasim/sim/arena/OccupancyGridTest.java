@@ -14,6 +14,38 @@ import org.junit.jupiter.api.Test;
 
 class OccupancyGridTest {
 
+    /**
+     * The floor bits follow every write: walls and lamps drawn, caps painted and erased, cells set, a
+     * repaint; and a copy's writes leave the original's bits as they were.
+     */
+    @Test
+    void floorBitsFollowEveryWrite() {
+        Arena arena = ArenaFormat.parse("khepera-arena 1\nsize 300 200\nrobot 50 50 0\nwall 0 100 200 100 8\n"
+                + "light 250 150 radius 20\ncap 100 40\n", "bits");
+        OccupancyGrid g = OccupancyGrid.of(arena);
+        assertFloorBits(g);
+        OccupancyGrid copy = g.copy();
+        copy.eraseCap(0, 100, 40, 15);
+        copy.paintCap(0, 60, 160, 15);
+        copy.set(3, 4, WALL);
+        copy.set(40, 41, FLOOR);
+        assertFloorBits(copy);
+        assertFloorBits(g);
+        copy.repaint(arena);
+        assertFloorBits(copy);
+    }
+
+    private static void assertFloorBits(OccupancyGrid g) {
+        FloorBits bits = g.floorBits();
+        for (int r = 0; r < g.rows(); r++) {
+            for (int c = 0; c < g.cols(); c++) {
+                int bit = (r % FloorBits.TILE) * FloorBits.TILE + c % FloorBits.TILE;
+                long word = bits.word(c / FloorBits.TILE, r / FloorBits.TILE, bit / 64);
+                assertEquals(g.id(c, r) == FLOOR, (word >>> (bit % 64) & 1) == 1, "cell " + c + "," + r);
+            }
+        }
+    }
+
     private static final double EPS = 1e-9;
 
     private static Arena arena(double w, double h, List<Wall> walls, List<Light> lights, List<Cap> caps) {

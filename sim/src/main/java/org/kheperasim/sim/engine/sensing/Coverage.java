@@ -4,6 +4,7 @@ import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.kheperasim.sim.arena.FloorBits;
 import org.kheperasim.sim.arena.OccupancyGrid;
 import org.kheperasim.sim.arena.Region;
 import org.kheperasim.sim.engine.space.World;
@@ -22,8 +23,8 @@ import org.kheperasim.sim.engine.space.World;
  * yet entered, so the entry time is the same however it steps.
  */
 public final class Coverage {
-    private static final int TILE_SHIFT = 5;
-    private static final int TILE = 1 << TILE_SHIFT;
+    private static final int TILE_SHIFT = FloorBits.TILE_SHIFT;
+    private static final int TILE = FloorBits.TILE;
     /** The body's footprint in cells, as (dc, dr) pairs, and its leading edge for each of the 8 steps. */
     private final int[] footprint;
     private final int[][] edges;
@@ -42,6 +43,14 @@ public final class Coverage {
     private long[] entered;
     /** How many regions are not entered yet: once all are, no move needs to look at them. */
     private int unentered;
+    /**
+     * Where {@link #freeTravelMm} last looked, and what it found (negative: nothing to go by): a centre
+     * nearer that place than that, less {@link #ANCHOR_MARGIN_MM} for rounding, is in no region not entered.
+     */
+    private double anchorX;
+    private double anchorY;
+    private double anchorFree = -1;
+    private static final double ANCHOR_MARGIN_MM = 1e-6;
 
     /**
      * @param world the world
@@ -55,9 +64,10 @@ public final class Coverage {
      * @param radius the body's radius, mm
      */
     public Coverage(World world, double startX, double startY, double radius) {
-        this.footprint = footprint(OccupancyGrid.CELL_MM, radius);
-        this.edges = edges(footprint);
-        this.reach = reach(footprint);
+        Shape shape = SHAPES.computeIfAbsent(radius, Shape::of);
+        this.footprint = shape.footprint();
+        this.edges = shape.edges();
+        this.reach = shape.reach();
         this.world = world;
         this.grid = world.grid();
         this.tilesAcross = (grid.cols() + TILE - 1) >> TILE_SHIFT;
@@ -144,10 +154,21 @@ public final class Coverage {
         if (unentered == 0) {
             return;
         }
+        if (anchorFree > ANCHOR_MARGIN_MM) {
+            // Nearer the last place freeTravelMm looked from than the nearest region not yet entered was:
+            // still outside them all.
+            double dx = x - anchorX;
+            double dy = y - anchorY;
+            double within = anchorFree - ANCHOR_MARGIN_MM;
+            if (dx * dx + dy * dy < within * within) {
+                return;
+            }
+        }
         for (int k = 0; k < entered.length; k++) {
             if (entered[k] < 0 && regions.get(k).contains(x, y)) {
                 entered[k] = timeNanos;
                 unentered--;
+                anchorFree = -1;
             }
         }
     }
@@ -166,6 +187,9 @@ public final class Coverage {
                 best = StrictMath.min(best, StrictMath.sqrt(dx * dx + dy * dy));
             }
         }
+        anchorX = x;
+        anchorY = y;
+        anchorFree = best;
         return best;
     }
 
@@ -183,6 +207,7 @@ public final class Coverage {
         }
         regions = edited;
         entered = next;
+        anchorFree = -1;
         unentered = 0;
         for (long t : next) {
             unentered += t < 0 ? 1 : 0;
@@ -194,17 +219,12 @@ public final class Coverage {
         if (world.freeCells() == 0) {
             return 0;
         }
+        // The floor bits share the tiles' layout: a word's covered floor cells are the bits both have.
+        FloorBits floor = grid.floorBits();
         int[] visitedFree = new int[1];
         tiles.forEach((tile, col0, row0) -> {
             for (int w = 0; w < tile.length; w++) {
-                long bits = tile[w];
-                while (bits != 0) {
-                    int bit = (w << 6) + Long.numberOfTrailingZeros(bits);
-                    bits &= bits - 1;
-                    if (grid.id(col0 + (bit & (TILE - 1)), row0 + (bit >> TILE_SHIFT)) == OccupancyGrid.FLOOR) {
-                        visitedFree[0]++;
-                    }
-                }
+                visitedFree[0] += Long.bitCount(tile[w] & floor.word(col0 >> TILE_SHIFT, row0 >> TILE_SHIFT, w));
             }
         });
         return 100.0 * visitedFree[0] / world.freeCells();
@@ -319,6 +339,17 @@ public final class Coverage {
     private interface TileVisitor {
         void tile(long[] bits, int col0, int row0);
     }
+
+    /** A body's footprint, its leading edges and its reach (never written after they are made). */
+    private record Shape(int[] footprint, int[][] edges, int reach) {
+        static Shape of(double radius) {
+            int[] disc = Coverage.footprint(OccupancyGrid.CELL_MM, radius);
+            return new Shape(disc, Coverage.edges(disc), Coverage.reach(disc));
+        }
+    }
+
+    /** The shapes made so far, by body radius: the same for every run of robots of that size. */
+    private static final Map<Double, Shape> SHAPES = new java.util.concurrent.ConcurrentHashMap<>();
 
     private static int[] footprint(double cell, double radius) {
         int reach = (int) StrictMath.ceil(radius / cell);
