@@ -18,8 +18,10 @@ import java.util.concurrent.TimeUnit;
  * Writes a text file that survives its process being killed: the text goes to the file under its
  * final name, in whole lines only, at least once every wall-clock second (a daemon thread does it
  * while the writer's owner is busy) and when the buffer fills, and all of it, flushed to the disk,
- * at {@link #close()}. After kill -9 the file holds every line written up to about a second before,
- * and never half a line; nothing has to be recovered or renamed.
+ * at {@link #close()}. After kill -9 the file holds every line written up to about a second before;
+ * nothing has to be renamed. Each write is of whole lines, but Linux ends a write to a file early, between
+ * two pages, when its process is killed, so a kill -9 that lands inside one (rare: one write in several
+ * hundred milliseconds of writing) leaves the last line torn; {@code TraceReader} names it.
  *
  * <p>The file is opened like any file (a symbolic link is followed, an existing file keeps its
  * permissions and is truncated). Thread-safe: one thread writes, the flusher and a shutdown hook may

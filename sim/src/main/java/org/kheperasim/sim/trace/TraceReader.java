@@ -72,7 +72,8 @@ public final class TraceReader {
         if (!text.isEmpty() && !text.endsWith("\n")) {
             int last = (int) text.chars().filter(c -> c == '\n').count() + 1;
             throw new TraceFormatException(source, last, "the last line is not whole (no line end); the writer was"
-                    + " stopped in the middle of a line");
+                    + " stopped in the middle of a line (a run killed while it wrote): delete that line to read"
+                    + " the rest");
         }
         String[] lines = text.split("\n", -1);
         String format = "# khepera-trace " + TraceWriter.FORMAT_VERSION;
