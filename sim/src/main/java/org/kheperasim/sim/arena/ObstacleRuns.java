@@ -11,18 +11,16 @@ package org.kheperasim.sim.arena;
  */
 final class ObstacleRuns {
 
-    /** Padded width and height. */
+    /** Padded width. */
     private final int pw;
-    private final int ph;
     /** Column x's runs are {@code first[x]} to {@code first[x + 1]} (exclusive), top to bottom. */
     private final int[] first;
     /** Each run's first and last row. */
     private final int[] start;
     private final int[] end;
 
-    private ObstacleRuns(int pw, int ph, int[] first, int[] start, int[] end) {
+    private ObstacleRuns(int pw, int[] first, int[] start, int[] end) {
         this.pw = pw;
-        this.ph = ph;
         this.first = first;
         this.start = start;
         this.end = end;
@@ -31,7 +29,6 @@ final class ObstacleRuns {
     /** The runs of a grid's fixed obstacles as it is now (read row by row, in the grid's own order). */
     static ObstacleRuns of(OccupancyGrid grid) {
         int pw = grid.cols() + 2;
-        int ph = grid.rows() + 2;
         int[] count = new int[pw];
         scan(grid, count, null, null, null);
         int[] first = new int[pw + 1];
@@ -41,7 +38,7 @@ final class ObstacleRuns {
         int[] start = new int[first[pw]];
         int[] end = new int[first[pw]];
         scan(grid, count, first, start, end);
-        return new ObstacleRuns(pw, ph, first, start, end);
+        return new ObstacleRuns(pw, first, start, end);
     }
 
     /**
@@ -79,16 +76,8 @@ final class ObstacleRuns {
         }
     }
 
-    static boolean isFixed(int id) {
+    private static boolean isFixed(int id) {
         return id != OccupancyGrid.FLOOR && id < OccupancyGrid.FIRST_CAP;
-    }
-
-    int width() {
-        return pw;
-    }
-
-    int height() {
-        return ph;
     }
 
     /** @return the index of column x's first run */

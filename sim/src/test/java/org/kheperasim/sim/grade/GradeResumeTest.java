@@ -155,7 +155,7 @@ class GradeResumeTest {
      * when it looks (grade journals, judges and starts runs beside each other, and on a busy machine the
      * test's own polling may lag a whole run behind).
      */
-    private static final double SECONDS = 300;
+    private static final double SECONDS = 150;
 
     private static Grader.Options options(Path subs, Path out, boolean box) {
         return new Grader.Options(subs, List.of("maze"), 2, 2, out, GradePlan.Shard.ALL, 256, 120, 5, SECONDS, false,

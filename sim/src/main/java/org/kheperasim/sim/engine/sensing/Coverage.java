@@ -220,14 +220,7 @@ public final class Coverage {
             return 0;
         }
         // The floor bits share the tiles' layout: a word's covered floor cells are the bits both have.
-        FloorBits floor = grid.floorBits();
-        int[] visitedFree = new int[1];
-        tiles.forEach((tile, col0, row0) -> {
-            for (int w = 0; w < tile.length; w++) {
-                visitedFree[0] += Long.bitCount(tile[w] & floor.word(col0 >> TILE_SHIFT, row0 >> TILE_SHIFT, w));
-            }
-        });
-        return 100.0 * visitedFree[0] / world.freeCells();
+        return 100.0 * tiles.countFloor(grid.floorBits()) / world.freeCells();
     }
 
     /** @return the regions entered, with the first entry's simulated time in seconds, in arena order */
@@ -243,19 +236,15 @@ public final class Coverage {
 
     /**
      * A bitmap's tiles, allocated on first use, in blocks of 8 x 8 tiles, also allocated on first use
-     * and found through a small hash table of the blocks made: a robot pays for the blocks it has been
-     * in, not for the floor (a swarm of 10,000 robots has 33 x 33 blocks a side, which as a directory
-     * would cost every robot 9 KB).
+     * and found by their index in a map of the blocks made: a robot pays for the blocks it has been in,
+     * not for the floor (a swarm of 10,000 robots has 33 x 33 blocks a side, which as a directory would
+     * cost every robot 9 KB). The block asked for last is kept at hand: a stamp stays in one block.
      */
     private static final class Tiles {
         private static final int BLOCK_SHIFT = 3;
         private static final int BLOCK = 1 << BLOCK_SHIFT;
         private final int blocksAcross;
-        /** Open addressing: the block's index + 1 (0: empty slot), and the block. */
-        private int[] keys = new int[8];
-        private long[][][] blocks = new long[8][][];
-        private int size;
-        /** The last block asked for, and its index. */
+        private final Map<Integer, long[][]> blocks = new java.util.HashMap<>();
         private long[][] lastBlock;
         private int lastKey = -1;
 
@@ -266,78 +255,37 @@ public final class Coverage {
         /** @return tile (tc, tr), made empty if it was not there */
         long[] make(int tc, int tr) {
             int b = (tr >> BLOCK_SHIFT) * blocksAcross + (tc >> BLOCK_SHIFT);
-            long[][] block = b == lastKey ? lastBlock : block(b);
+            if (b != lastKey) {
+                lastBlock = blocks.computeIfAbsent(b, k -> new long[BLOCK * BLOCK][]);
+                lastKey = b;
+            }
             int k = ((tr & (BLOCK - 1)) << BLOCK_SHIFT) | (tc & (BLOCK - 1));
-            long[] tile = block[k];
+            long[] tile = lastBlock[k];
             if (tile == null) {
                 tile = new long[TILE * TILE / 64];
-                block[k] = tile;
+                lastBlock[k] = tile;
             }
             return tile;
         }
 
-        /** @return block b, made empty if it was not there (and remembered as the last one) */
-        private long[][] block(int b) {
-            int mask = keys.length - 1;
-            int slot = (b * 0x9E3779B9 >>> 16) & mask;
-            while (keys[slot] != 0 && keys[slot] != b + 1) {
-                slot = (slot + 1) & mask;
-            }
-            if (keys[slot] == 0) {
-                if (2 * (size + 1) > keys.length) {
-                    grow();
-                    return block(b);
-                }
-                keys[slot] = b + 1;
-                blocks[slot] = new long[BLOCK * BLOCK][];
-                size++;
-            }
-            lastKey = b;
-            lastBlock = blocks[slot];
-            return lastBlock;
-        }
-
-        private void grow() {
-            int[] oldKeys = keys;
-            long[][][] oldBlocks = blocks;
-            keys = new int[oldKeys.length * 2];
-            blocks = new long[keys.length][][];
-            int mask = keys.length - 1;
-            for (int i = 0; i < oldKeys.length; i++) {
-                if (oldKeys[i] != 0) {
-                    int slot = ((oldKeys[i] - 1) * 0x9E3779B9 >>> 16) & mask;
-                    while (keys[slot] != 0) {
-                        slot = (slot + 1) & mask;
-                    }
-                    keys[slot] = oldKeys[i];
-                    blocks[slot] = oldBlocks[i];
-                }
-            }
-        }
-
-        /** Calls {@code visit} with every tile made and its first column and row, in no set order. */
-        void forEach(TileVisitor visit) {
-            for (int i = 0; i < keys.length; i++) {
-                if (keys[i] == 0) {
-                    continue;
-                }
-                int b = keys[i] - 1;
-                int bc = (b % blocksAcross) << BLOCK_SHIFT;
-                int br = (b / blocksAcross) << BLOCK_SHIFT;
-                long[][] block = blocks[i];
+        /** @return how many of the cells marked are floor in {@code floor} (which has the tiles' layout) */
+        int countFloor(FloorBits floor) {
+            int count = 0;
+            for (Map.Entry<Integer, long[][]> e : blocks.entrySet()) {
+                int tc0 = (e.getKey() % blocksAcross) << BLOCK_SHIFT;
+                int tr0 = (e.getKey() / blocksAcross) << BLOCK_SHIFT;
+                long[][] block = e.getValue();
                 for (int k = 0; k < block.length; k++) {
-                    if (block[k] != null) {
-                        int tc = bc + (k & (BLOCK - 1));
-                        int tr = br + (k >> BLOCK_SHIFT);
-                        visit.tile(block[k], tc << TILE_SHIFT, tr << TILE_SHIFT);
+                    long[] tile = block[k];
+                    for (int w = 0; tile != null && w < tile.length; w++) {
+                        int tc = tc0 + (k & (BLOCK - 1));
+                        int tr = tr0 + (k >> BLOCK_SHIFT);
+                        count += Long.bitCount(tile[w] & floor.word(tc, tr, w));
                     }
                 }
             }
+            return count;
         }
-    }
-
-    private interface TileVisitor {
-        void tile(long[] bits, int col0, int row0);
     }
 
     /** A body's footprint, its leading edges and its reach (never written after they are made). */
