@@ -282,6 +282,23 @@ public class CurrentRobotState {
         }
     }
 
+    /**
+     * The pause between two {@code doWork()} calls: a sleep of robot time, which the simulator may
+     * lengthen as the original's desktop did ({@link RobotPort#pauseLoop}).
+     *
+     * @param millis milliseconds; 0 or less does not wait
+     */
+    void pauseLoop(long millis) {
+        if (millis <= 0) {
+            return;
+        }
+        try {
+            connected().pauseLoop(millis);
+        } catch (InterruptedException e) {
+            // Swallowed as in sleep(): a halt is signalled by setFinished instead.
+        }
+    }
+
     private RobotPort connected() {
         if (port == null) {
             throw new IllegalStateException("this CurrentRobotState is not connected to a robot: the simulator"

@@ -137,7 +137,7 @@ public abstract class RobotController implements Controller {
         try {
             while (!finished) {
                 doWork();
-                pause(waitTime);
+                robot().pauseLoop(waitTime);
             }
         } catch (Exception e) {
             running = false;

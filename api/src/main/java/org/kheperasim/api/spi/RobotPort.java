@@ -96,6 +96,19 @@ public interface RobotPort {
     void sleep(long millis) throws InterruptedException;
 
     /**
+     * The pause a controller's own loop takes between two of its steps (a WSU {@code RobotController}'s
+     * wait between {@code doWork()} calls): by default a {@link #sleep} of exactly that long. A backend
+     * may lengthen it as the machine the original simulator ran on did (the simulator's
+     * {@code wsu.loopTiming=desktop}).
+     *
+     * @param millis milliseconds of robot time the loop asks to wait
+     * @throws InterruptedException if the controller thread is interrupted while waiting
+     */
+    default void pauseLoop(long millis) throws InterruptedException {
+        sleep(millis);
+    }
+
+    /**
      * Deliver a line of text from the controller to the person watching (console, log).
      *
      * @param text the line, without a line end

@@ -26,6 +26,7 @@ class DelegatingPort implements RobotPort {
     @Override public boolean objectPresent() { return target.objectPresent(); }
     @Override public int resistivity() { return target.resistivity(); }
     @Override public void sleep(long millis) throws InterruptedException { target.sleep(millis); }
+    @Override public void pauseLoop(long millis) throws InterruptedException { target.pauseLoop(millis); }
     @Override public void message(String text) { target.message(text); }
     @Override public int[] visionImage() { return target.visionImage(); }
     @Override public int visionBrightest() { return target.visionBrightest(); }

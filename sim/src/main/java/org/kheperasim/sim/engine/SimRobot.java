@@ -10,6 +10,7 @@ import org.kheperasim.sim.engine.body.GripperModel;
 import org.kheperasim.sim.engine.body.GripperPort;
 import org.kheperasim.sim.engine.link.LinkEnd;
 import org.kheperasim.sim.engine.link.RobotLink;
+import org.kheperasim.sim.engine.model.LoopTiming;
 import org.kheperasim.sim.engine.model.Miscalibration;
 import org.kheperasim.sim.engine.model.RobotModel;
 import org.kheperasim.sim.engine.model.Settings;
@@ -68,6 +69,8 @@ public final class SimRobot {
     private final ControllerLink controls;
     private final World world;
     private final LinearCamera camera;
+    /** Draws for the lengthened loop pauses of {@code wsu.loopTiming=desktop}; null when pauses are exact. */
+    private final CounterNoise loopTiming;
     /** The robot's own 20 ms sensor scan, which every reader of a sensor gets. */
     private final Scans scans;
     /** The controller on the robot's processor, or null: it runs through the serial link. */
@@ -123,6 +126,8 @@ public final class SimRobot {
         this.controls = new ControllerLink(this, link);
         // The turret's stream is drawn last, so that it shifts none of the others.
         this.camera = new LinearCamera(world, id, body, VisionModel.of(settings), new CounterNoise(random.nextLong()));
+        // Drawn after the turret's, and only when used: it shifts no other stream.
+        this.loopTiming = LoopTiming.desktop(settings) ? new CounterNoise(random.nextLong()) : null;
         sense.at(0);
         scans.taking(Scans.Taking.EVERY, 0);
         scans.capture(0, true);
@@ -583,6 +588,14 @@ public final class SimRobot {
     /** @return the settings this robot was built with */
     public Settings settings() {
         return settings;
+    }
+
+    /**
+     * @param loop the controller's loop pause, counted from 0
+     * @return how much longer than asked that pause lasts, ns (0 unless {@code wsu.loopTiming=desktop})
+     */
+    public long loopPauseExtraNanos(long loop) {
+        return loopTiming == null ? 0 : LoopTiming.extraNanos(loopTiming.uniform(loop));
     }
 
     /** @return the settings in typed form */

@@ -27,6 +27,8 @@ final class SimulatedRobotPort implements RobotPort {
     private final SimRobot robot;
     private final PortClock clock;
     private final boolean onBoard;
+    /** Loop pauses taken so far ({@link #pauseLoop}): the index of the next one's draw. */
+    private long loopPauses;
     /** The robot's largest reading ({@link #maxProximity()}), -1 until first asked. */
     private int contactReading = -1;
 
@@ -276,6 +278,15 @@ final class SimulatedRobotPort implements RobotPort {
             throw new IllegalArgumentException("sleep of " + millis + " ms: the time must not be negative");
         }
         clock.sleepNanos(TimeUnit.MILLISECONDS.toNanos(millis));
+    }
+
+    /** The pause between two doWork() calls of a WSU controller; lengthened under {@code wsu.loopTiming=desktop}. */
+    @Override
+    public void pauseLoop(long millis) throws InterruptedException {
+        if (millis < 0) {
+            throw new IllegalArgumentException("pause of " + millis + " ms: the time must not be negative");
+        }
+        clock.sleepNanos(TimeUnit.MILLISECONDS.toNanos(millis) + robot.loopPauseExtraNanos(loopPauses++));
     }
 
     @Override

@@ -92,12 +92,16 @@ class WsuProfileCorpusTest {
     }
 
     static Minute minute(Path classes, String map, String controller, Settings settings) {
+        return minute(classes, map, controller, settings, 1);
+    }
+
+    static Minute minute(Path classes, String map, String controller, Settings settings, long seed) {
         Path file = corpus.resolve("khepera/maps").resolve(map);
         Arena arena = WsuWorld.read(file, note -> { });
         List<RobotView> robot = new CopyOnWriteArrayList<>();
         List<List<CapView>> caps = new CopyOnWriteArrayList<>();
         RunResult r = Simulation.builder().arena(arena).classpath(List.of(classes)).controller(controller)
-                .seed(1).seconds(60).settings(settings).console(l -> { })
+                .seed(seed).seconds(60).settings(settings).console(l -> { })
                 .listener(s -> {
                     robot.add(s.robots().get(0));
                     caps.add(s.caps());
@@ -123,16 +127,28 @@ class WsuProfileCorpusTest {
         assertTrue(off <= 100, "ends within 100 mm of where the original stops: " + off + " mm away");
     }
 
+    /**
+     * The original's outcome varies from run to run (its loop ran on the desktop's clock): measured
+     * there, the ball moved 663, 149 and 731 mm in three runs (issue 38's own three: 269-522). Under
+     * the profile the loop's pauses follow that clock's measured distribution, drawn from the seed,
+     * so the outcome varies from seed to seed: over seeds 1-10 the ball must move 150 mm or more at
+     * the median and in at least half of the runs.
+     */
     @Test
-    @org.junit.jupiter.api.Disabled("not yet: under the profile the robot sees the ball through the gap in the wall and"
-            + " steers for it, but snags its front-left on the wall's end there and stays; the ball moves 21 mm, the"
-            + " original pushed it 269-522 mm (docs/wsu-migration.md, The wsu profile)")
     void pushBallsToLightPushesTheBall() throws IOException {
         Path c = compile("KheperaRobotControl/RobotControl1/src");
-        Minute wsu = minute(c, "behavior2-minefield", "PushBallsToLightController", WSU);
-        print("PushBallsToLight, behavior2-minefield", wsu,
-                minute(c, "behavior2-minefield", "PushBallsToLightController", Settings.defaults()), "ball 269-522 mm (3 runs)");
-        assertTrue(wsu.ballMovedMm() >= 150, "pushes the ball at least 150 mm: " + wsu.ballMovedMm());
+        List<Double> moved = new ArrayList<>();
+        for (int seed = 1; seed <= 10; seed++) {
+            moved.add(minute(c, "behavior2-minefield", "PushBallsToLightController", WSU, seed).ballMovedMm());
+        }
+        Minute robot = minute(c, "behavior2-minefield", "PushBallsToLightController", Settings.defaults(), 1);
+        System.out.printf(Locale.ROOT, "PushBallsToLight, behavior2-minefield: profile wsu, seeds 1-10, ball moved %s mm;"
+                + " default (seed 1) %.0f mm; original 663, 149, 731 mm (3 runs)%n", moved.stream()
+                .map(m -> String.format(Locale.ROOT, "%.0f", m)).toList(), robot.ballMovedMm());
+        List<Double> sorted = moved.stream().sorted().toList();
+        double median = (sorted.get(4) + sorted.get(5)) / 2;
+        assertTrue(median >= 150, "the ball moves at least 150 mm at the median: " + moved);
+        assertTrue(moved.stream().filter(m -> m >= 150).count() >= 5, "and in at least half the runs: " + moved);
     }
 
     @Test

@@ -85,11 +85,13 @@ public record RobotModel(RobotType type, Stepping stepping, Link link, Noise noi
      * @param flickerRate probability that a reading in darkness deviates
      * @param flickerDepth largest relative deviation of such a reading
      * @param noiseRel per-reading noise of the signal, relative σ
+     * @param noiseOfReading per-reading noise relative to the reading itself, σ (the robot file's
+     *     {@code noise_of_reading})
      * @param gain per-sensor gain
      * @param dead per-sensor failure (reads darkness)
      */
     public record Light(double dark, double bright, double darkSpread, double flickerRate, double flickerDepth,
-            double noiseRel, double[] gain, boolean[] dead) {
+            double noiseRel, double noiseOfReading, double[] gain, boolean[] dead) {
     }
 
     /**
@@ -167,7 +169,7 @@ public record RobotModel(RobotType type, Stepping stepping, Link link, Noise noi
                 new Light(or(s, "light.dark", tl.dark()), or(s, "light.bright", tl.bright()),
                         s.number("light.darkSpread"),
                         s.number("light.flickerRate"), s.number("light.flickerDepth"),
-                        or(s, "light.noiseRel", tl.noiseRel()),
+                        or(s, "light.noiseRel", tl.noiseRel()), tl.noiseOfReading(),
                         lightGain, lightDead),
                 new Motors(s.number("motor.left.calibration") * (m == null ? 1 : m.leftCalibration()),
                         s.number("motor.right.calibration") * (m == null ? 1 : m.rightCalibration()),

@@ -117,6 +117,10 @@ public final class Settings {
                 + " the default) or legacy (as fast as the original simulator drew it, about 30 mm/s: 3.78"
                 + " Khepera units)",
                 "khepera", "legacy");
+        choice(LoopTiming.KEY, "how long a WSU controller's pause between two doWork() calls lasts: exact (the default:"
+                + " what it asks, 20 ms) or desktop (as the original simulator's loop ran on a desktop Java: 20.1 ms"
+                + " at the median, now and then much longer; docs/wsu-migration.md)",
+                LoopTiming.EXACT, LoopTiming.DESKTOP);
         choice(WsuProfile.KEY, "behaviour profile: robot (the default: the real Khepera) or wsu (the original WSU"
                 + " simulator: the robot file wsu and the settings docs/wsu-migration.md lists; a setting given"
                 + " explicitly wins)", "robot", WsuProfile.WSU);

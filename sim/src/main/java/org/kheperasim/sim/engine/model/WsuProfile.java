@@ -23,7 +23,11 @@ public final class WsuProfile {
     private static final Map<String, String> SETTINGS = new LinkedHashMap<>();
 
     static {
-        SETTINGS.put("noise.reading", "0");          // readings stand still (a deadlock detector relies on it)
+        SETTINGS.put("noise.reading", "0");          // off: with its measured noise (wsu.yaml) two course pairings
+                                                     // do otherwise than there (docs/wsu-migration.md)
+        SETTINGS.put("vision.noise", "0");           // with noise.reading=1: exact turret levels, as there
+        SETTINGS.put("motor.left.noise", "0");       // and no wheel noise: equal speeds keep the heading exactly
+        SETTINGS.put("motor.right.noise", "0");
         SETTINGS.put("noise.robot", "0");            // no wheel spread: equal speeds keep the heading exactly
         SETTINGS.put("wsu.speedUnits", "legacy");    // as fast as the original drew it
         SETTINGS.put("wsu.positionUnits", "legacy"); // its counts, 3 per degree of a turn on the spot
@@ -33,6 +37,7 @@ public final class WsuProfile {
         SETTINGS.put("vision.fieldOfViewDeg", "40"); // its image: a ball 174 mm ahead on 11 pixels, a lamp 16 degrees
         SETTINGS.put("vision.lensMm", "0");          // left centred on pixel 5.5 (taken from the robot's centre)
         SETTINGS.put("controller.mode", "onboard");  // values refresh at once, commands act at once, as there
+        SETTINGS.put(LoopTiming.KEY, LoopTiming.DESKTOP); // its loop's pauses: 20 ms asked, sometimes far longer
     }
 
     private WsuProfile() {

@@ -24,7 +24,7 @@ public final class RobotFileReader {
     private static final Set<String> PROXIMITY =
             Set.of("response", "sample", "angles", "weights", "distances", "values", "offset",
             "noise_std_dev", "noise_relative", "max_reading");
-    private static final Set<String> LIGHT = Set.of("dark", "bright", "noise_relative");
+    private static final Set<String> LIGHT = Set.of("dark", "bright", "noise_relative", "noise_of_reading");
 
     private final String source;
     private final java.nio.file.Path folder;
@@ -106,7 +106,9 @@ public final class RobotFileReader {
         RobotFileLines.Entry l = section(root, "light", LIGHT);
         RobotType.Light light = new RobotType.Light(number(need(l, "dark"), 0, 100_000, "counts"),
                 number(need(l, "bright"), 0, 100_000, "counts"),
-                number(need(l, "noise_relative"), 0, 10, "(relative)"));
+                number(need(l, "noise_relative"), 0, 10, "(relative)"),
+                l.keys.containsKey("noise_of_reading")
+                        ? number(l.keys.get("noise_of_reading"), 0, 10, "(relative)") : 0);
         RobotFileLines.Entry p = section(root, "proximity", PROXIMITY);
         Response response = text(need(p, "response")).equals("sample")
                 ? sampled(p, new RobotType(name, src, body, drive, sensors, RobotTypes.KHEPERA1.proximity(), light,

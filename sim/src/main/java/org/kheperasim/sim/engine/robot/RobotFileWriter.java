@@ -74,6 +74,9 @@ public final class RobotFileWriter {
         key(sb, "dark", t.light().dark());
         key(sb, "bright", t.light().bright());
         key(sb, "noise_relative", t.light().noiseRel());
+        if (t.light().noiseOfReading() > 0) {
+            key(sb, "noise_of_reading", t.light().noiseOfReading());
+        }
         RobotType.Measured m = t.measured();
         if (m != null) {
             sb.append("measured:\n");

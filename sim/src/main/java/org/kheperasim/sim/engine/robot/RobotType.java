@@ -219,8 +219,15 @@ public record RobotType(String name, String source, Body body, Drive drive, List
      * @param dark reading in darkness, counts
      * @param bright reading next to a lamp, counts
      * @param noiseRel per-reading noise of the signal, relative standard deviation
+     * @param noiseOfReading per-reading noise relative to the reading itself, standard deviation (the
+     *     original WSU simulator's kind: as large in darkness as next to a lamp, relative to the
+     *     number); 0 for a real robot
      */
-    public record Light(double dark, double bright, double noiseRel) {
+    public record Light(double dark, double bright, double noiseRel, double noiseOfReading) {
+        /** A light side without noise of the reading's kind (every real robot's). */
+        public Light(double dark, double bright, double noiseRel) {
+            this(dark, bright, noiseRel, 0);
+        }
     }
 
     /** A turret a robot may carry. */

@@ -29,6 +29,8 @@ public final class LightSensing {
     private final double flickerRate;
     private final double flickerDepth;
     private final double noiseRel;
+    /** Noise relative to the reading itself, σ (the original WSU simulator's kind); 0 for real robots. */
+    private final double noiseOfReading;
     private final CounterNoise[] noise;
     /** A measured robot's response to a lamp, in place of the modelled fall-off; null: the model's. */
     private final LampResponse lamp;
@@ -52,6 +54,7 @@ public final class LightSensing {
         this.flickerRate = l.flickerRate() * reading;
         this.flickerDepth = l.flickerDepth();
         this.noiseRel = l.noiseRel() * reading;
+        this.noiseOfReading = l.noiseOfReading() * reading;
         this.noise = noise;
         this.lamp = model.type().measured() == null ? null : model.type().measured().tables().lamp();
         this.darkChars = darkChars();
@@ -91,7 +94,7 @@ public final class LightSensing {
      *     {@link #sample}
      */
     public int deferDark() {
-        return world.arena().lights().isEmpty() ? darkChars : -1;
+        return world.arena().lights().isEmpty() && noiseOfReading == 0 ? darkChars : -1;
     }
 
     /** The eight readings of a sample in darkness ({@link #deferDark}): each sensor's dark level and flicker. */
@@ -107,7 +110,12 @@ public final class LightSensing {
         if (flickerRate > 0 && n.uniform(k) < flickerRate) {
             value = flicker(i, n.uniform(k + 1));
         }
-        return value;
+        return ofReading(n, k, value);
+    }
+
+    /** The reading with the noise of its own size ({@code noise_of_reading}), when the robot has it. */
+    private double ofReading(CounterNoise n, long k, double value) {
+        return noiseOfReading > 0 ? value + n.gaussian(k + 3) * noiseOfReading * value : value;
     }
 
     /**
@@ -144,6 +152,7 @@ public final class LightSensing {
                 if (noiseRel > 0) {
                     value += n.gaussian(k + 2) * noiseRel * (dark[i] - value);
                 }
+                value = ofReading(n, k, value);
             }
             out[i] = SensorPlacement.reading(value);
         }

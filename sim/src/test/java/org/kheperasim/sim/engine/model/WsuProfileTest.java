@@ -5,6 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.Arrays;
 import java.util.Locale;
 import org.junit.jupiter.api.Test;
 import org.kheperasim.sim.arena.ArenaFormat;
@@ -108,5 +109,46 @@ class WsuProfileTest {
         assertEquals(300.0, wsu.y(), 0.0);
         assertTrue(wsu.x() > 450, "it drove: " + wsu.x());
         assertNotEquals(0.0, real.headingDeg(), "the real robot's wheels differ a little");
+    }
+
+    /**
+     * The original's reading noise, measured where its robot stood still (docs/wsu-migration.md): off
+     * under the profile, and with {@code noise.reading=1} proximity σ ≈ 2 counts + 6 % of the reading,
+     * light σ ≈ 2.6 % of the reading even in darkness, while the wheels stay exact.
+     */
+    @Test
+    void withReadingNoiseOnTheOriginalsNoiseIsThere() {
+        String text = String.format(Locale.ROOT, "khepera-arena 1\nname wall\nsize 1219.2 1219.2\nrobot %s 600 0\n"
+                + "wall %s 400 %s 800 8\n", FACE - 38, FACE + 4, FACE + 4);
+        for (Settings s : new Settings[] {WSU, WSU.with("noise.reading", "1")}) {
+            Engine engine = new Engine(new World(ArenaFormat.parse(text, "wall.arena")), 3);
+            SimRobot robot = engine.addRobot("r", new Pose(FACE - 38, 600, 0), s);
+            double[][] prox = new double[2][200];
+            double[] light = new double[200];
+            for (int k = 0; k < 200; k++) {
+                engine.runUntil(1_000_000_000L + k * 100_000_000L);
+                prox[0][k] = robot.controls().visibleProximity(1);
+                prox[1][k] = robot.controls().visibleProximity(6);
+                light[k] = robot.controls().visibleLight(0);
+            }
+            boolean on = s != WSU;
+            double[] p45 = meanSd(prox[0]);
+            double[] back = meanSd(prox[1]);
+            double[] dark = meanSd(light);
+            if (!on) {
+                assertEquals(0, p45[1] + back[1] + dark[1], 0.0, "no noise under the profile");
+                continue;
+            }
+            assertEquals(0.06, p45[1] / p45[0], 0.02, "45-degree sensor at " + p45[0] + ": sd " + p45[1]);
+            assertEquals(2, back[1], 1.2, "a back sensor seeing nothing: sd " + back[1]);
+            assertEquals(500, dark[0], 10, "light in darkness");
+            assertEquals(0.026, dark[1] / dark[0], 0.008, "light noise in darkness: sd " + dark[1]);
+        }
+    }
+
+    private static double[] meanSd(double[] v) {
+        double m = Arrays.stream(v).average().orElseThrow();
+        double ss = Arrays.stream(v).map(x -> (x - m) * (x - m)).sum();
+        return new double[] {m, Math.sqrt(ss / v.length)};
     }
 }
