@@ -32,7 +32,8 @@ final class ChildGrading implements AutoCloseable {
      * @param args what follows {@code grade} on the command line
      */
     static ChildGrading start(Path log, String... args) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-XX:TieredStopAtLevel=1", "-cp",
                 System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main", "grade"));
         cmd.addAll(List.of(args));
         if (!BoxProbe.unavailable().isEmpty()) {

@@ -44,7 +44,7 @@ class GradeFromAnyFolderTest {
         for (List<String> way : ways) {
             Path out = dir.resolve("out" + ways.indexOf(way));
             List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                    "-cp", classpath, "org.kheperasim.sim.cli.Main", "grade", "--submissions", subs.toAbsolutePath().toString(),
+                    "-XX:TieredStopAtLevel=1", "-cp", classpath, "org.kheperasim.sim.cli.Main", "grade", "--submissions", subs.toAbsolutePath().toString(),
                     "--arenas", "lab", "--seeds", "1", "--seconds", "2", "--wall-limit", "60", "--heap-mb", "128", "--out",
                     out.toAbsolutePath().toString()));
             cmd.addAll(way);

@@ -112,7 +112,8 @@ class GradeResumeTest {
                 }
                 """);
         Path out = dir.resolve("out");
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-XX:TieredStopAtLevel=1", "-cp",
                 System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main", "grade", "--submissions", subs.toString(),
                 "--arenas", "maze", "--seeds", "1", "--seconds", "600", "--wall-limit", "600", "--out", out.toString()));
         if (!box) {
@@ -167,7 +168,8 @@ class GradeResumeTest {
      * (SIGKILL or SIGTERM) and check that none of its runs outlives it.
      */
     private static void interrupt(Path subs, Path out, boolean box, int runs, boolean kill9) throws Exception {
-        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-XX:TieredStopAtLevel=1", "-cp",
                 System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main", "grade", "--submissions", subs.toString(),
                 "--arenas", "maze", "--seeds", "2", "--seconds", String.valueOf(SECONDS), "--jobs", "2", "--out", out.toString()));
         if (!box) {

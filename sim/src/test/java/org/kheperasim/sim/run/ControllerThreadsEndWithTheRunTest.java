@@ -104,7 +104,8 @@ class ControllerThreadsEndWithTheRunTest {
 
     /** Run a controller for 3 simulated seconds in a JVM of its own; @return its exit status and output */
     private static String[] runAlone(String controller) throws Exception {
-        Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+        Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-XX:TieredStopAtLevel=1", "-cp",
                 System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main", "run", "--arena", "lab", "--classpath",
                 classes.toString(), "--controller", controller, "--seconds", "3", "--hang-timeout", "2")
                 .redirectErrorStream(true).start();

@@ -184,7 +184,8 @@ class RefusedAtLoadTest {
     /** From the command line: exit status 2 (a controller that cannot be used at all), one error line, nothing run. */
     @Test
     void theCommandLineRefusesItWithStatus2AndOneLine() throws Exception {
-        Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+        Process p = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-XX:TieredStopAtLevel=1", "-cp",
                 System.getProperty("java.class.path"), "org.kheperasim.sim.cli.Main", "run", "--arena", "lab", "--classpath",
                 classes.toString(), "--controller", "XmlDecoderBot", "--seconds", "5").start();
         ByteArrayOutputStream err = new ByteArrayOutputStream();

@@ -122,7 +122,7 @@ class StepControllerTest {
         java.nio.file.Path out = java.nio.file.Files.createTempFile("stephog", ".txt");
         try {
             Process p = new ProcessBuilder(java.nio.file.Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                    "-Xmx128m", "-cp", System.getProperty("java.class.path"), org.kheperasim.sim.cli.Main.class.getName(), "run",
+                    "-Xmx128m", "-XX:TieredStopAtLevel=1", "-cp", System.getProperty("java.class.path"), org.kheperasim.sim.cli.Main.class.getName(), "run",
                     "--arena", "lab", "--controller", "org.kheperasim.testcontrollers.StepHog", "--seconds", "60", "--seed", "1")
                     .redirectErrorStream(true).redirectOutput(out.toFile()).start();
             assertTrue(p.waitFor(90, TimeUnit.SECONDS), "the run ends");
