@@ -33,12 +33,12 @@ import org.kheperasim.api.spi.ControllerException;
  * without it the test is skipped. The original simulator's sources that some sets carry
  * ({@code edu/wsu/KheperaSimulator}) are left out.
  */
-class WsuCorpusEntryPointsTest {
+public class WsuCorpusEntryPointsTest {
     @TempDir
     Path dir;
 
     /** Set name to folder; a folder ending in {@code controllers} holds shipped class files. */
-    private static final Map<String, String> SETS = new LinkedHashMap<>();
+    public static final Map<String, String> SETS = new LinkedHashMap<>();
 
     static {
         SETS.put("habitats", "khepera/src");

@@ -19,18 +19,18 @@ import javax.tools.ToolProvider;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.kheperasim.sim.run.WsuCorpusEntryPointsTest;
 
 /**
- * The public WSU course code (the {@code Nepetalactone/Systemarchitekturen-FHV} folders ue4 and ue5,
- * and {@code christianLins/KheperaRobotControl}'s RobotControl1/src) passes the allowlist, but for
- * controllers that open a window of their own, which are refused with the advice to run them
- * trusted. The corpus is not part of the repository: give its folder with
+ * The public WSU course code passes the allowlist, but for controllers that open a window of their
+ * own, which are refused with the advice to run them trusted, and henrihs/stupid-robot's
+ * {@code Executors} pool, whose refusal names the replacement (docs/controller-rules.md). The sets
+ * are {@link WsuCorpusEntryPointsTest}'s source folders, each compiled as a whole against the
+ * simulator's classes (plus {@code -Dkheperasim.wsuCorpus.classpath} when course code needs API
+ * methods this build lacks), the original simulator's own sources ({@code edu/wsu/KheperaSimulator})
+ * left unread. The corpus is not part of the repository: give its folder with
  * {@code -Dkheperasim.wsuCorpus=DIR} (default {@code ../shared/wsu-corpus} beside the repository;
- * the test is skipped when there is none). Every folder under it that holds {@code .java} files is
- * compiled on its own against the simulator's classes, plus {@code -Dkheperasim.wsuCorpus.classpath}
- * when the course code needs API methods this build lacks. Sources in an
- * {@code edu/wsu/KheperaSimulator} folder are the original simulator's, not course code: they are
- * left unread. The counts are printed.
+ * the test is skipped when there is none). The counts are printed.
  */
 class WsuCorpusAllowlistTest {
     @TempDir
@@ -42,11 +42,14 @@ class WsuCorpusAllowlistTest {
                 Path.of(System.getProperty("kheperasim.repoRoot", "..")).resolve("../shared/wsu-corpus").toString()));
         Assumptions.assumeTrue(Files.isDirectory(corpus), "no WSU course corpus at " + corpus.toAbsolutePath()
                 + " (give one with -Dkheperasim.wsuCorpus=DIR)");
-        List<Path> folders;
-        try (Stream<Path> all = Files.walk(corpus)) {
-            folders = all.filter(Files::isDirectory).filter(d -> !isOriginalSimulator(d)).filter(WsuCorpusAllowlistTest::hasSources)
-                    .sorted().toList();
+        List<Path> folders = new ArrayList<>();
+        for (String set : WsuCorpusEntryPointsTest.SETS.values()) {
+            Path root = corpus.resolve(set);
+            if (!set.endsWith("controllers") && Files.isDirectory(root)) {
+                folders.add(root);
+            }
         }
+        Assumptions.assumeFalse(folders.isEmpty(), "no course sets under " + corpus.toAbsolutePath());
         int files = 0;
         List<String> classes = new ArrayList<>();
         List<String> refused = new ArrayList<>();
@@ -72,24 +75,19 @@ class WsuCorpusAllowlistTest {
         assertEquals(Map.of(), notCompiled, "every course folder compiles against the simulator (add API stubs with"
                 + " -Dkheperasim.wsuCorpus.classpath)");
         assertEquals(List.of(), refused.stream().filter(r -> !r.contains("a controller that opens a window of its own runs"
-                + " only trusted")).toList(), "only controllers that open a window are refused");
+                + " only trusted") && !r.contains("thread pools run tasks on threads the JDK starts itself")).toList(),
+                "only controllers that open a window, or use a thread pool (the refusal names the replacement), are refused");
     }
 
     private static boolean isOriginalSimulator(Path d) {
         return d.toString().replace('\\', '/').contains("edu/wsu/KheperaSimulator");
     }
 
-    private static boolean hasSources(Path d) {
-        try {
-            return !sources(d).isEmpty();
-        } catch (IOException e) {
-            return false;
-        }
-    }
-
-    private static List<Path> sources(Path folder) throws IOException {
-        try (Stream<Path> list = Files.list(folder)) {
-            return list.filter(p -> p.toString().endsWith(".java")).sorted().toList();
+    /** The course's sources under a set's root, without the original simulator's own. */
+    private static List<Path> sources(Path root) throws IOException {
+        try (Stream<Path> all = Files.walk(root)) {
+            return all.filter(p -> p.toString().endsWith(".java")).filter(p -> !isOriginalSimulator(root.relativize(p)))
+                    .sorted().toList();
         }
     }
 
