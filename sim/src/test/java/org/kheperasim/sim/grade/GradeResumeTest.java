@@ -182,7 +182,10 @@ class GradeResumeTest {
         Path journal = out.resolve(Journal.FILE);
         long deadline = System.nanoTime() + 240_000_000_000L;
         List<ProcessHandle> children = List.of();
-        while (journalRuns(journal) < runs || children.isEmpty()) {
+        // The kill -9 waits for runs to be going, to check that none outlives its grader; the SIGTERM only for the
+        // journal (aRunEndsSoonAfterItsGraderIsKilled checks SIGTERM's runs): on a quick JVM the last runs of a
+        // resumed grading can end between two polls of the process table.
+        while (journalRuns(journal) < runs || kill9 && children.isEmpty()) {
             if (!grader.isAlive()) {
                 fail("grade ended before it could be interrupted: " + Files.readString(out.resolveSibling("grade.log")));
             }
@@ -193,7 +196,9 @@ class GradeResumeTest {
             children = runs(grader, out);
             Thread.sleep(50);
         }
-        assertFalse(children.isEmpty(), "runs were going when grade was stopped");
+        if (kill9) {
+            assertFalse(children.isEmpty(), "runs were going when grade was stopped");
+        }
         if (kill9) {
             grader.destroyForcibly();
         } else {
