@@ -42,6 +42,18 @@ final class Crowd implements Bodies.Visitor {
     private int sightCount;
     /** The members of the unit being moved (robot ids). */
     private int[] unit = new int[8];
+    /**
+     * Per unit root: while its robots only turn on the spot (each still, or stalled against another
+     * of them), the tick up to which they do so; 0: none known. Such a unit is moved to a tick only
+     * by its count; each robot's body is driven there when it is needed (its own scan, the unit's end).
+     */
+    private long[] frozenUntil = new long[0];
+    /** Per robot id: the tick its body has been driven to, while its unit is frozen. */
+    private long[] turnedTo = new long[0];
+    /** The members of a frozen unit whose robot is driven on its own (robot ids). */
+    private int[] mates = new int[8];
+    /** The end of the stretch being moved, tick. */
+    private long end;
 
     // The robot whose neighbours are being visited.
     private SimRobot looking;
@@ -60,7 +72,7 @@ final class Crowd implements Bodies.Visitor {
      * the caps stay where every sample sees them.
      */
     void move(List<SimRobot> crowd, long start, long n) {
-        long end = start + n;
+        end = start + n;
         events.clear();
         for (int i = 0; i < crowd.size(); i++) {
             SimRobot r = crowd.get(i);
@@ -76,6 +88,7 @@ final class Crowd implements Bodies.Visitor {
             for (int k = first[r.id()]; k < first[r.id() + 1]; k++) {
                 advance(find(sight[k]), tick);
             }
+            turnOne(r.id(), tick);
             r.sightScope(sight, first[r.id()], first[r.id() + 1]);
             r.scanAt(tick * Ticks.NANOS);
             r.sightScope(null, 0, 0);
@@ -83,6 +96,9 @@ final class Crowd implements Bodies.Visitor {
         }
         for (int i = 0; i < crowd.size(); i++) {
             advance(find(crowd.get(i).id()), end);
+        }
+        for (int i = 0; i < crowd.size(); i++) {
+            turnOne(crowd.get(i).id(), end);
         }
     }
 
@@ -106,6 +122,8 @@ final class Crowd implements Bodies.Visitor {
             lastMember = new int[count];
             movedTo = new long[count];
             first = new int[count + 1];
+            frozenUntil = new long[count];
+            turnedTo = new long[count];
         }
         double fastest = 0;
         double unseen = 0;
@@ -116,6 +134,7 @@ final class Crowd implements Bodies.Visitor {
             parent[id] = id;
             nextMember[id] = -1;
             lastMember[id] = id;
+            frozenUntil[id] = 0;
         }
         ticks = n;
         sightCount = 0;
@@ -198,18 +217,31 @@ final class Crowd implements Bodies.Visitor {
             }
             return;
         }
+        if (frozenUntil[root] != 0) {
+            if (tick <= frozenUntil[root]) {
+                return;
+            }
+            t = frozenUntil[root];
+            turnAll(root, t);
+        }
         // Robots that may touch each other step together, tick by tick, in robot order; each can touch
         // only the others of its unit.
-        int members = 0;
-        for (int id = root; id >= 0; id = nextMember[id]) {
-            if (members == unit.length) {
-                unit = Arrays.copyOf(unit, members * 2);
-            }
-            unit[members++] = id;
-        }
+        unit = members(root, unit);
+        int members = memberCount;
         while (t < tick) {
             long k = glideTogether(members, tick - t);
-            if (k > 1) {
+            if (k <= 1 && (k = frozenTicks(members, t)) > 1) {
+                // Each only turns on the spot for k ticks: they are driven there when needed.
+                frozenUntil[root] = t + k;
+                for (int a = 0; a < members; a++) {
+                    turnedTo[unit[a]] = t;
+                }
+                if (tick <= t + k) {
+                    return;
+                }
+                t += k;
+                turnAll(root, t);
+            } else if (k > 1) {
                 // Too far apart to touch for k ticks: each glides along its arc as it would on its own.
                 for (int id = root; id >= 0; id = nextMember[id]) {
                     robots.get(id).move(k, (t + k) * Ticks.NANOS, true, unit, members);
@@ -221,6 +253,64 @@ final class Crowd implements Bodies.Visitor {
                 }
                 t++;
             }
+        }
+    }
+
+    /** How many members {@link #members} found. */
+    private int memberCount;
+
+    /** @return {@code into} or a larger copy, listing the members of the unit of {@code root} ({@link #memberCount}) */
+    private int[] members(int root, int[] into) {
+        int count = 0;
+        for (int id = root; id >= 0; id = nextMember[id]) {
+            if (count == into.length) {
+                into = Arrays.copyOf(into, count * 2);
+            }
+            into[count++] = id;
+        }
+        memberCount = count;
+        return into;
+    }
+
+    /**
+     * @return for how many ticks from {@code t} every member of {@link #unit} would only turn on the spot (as
+     *     none moves, each goes on doing so while its own stall holds), up to the stretch's end; 0 or 1: step
+     */
+    private long frozenTicks(int members, long t) {
+        for (int a = 0; a < members; a++) {
+            if (!robots.get(unit[a]).frozen()) {
+                return 0;
+            }
+        }
+        long k = end - t;
+        for (int a = 0; a < members && k > 1; a++) {
+            k = robots.get(unit[a]).stalledTicks(t, k);
+        }
+        return k;
+    }
+
+    /** The frozen unit of {@code root} is over at {@code tick}: drive each member's body there. */
+    private void turnAll(int root, long tick) {
+        frozenUntil[root] = 0;
+        for (int id = root; id >= 0; id = nextMember[id]) {
+            turn(id, tick, root);
+        }
+    }
+
+    /** Drive robot {@code id}'s body to {@code tick} if its unit is frozen (its own scan is taken there). */
+    private void turnOne(int id, long tick) {
+        int root = find(id);
+        if (frozenUntil[root] != 0) {
+            turn(id, tick, root);
+        }
+    }
+
+    private void turn(int id, long tick, int root) {
+        long k = tick - turnedTo[id];
+        if (k > 0) {
+            mates = members(root, mates);
+            robots.get(id).turnStalled(k, tick * Ticks.NANOS, mates, memberCount);
+            turnedTo[id] = tick;
         }
     }
 

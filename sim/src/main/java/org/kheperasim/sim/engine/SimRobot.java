@@ -269,6 +269,33 @@ public final class SimRobot {
         return glides.ticks(wanted);
     }
 
+    /** @return true when the robot may be only turning on the spot: still, or stalled against another robot */
+    boolean frozen() {
+        return moveWatch == null && body.frozen();
+    }
+
+    /**
+     * @param from the first tick asked about
+     * @param wanted the most ticks asked about
+     * @return how many ticks from {@code from} (up to {@code wanted}) the robot would only turn on the spot, if no
+     *     robot it may touch moves meanwhile, with no poll sample due ({@link DriveBody#stalledTicks})
+     */
+    long stalledTicks(long from, long wanted) {
+        long poll = link.nextPollDue();
+        if (poll != Long.MAX_VALUE) {
+            wanted = StrictMath.min(wanted, ceilTick(poll) / Ticks.NANOS - from);
+        }
+        return wanted <= 0 ? 0 : body.stalledTicks(wanted);
+    }
+
+    /** Drive {@code ticks} ticks ending at {@code endNanos} that {@link #stalledTicks} allowed. */
+    void turnStalled(long ticks, long endNanos, int[] mates, int mateCount) {
+        body.turnStalled(ticks, capContacts, mates, mateCount);
+        movedTo = endNanos;
+        gripper.moved(endNanos);
+        coverage.regionsAt(body.x(), body.y(), endNanos);
+    }
+
     /** @return how far the centre travels in one tick at most at the present wheel speeds, mm */
     double travelPerTickMm() {
         return body.wheels().travelPerTickMm();

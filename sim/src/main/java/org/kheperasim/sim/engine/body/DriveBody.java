@@ -3,7 +3,6 @@ package org.kheperasim.sim.engine.body;
 import org.kheperasim.sim.arena.DistanceField;
 import org.kheperasim.sim.arena.OccupancyGrid;
 import org.kheperasim.sim.engine.model.RobotModel;
-import org.kheperasim.sim.engine.model.Ticks;
 import org.kheperasim.sim.engine.noise.CounterNoise;
 import org.kheperasim.sim.engine.robot.RobotType;
 import org.kheperasim.sim.engine.space.ArcTrig;
@@ -18,20 +17,19 @@ import org.kheperasim.sim.engine.view.Contact;
  * <p>Two ways to move: {@link #glide} drives an exact arc over any number of ticks when nothing can
  * be touched on the way (the caller has checked {@link #freeTravelMm}); {@link #step} drives one
  * tick with contact handling. Both use the same arithmetic, so a glide over n ticks lands where n
- * steps without contact would, to rounding.
+ * steps without contact would, to rounding. A body stalled against another robot (it touches it and
+ * its move heads into it: it only turns) is a third: {@link #stalledTicks} solves how long the stall
+ * lasts while the robots it may touch do not move, and {@link #turnStalled} drives those ticks at once.
  */
 public final class DriveBody {
     /** Closer than this to an obstacle (beyond the body radius) counts as touching. */
     public static final double CONTACT_EPSILON_MM = 0.5;
     /** The fast clearance estimate can exceed the true one by up to 2.2 cells; below this margin, refine. */
     public static final double NEAR_MM = 3 * OccupancyGrid.CELL_MM;
-    private static final double TICK_S = Ticks.NANOS / 1e9;
 
     private final DistanceField field;
-    private final double mmPerPulse;
-    /** The body's radius and the wheel base, mm (the robot type's). */
+    /** The body's radius, mm (the robot type's). */
     private final double radius;
-    private final double wheelBase;
     private final Wheels wheels;
 
     private double x;
@@ -40,23 +38,21 @@ public final class DriveBody {
     private double sin;
     /** The body's clearance from walls and lamps, and its cheap bounds. */
     private final BodyClearance room;
-    private double encoderLeft;
-    private double encoderRight;
-    /**
-     * The side of the present contact; null while it is still to be worked out from {@link #touchX}, {@link #touchY}.
-     */
-    private Contact contact = Contact.NONE;
-    private double touchX;
-    private double touchY;
+    /** What it touches. */
+    private final Touch touch = new Touch();
     /** The other robots, bodies to this one as walls are; and this robot's index among them. */
     private final Bodies bodies;
     private final int self;
     private boolean blocked;
     private int collisions;
-    private double distance;
+    /** The encoders' travel and the centre's. */
+    private final Odometry odometry;
 
     /** The last arc's trigonometry, reused while the turn per move does not change. */
     private final ArcTrig trig = new ArcTrig();
+    private final GlidePreview preview = new GlidePreview(this);
+    /** A stall against another robot found by the last step, so the next decides it with one test. */
+    private final Stall stall;
 
     public DriveBody(World world, int self, double x, double y, double headingDeg, RobotType type,
             RobotModel.Motors motors,
@@ -65,9 +61,8 @@ public final class DriveBody {
         this.field = world.field();
         this.bodies = world.bodies();
         this.self = self;
-        this.mmPerPulse = motors.mmPerPulse();
+        this.odometry = new Odometry(motors.mmPerPulse());
         this.radius = type.body().radiusMm();
-        this.wheelBase = type.drive().wheelBaseMm();
         this.wheels = new Wheels(type.drive(), motors, readingNoise, calibrationLeft, calibrationRight,
                 noiseLeft, noiseRight);
         this.x = x;
@@ -76,6 +71,7 @@ public final class DriveBody {
         this.cos = StrictMath.cos(h);
         this.sin = StrictMath.sin(h);
         this.room = new BodyClearance(field, x, y, radius);
+        this.stall = new Stall(bodies);
         bodies.add(self, x, y, radius);
     }
 
@@ -128,55 +124,14 @@ public final class DriveBody {
         double ny = y + common * trig.chord * (sin * trig.halfCos + cos * trig.halfSin);
         turnAndMove(nx, ny, cos * trig.fullCos - sin * trig.fullSin, sin * trig.fullCos + cos * trig.fullSin);
         room.forget();
-        count(common, diff(ticks), 1);
+        odometry.count(common, wheels.diff(ticks), 1);
         blocked = false;
-        contact = Contact.NONE;
+        touch.none();
     }
 
-    /**
-     * Where a glide of {@code ticks} ticks from here would end, without moving: the position and
-     * counters {x, y, -, -, left encoder, right encoder} into {@code out} (the heading is
-     * {@link #previewHeading}'s). The engine samples sensors inside a glide this way.
-     */
-    public void previewPosition(long ticks, double[] out) {
-        previewCounters(ticks, out);
-        if (ticks == 0 || still()) {
-            out[0] = x;
-            out[1] = y;
-            return;
-        }
-        double common = halfArc(ticks);
-        out[0] = x + common * trig.chord * (cos * trig.halfCos - sin * trig.halfSin);
-        out[1] = y + common * trig.chord * (sin * trig.halfCos + cos * trig.halfSin);
-    }
-
-    /** The heading at the end of a glide of {@code ticks} ticks, {cos, sin} into {@code out[2, 3]}. */
-    public void previewHeading(long ticks, double[] out) {
-        if (ticks == 0 || still()) {
-            out[2] = cos;
-            out[3] = sin;
-            return;
-        }
-        trig.full(turn(ticks));
-        double c = cos * trig.fullCos - sin * trig.fullSin;
-        double s = sin * trig.fullCos + cos * trig.fullSin;
-        double n = 1.0 / StrictMath.sqrt(c * c + s * s);
-        out[2] = c * n;
-        out[3] = s * n;
-    }
-
-    /** The counters of {@link #previewPosition} ({@code out[4, 5]}), without the arc's trigonometry. */
-    public void previewCounters(long ticks, double[] out) {
-        if (ticks == 0 || still()) {
-            out[4] = encoderLeft;
-            out[5] = encoderRight;
-            return;
-        }
-        double dt = ticks * TICK_S;
-        double common = (wheels.left() * dt + wheels.right() * dt) * 0.5;
-        double diff = diff(ticks);
-        out[4] = encoderLeft + (common - diff) / mmPerPulse;
-        out[5] = encoderRight + (common + diff) / mmPerPulse;
+    /** @return where a glide from here would end, for samples taken inside it */
+    public GlidePreview preview() {
+        return preview;
     }
 
     /**
@@ -193,8 +148,12 @@ public final class DriveBody {
         if (still()) {
             return;
         }
+        if (mates != null && blocked && stall.stepIsStalled(this, caps)) {
+            turnStalled(1, caps, mates, mateCount);
+            return;
+        }
         double common = arc(1);
-        double diff = diff(1);
+        double diff = wheels.diff(1);
         double stepLen = common * trig.chord;
         double midCos = cos * trig.halfCos - sin * trig.halfSin;
         double midSin = sin * trig.halfCos + cos * trig.halfSin;
@@ -203,6 +162,7 @@ public final class DriveBody {
         double newClearance = nearWall(nx, ny);
         double fraction = 1;
         boolean nowBlocked = false;
+        int stalled = -1;
         // NaN compares false: no wall within touch.
         if (newClearance < radius && newClearance < room.here(x, y)) {
             double clearance = room.here(x, y);
@@ -221,6 +181,9 @@ public final class DriveBody {
             double tx = nx - x;
             double ty = ny - y;
             double f = bodies.freeFraction(self, x, y, radius, tx, ty, mates, mateCount);
+            if (f == 0 && !nowBlocked && mates != null) {
+                stalled = bodies.pressing(self, x, y, radius, tx, ty, mates, mateCount);
+            }
             if (f < 1) {
                 nx = x + f * tx;
                 ny = y + f * ty;
@@ -236,6 +199,7 @@ public final class DriveBody {
         double s = sin * trig.fullCos + cos * trig.fullSin;
         caps.clearBlocking();
         if (caps.near(nx, ny)) {
+            stalled = -1;
             double tx = nx - x;
             double ty = ny - y;
             if (!caps.allow(nx, ny, c, s)) {
@@ -257,23 +221,87 @@ public final class DriveBody {
             caps.push(nx, ny, c, s);
         }
         blocked = nowBlocked;
+        if (stalled >= 0) {
+            stall.found(stalled, field, x, y, stepLen, radius + CONTACT_EPSILON_MM, wheels.left(),
+                    wheels.right());
+        } else {
+            stall.forget();
+        }
         turnAndMove(nx, ny, c, s);
         if (Double.isNaN(newClearance)) {
             room.forget();
         } else {
             room.set(newClearance);
         }
-        count(common, diff, fraction);
+        odometry.count(common, diff, fraction);
         int other = bodies.count() > 1
                 ? bodies.firstTouching(self, x, y, radius + CONTACT_EPSILON_MM, mates, mateCount) : -1;
         if (newClearance <= radius + CONTACT_EPSILON_MM) {
-            touching(field.nearestObstacleX(x, y), field.nearestObstacleY(x, y));
+            touch.at(field.nearestObstacleX(x, y), field.nearestObstacleY(x, y));
         } else if (other >= 0) {
-            touching(bodies.x(other), bodies.y(other));
+            touch.at(bodies.x(other), bodies.y(other));
         } else if (caps.blocking() >= 0) {
-            touching(caps.blockingX(), caps.blockingY());
+            touch.at(caps.blockingX(), caps.blockingY());
         } else {
-            contact = Contact.NONE;
+            touch.none();
+        }
+    }
+
+    /**
+     * @param wanted the most ticks the caller asks about
+     * @return how many of the next ticks, up to {@code wanted}, the body would only turn on the spot:
+     *     its wheels are still, or it is stalled against a robot ({@link Stall}) and its move keeps heading into
+     *     it; valid while no body of the robots it may touch moves meanwhile. {@link #turnStalled} then drives
+     *     them at once (their turn in closed form, as a glide's)
+     */
+    public long stalledTicks(long wanted) {
+        if (still()) {
+            return wanted;
+        }
+        return blocked ? stall.ticks(this, wanted) : 0;
+    }
+
+    /** @return the centre's step over the next tick at the present speeds (signed), mm; sets {@link #arcTrig} */
+    double tickStepMm() {
+        return halfArc(1) * trig.chord;
+    }
+
+    /** @return the trigonometry of the next tick's arc (after {@link #tickStepMm}) */
+    ArcTrig arcTrig() {
+        return trig;
+    }
+
+    /** @return the centre's path length over {@code ticks} ticks (signed), mm; {@link #arcTrig} has its half turn */
+    double halfArcOf(long ticks) {
+        return halfArc(ticks);
+    }
+
+    Odometry odometry() {
+        return odometry;
+    }
+
+    /**
+     * Drive {@code ticks} ticks that {@link #stalledTicks} allows: the body turns on the spot, its counters
+     * count the turn, and it goes on touching what it touched.
+     */
+    public void turnStalled(long ticks, CapContacts caps, int[] mates, int mateCount) {
+        if (still() || ticks == 0) {
+            return;
+        }
+        trig.full(wheels.turn(ticks));
+        double c = cos * trig.fullCos - sin * trig.fullSin;
+        double s = sin * trig.fullCos + cos * trig.fullSin;
+        double n = 1.0 / StrictMath.sqrt(c * c + s * s);
+        cos = c * n;
+        sin = s * n;
+        room.forget();
+        caps.clearBlocking();
+        odometry.count(wheels.common(ticks), wheels.diff(ticks), 0.0);
+        int other = bodies.firstTouching(self, x, y, radius + CONTACT_EPSILON_MM, mates, mateCount);
+        if (other >= 0) {
+            touch.at(bodies.x(other), bodies.y(other));
+        } else {
+            touch.none();
         }
     }
 
@@ -286,17 +314,6 @@ public final class DriveBody {
         return field.clearanceBelow(px, py) > radius + CONTACT_EPSILON_MM ? Double.NaN : room.at(px, py);
     }
 
-    /**
-     * The body touches something at (ox, oy): the side is worked out when asked for ({@link
-     * #contact}), from the pose it has now (it keeps it until the next move, which sets the contact
-     * anew), since most contacts are never looked at.
-     */
-    private void touching(double ox, double oy) {
-        contact = null;
-        touchX = ox;
-        touchY = oy;
-    }
-
     /** Set up the arc of {@code ticks} ticks; returns the centre's path length (signed), mm. */
     private double arc(long ticks) {
         double common = halfArc(ticks);
@@ -306,21 +323,8 @@ public final class DriveBody {
 
     /** The half of {@link #arc} that places the centre: the half turn's trigonometry and the chord. */
     private double halfArc(long ticks) {
-        double dt = ticks * TICK_S;
-        double dl = wheels.left() * dt;
-        double dr = wheels.right() * dt;
-        trig.half((dr - dl) / wheelBase);
-        return (dl + dr) * 0.5;
-    }
-
-    /** The turn of an arc of {@code ticks} ticks, rad (as {@link #halfArc} computes it). */
-    private double turn(long ticks) {
-        double dt = ticks * TICK_S;
-        return (wheels.right() * dt - wheels.left() * dt) / wheelBase;
-    }
-
-    private double diff(long ticks) {
-        return (wheels.right() - wheels.left()) * ticks * TICK_S * 0.5;
+        trig.half(wheels.turn(ticks));
+        return wheels.common(ticks);
     }
 
     private void turnAndMove(double nx, double ny, double c, double s) {
@@ -332,39 +336,27 @@ public final class DriveBody {
         bodies.moved(self, x, y);
     }
 
-    private void count(double common, double diff, double fraction) {
-        double moved = common * fraction;
-        encoderLeft += (moved - diff) / mmPerPulse;
-        encoderRight += (moved + diff) / mmPerPulse;
-        distance += StrictMath.abs(moved);
-    }
-
     /** The arena was edited: check the clearance again. */
     public void arenaEdited() {
+        stall.forget();
         room.arenaEdited(x, y);
-    }
-
-    private Contact sideOf(double obstacleX, double obstacleY) {
-        double rel = StrictMath.atan2(obstacleY - y, obstacleX - x) - StrictMath.atan2(sin, cos);
-        return Contact.ofAngle(rel);
     }
 
     // ------------------------------------------------------------------ the robot's own counters
 
     /** Set the position counters ({@code G} arrived), pulses. */
     public void setCounters(int left, int right) {
-        encoderLeft = left;
-        encoderRight = right;
+        odometry.set(left, right);
     }
 
     /** @return the left counter's exact travel, pulses */
     public double encoderLeftExact() {
-        return encoderLeft;
+        return odometry.left();
     }
 
     /** @return the right counter's exact travel, pulses */
     public double encoderRightExact() {
-        return encoderRight;
+        return odometry.right();
     }
 
     /** @return the 32-bit counter's value for a wheel travel of {@code count} pulses (it wraps like the robot's) */
@@ -392,10 +384,12 @@ public final class DriveBody {
     }
 
     public Contact contact() {
-        if (contact == null) {
-            contact = sideOf(touchX, touchY);
-        }
-        return contact;
+        return touch.side(x, y, cos, sin);
+    }
+
+    /** @return true when the body may be only turning on the spot: its wheels are still, or it is stalled */
+    public boolean frozen() {
+        return still() || blocked && stall.holds(this) >= 0;
     }
 
     public boolean blocked() {
@@ -403,7 +397,7 @@ public final class DriveBody {
     }
 
     public double[] touchPoint() {
-        return new double[] {touchX, touchY};
+        return touch.point();
     }
 
     public int collisions() {
@@ -411,6 +405,6 @@ public final class DriveBody {
     }
 
     public double distanceMm() {
-        return distance;
+        return odometry.distanceMm();
     }
 }

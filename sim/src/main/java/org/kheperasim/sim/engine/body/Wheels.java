@@ -15,6 +15,8 @@ public final class Wheels {
 
     /** Wheel speed of one speed unit, mm/s, and the noise period, ns: the robot type's. */
     private final double mmPerUnit;
+    /** The distance between the wheels, mm. */
+    private final double wheelBase;
     private final long noisePeriod;
     private final double calibrationLeft;
     private final double calibrationRight;
@@ -34,6 +36,7 @@ public final class Wheels {
     Wheels(RobotType.Drive drive, RobotModel.Motors motors, double readingNoise, double calibrationLeft,
             double calibrationRight, CounterNoise noiseLeft, CounterNoise noiseRight) {
         this.mmPerUnit = drive.mmPerSecondPerUnit();
+        this.wheelBase = drive.wheelBaseMm();
         this.noisePeriod = drive.noisePeriodNanos();
         this.calibrationLeft = calibrationLeft;
         this.calibrationRight = calibrationRight;
@@ -67,6 +70,23 @@ public final class Wheels {
     private void refresh() {
         left = speedLeft * mmPerUnit * calibrationLeft * noiseFactorLeft;
         right = speedRight * mmPerUnit * calibrationRight * noiseFactorRight;
+    }
+
+    /** @return the centre's path length over {@code ticks} ticks at the present speeds (signed), mm */
+    public double common(long ticks) {
+        double dt = ticks * TICK_S;
+        return (left * dt + right * dt) * 0.5;
+    }
+
+    /** @return the body's turn over {@code ticks} ticks at the present speeds, rad */
+    public double turn(long ticks) {
+        double dt = ticks * TICK_S;
+        return (right * dt - left * dt) / wheelBase;
+    }
+
+    /** @return half the difference of the wheels' travel over {@code ticks} ticks (right less left), mm */
+    public double diff(long ticks) {
+        return (right - left) * ticks * TICK_S * 0.5;
     }
 
     /** @return true when both wheels stand still */

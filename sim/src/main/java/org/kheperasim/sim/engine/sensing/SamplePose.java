@@ -31,7 +31,7 @@ public final class SamplePose {
     /** @return {x, y, -, -, left, right}: the position and counters */
     double[] position() {
         if (!position) {
-            body.previewPosition(ticks, pose);
+            body.preview().position(ticks, pose);
             position = true;
             counters = true;
         }
@@ -42,7 +42,7 @@ public final class SamplePose {
     double[] pose() {
         position();
         if (!heading) {
-            body.previewHeading(ticks, pose);
+            body.preview().heading(ticks, pose);
             heading = true;
         }
         return pose;
@@ -51,7 +51,7 @@ public final class SamplePose {
     /** @return {-, -, -, -, left, right}: the counters, in pulses of travel */
     public double[] counters() {
         if (!counters) {
-            body.previewCounters(ticks, pose);
+            body.preview().counters(ticks, pose);
             counters = true;
         }
         return pose;

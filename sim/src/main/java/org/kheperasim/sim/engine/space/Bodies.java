@@ -288,6 +288,34 @@ public final class Bodies {
     }
 
     /**
+     * @return the first of {@code among} (its first {@code amongCount}) that a disc of radius {@code own} at
+     *     (px, py) already touches and the move (dx, dy) heads into, so that {@link #freeFraction} is 0 whatever
+     *     the others; or -1
+     */
+    public int pressing(int exclude, double px, double py, double own, double dx, double dy, int[] among,
+            int amongCount) {
+        for (int j = 0; j < amongCount; j++) {
+            int k = among[j];
+            if (k != exclude && pressedBy(k, px, py, own, dx, dy)) {
+                return k;
+            }
+        }
+        return -1;
+    }
+
+    /** @return true when the move (dx, dy) of a disc of radius {@code own} at (px, py) heads into robot {@code k} */
+    public boolean pressedBy(int k, double px, double py, double own, double dx, double dy) {
+        // As approach() decides it, to the rounding.
+        double a = dx * dx + dy * dy;
+        double touch = own + radius[k];
+        double reach = touch + StrictMath.sqrt(a);
+        double jx = x[k] - px;
+        double jy = y[k] - py;
+        double d2 = jx * jx + jy * jy;
+        return a != 0 && d2 < reach * reach && d2 <= touch * touch && jx * dx + jy * dy > 0;
+    }
+
+    /**
      * @return the free fraction {@code t} so far, cut short where the move meets robot {@code k} (0: it may not move
      *     nearer it at all)
      */
