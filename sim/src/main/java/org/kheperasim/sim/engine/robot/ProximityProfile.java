@@ -72,9 +72,15 @@ public record ProximityProfile(String name, double[] distancesMm, double[] value
         if (distanceMm >= distancesMm[n - 1]) {
             return values[n - 1];
         }
-        int i = 1;
+        // The first distance not below distanceMm: from where an even table would have it, then exactly.
+        double first = distancesMm[0];
+        double even = (distanceMm - first) * (n - 1) / (distancesMm[n - 1] - first);
+        int i = (int) StrictMath.min(n - 1, StrictMath.max(1, even));
         while (distancesMm[i] < distanceMm) {
             i++;
+        }
+        while (i > 1 && distancesMm[i - 1] >= distanceMm) {
+            i--;
         }
         double t = (distanceMm - distancesMm[i - 1]) / (distancesMm[i] - distancesMm[i - 1]);
         return values[i - 1] + t * (values[i] - values[i - 1]);
