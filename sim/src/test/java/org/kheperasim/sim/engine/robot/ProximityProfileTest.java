@@ -43,7 +43,8 @@ class ProximityProfileTest {
         ProximityProfile uneven = new ProximityProfile("uneven", new double[] {0.5, 0.6, 3, 3.1, 17, 40, 41, 90},
                 new double[] {1000, 990, 800, 795, 300, 40, 35, 0});
         // Dense at the far end: an even table's index would lie past the right one.
-        ProximityProfile late = new ProximityProfile("late", new double[] {0, 50, 51, 52, 53, 54, 55, 56, 57, 58, 59, 60},
+        ProximityProfile late = new ProximityProfile("late",
+                new double[] {0, 50, 51, 52, 53, 54, 55, 56, 57, 58, 59, 60},
                 new double[] {1023, 600, 500, 420, 350, 280, 200, 150, 90, 40, 10, 0});
         ProximityProfile two = new ProximityProfile("two", new double[] {0, 60}, new double[] {1023, 0});
         SplittableRandom random = new SplittableRandom(7);
