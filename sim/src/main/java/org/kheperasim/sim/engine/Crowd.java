@@ -292,24 +292,27 @@ final class Crowd implements Bodies.Visitor {
     /** The frozen unit of {@code root} is over at {@code tick}: drive each member's body there. */
     private void turnAll(int root, long tick) {
         frozenUntil[root] = 0;
-        for (int id = root; id >= 0; id = nextMember[id]) {
-            turn(id, tick, root);
+        mates = members(root, mates);
+        int count = memberCount;
+        for (int a = 0; a < count; a++) {
+            turn(mates[a], tick, count);
         }
     }
 
     /** Drive robot {@code id}'s body to {@code tick} if its unit is frozen (its own scan is taken there). */
     private void turnOne(int id, long tick) {
         int root = find(id);
-        if (frozenUntil[root] != 0) {
-            turn(id, tick, root);
+        if (frozenUntil[root] != 0 && turnedTo[id] < tick) {
+            mates = members(root, mates);
+            turn(id, tick, memberCount);
         }
     }
 
-    private void turn(int id, long tick, int root) {
+    /** Drive robot {@code id}'s body to {@code tick}; its unit's members are the first {@code count} of mates. */
+    private void turn(int id, long tick, int count) {
         long k = tick - turnedTo[id];
         if (k > 0) {
-            mates = members(root, mates);
-            robots.get(id).turnStalled(k, tick * Ticks.NANOS, mates, memberCount);
+            robots.get(id).turnStalled(k, tick * Ticks.NANOS, mates, count);
             turnedTo[id] = tick;
         }
     }
